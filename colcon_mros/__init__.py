@@ -1,0 +1,14 @@
+"""colcon-mros: ROS 1 message headers for mROS firmware, from the ROS build.
+
+The package is laid out along the generation pipeline:
+
+- ``parse``: load .msg/.srv files through genmsg (errors carry file and line)
+- ``model``: turn genmsg specs into a C++ type model
+- ``render``: fill the empy templates in ``templates/`` from the model
+- ``output``: write generated files atomically
+- ``workspace``: find packages and their message directories
+- ``export``: the whole-workspace export used by firmware builds
+- ``cli``: the ``genmros`` command
+"""
+
+__version__ = '0.1.0'

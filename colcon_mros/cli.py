@@ -1,0 +1,82 @@
+"""The ``genmros`` command (also ``python3 -m colcon_mros``)."""
+
+import argparse
+import sys
+
+from colcon_mros import __version__
+from colcon_mros.errors import GenmrosError
+from colcon_mros.export import export
+from colcon_mros.generate import generate_file
+from colcon_mros.render import DEFAULT_VARIABLE_SIZE_BUDGET
+from colcon_mros.workspace import default_prefixes, parse_include_flags
+
+DESCRIPTION = '''\
+Generate mROS message headers from ROS 1 .msg and .srv files.
+
+  genmros FILE.msg|FILE.srv -p PKG -o OUTDIR [-I PKG:DIR ...] [-e TEMPLATE_DIR]
+      generator mode, with gencpp's arguments: the headers of one file
+      (catkin runs it for every message of every package).
+
+  genmros export [--workspace WS] [--package PKG ...] [--type PKG/TYPE ...] -o DIR
+      the headers of the selected types and every type they contain, plus the
+      per-firmware aggregates message_headers.h, message_class_specialization.h
+      and msg_max_size.h. Without --package or --type: every type in WS.
+'''
+
+
+def _generator_parser():
+    parser = argparse.ArgumentParser(
+        prog='genmros', description=DESCRIPTION,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument('--version', action='version', version='genmros %s' % __version__)
+    parser.add_argument('file', metavar='FILE', help='a .msg or .srv file')
+    parser.add_argument('-p', dest='package', required=True, help='package of FILE')
+    parser.add_argument('-o', dest='output_dir', required=True,
+                        help='output directory, <include root>/<package>')
+    parser.add_argument('-I', dest='include_paths', action='append', default=[],
+                        metavar='PKG:DIR', help='msg directory of a package (repeatable)')
+    parser.add_argument('-e', dest='template_dir', help='template directory to use instead of ours')
+    return parser
+
+
+def _export_parser():
+    parser = argparse.ArgumentParser(
+        prog='genmros export',
+        description='Export the mROS headers of a workspace for a firmware build.')
+    parser.add_argument('--workspace', metavar='WS',
+                        help='catkin/colcon workspace (its src/ is searched for packages)')
+    parser.add_argument('--package', dest='packages', action='append', default=[],
+                        metavar='PKG', help='export every type of PKG (repeatable)')
+    parser.add_argument('--type', dest='types', action='append', default=[],
+                        metavar='PKG/TYPE', help='export one message or service (repeatable)')
+    parser.add_argument('-o', dest='output_dir', required=True, metavar='DIR',
+                        help='include root to write to')
+    parser.add_argument('--underlay', dest='prefixes', action='append', metavar='PREFIX',
+                        help='installed prefix holding share/<pkg>/msg (repeatable; default: '
+                             '$CMAKE_PREFIX_PATH, /usr/local, /usr)')
+    parser.add_argument('--variable-size-budget', type=int, metavar='BYTES',
+                        default=DEFAULT_VARIABLE_SIZE_BUDGET,
+                        help='PUB_MSG_MAX_SIZE share of a type without an upper size '
+                             '(default: %(default)s)')
+    parser.add_argument('-e', dest='template_dir', help='template directory to use instead of ours')
+    return parser
+
+
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else argv
+    try:
+        if argv[:1] == ['export']:
+            options = _export_parser().parse_args(argv[1:])
+            result = export(options.output_dir, options.prefixes or default_prefixes(),
+                            options.workspace, options.packages, options.types,
+                            options.variable_size_budget, options.template_dir)
+            print('genmros: exported %d message and %d service types to %s'
+                  % (len(result.messages), len(result.services), options.output_dir))
+        else:
+            options = _generator_parser().parse_args(argv)
+            generate_file(options.file, options.package, options.output_dir,
+                          parse_include_flags(options.include_paths), options.template_dir)
+    except GenmrosError as error:
+        print('genmros: error: %s' % error, file=sys.stderr)
+        return 1
+    return 0

@@ -1,0 +1,22 @@
+"""The one exception type the generator reports to users."""
+
+
+class GenmrosError(Exception):
+    """A problem in the user's input, reported as one line.
+
+    The line reads ``FILE:LINE: problem`` (or ``FILE: problem`` when no line
+    applies) so editors and CI logs can jump to it.
+    """
+
+    def __init__(self, problem, path=None, line=None):
+        self.problem = problem
+        self.path = path
+        self.line = line
+        super().__init__(str(self))
+
+    def __str__(self):
+        if self.path is None:
+            return self.problem
+        if self.line is None:
+            return '%s: %s' % (self.path, self.problem)
+        return '%s:%d: %s' % (self.path, self.line, self.problem)

@@ -1,0 +1,298 @@
+"""The C++ type model: what the templates need to know about a message.
+
+Built from genmsg specs (see :mod:`colcon_mros.parse`); knows C++ spelling,
+the ROS 1 wire sizes and the type identity (MD5 sum, definition text, type
+ID), and nothing about how headers are laid out, which is the templates' job.
+"""
+
+import math
+import os
+import zlib
+
+from genmsg import gentools
+from genmsg.msgs import parse_type
+
+from colcon_mros.errors import GenmrosError
+
+SUPPORT_HEADER = 'mros_message_support.h'
+
+# .msg built-in type -> (C++ type, bytes on the wire; None when variable).
+BUILTIN_TYPES = {
+    'bool': ('uint8_t', 1),
+    'int8': ('int8_t', 1),
+    'uint8': ('uint8_t', 1),
+    'byte': ('int8_t', 1),
+    'char': ('uint8_t', 1),
+    'int16': ('int16_t', 2),
+    'uint16': ('uint16_t', 2),
+    'int32': ('int32_t', 4),
+    'uint32': ('uint32_t', 4),
+    'int64': ('int64_t', 8),
+    'uint64': ('uint64_t', 8),
+    'float32': ('float', 4),
+    'float64': ('double', 8),
+    'string': ('std::string', None),
+    'time': ('mros::Time', 8),
+    'duration': ('mros::Duration', 8),
+}
+
+STRING_MIN_SIZE = 4
+ARRAY_COUNT_SIZE = 4
+
+# Names a field cannot take in C++: the language's keywords, and the members
+# every generated message has. Such a field gets a trailing underscore.
+CPP_KEYWORDS = frozenset('''
+    alignas alignof and and_eq asm auto bitand bitor bool break case catch char
+    char16_t char32_t class compl const constexpr const_cast continue decltype
+    default delete do double dynamic_cast else enum explicit export extern false
+    float for friend goto if inline int long mutable namespace new noexcept not
+    not_eq nullptr operator or or_eq private protected public register
+    reinterpret_cast return short signed sizeof static static_assert static_cast
+    struct switch template this thread_local throw true try typedef typeid
+    typename union unsigned using virtual void volatile wchar_t while xor xor_eq
+    NULL
+'''.split())
+RESERVED_MEMBERS = frozenset([
+    'serializedLength', 'serialize', 'deserialize', 'serializeTo',
+    'deserializeFrom', 'dataSize', 'memCopy', 'Ptr', 'ConstPtr',
+    'MROS_TYPE_ID', 'MROS_MIN_SERIALIZED_SIZE',
+])
+
+# Type IDs live in [FIRST_TYPE_ID, 2**31): clear of the small hand-numbered
+# IDs of the earlier mROS headers, and positive in a 32-bit int.
+FIRST_TYPE_ID = 1 << 16
+
+
+def cpp_identifier(name):
+    """The C++ spelling of a ROS field or constant name."""
+    if name in CPP_KEYWORDS or name in RESERVED_MEMBERS:
+        return name + '_'
+    return name
+
+
+def type_id(full_name):
+    """A deterministic type ID derived from the full type name alone."""
+    span = (1 << 31) - FIRST_TYPE_ID
+    return FIRST_TYPE_ID + zlib.crc32(full_name.encode('utf-8')) % span
+
+
+def origin(package, path):
+    """Where a definition comes from, as pkg/msg/Type.msg: stable across machines."""
+    return '/'.join([package, os.path.basename(os.path.dirname(path)), os.path.basename(path)])
+
+
+def cpp_string_literal_lines(text):
+    """text as C++ string literal pieces, one per line of text.
+
+    Non-ASCII bytes become octal escapes (never followed by a digit that
+    could extend them, unlike hex escapes), and '?' after '?' is escaped so
+    no trigraph can form.
+    """
+    pieces = []
+    for line in text.splitlines(True):
+        out = []
+        previous = ''
+        for byte in line.encode('utf-8'):
+            char = chr(byte)
+            if char == '\\' or char == '"':
+                out.append('\\' + char)
+            elif char == '\n':
+                out.append('\\n')
+            elif char == '\t':
+                out.append('\\t')
+            elif char == '?' and previous == '?':
+                out.append('\\?')
+            elif 32 <= byte < 127:
+                out.append(char)
+            else:
+                out.append('\\%03o' % byte)
+            previous = char
+        pieces.append('"%s"' % ''.join(out))
+    return pieces or ['""']
+
+
+def cpp_constant_literal(ros_type, value):
+    """A C++ expression for a constant of ros_type holding value."""
+    if ros_type == 'string':
+        return ' '.join(cpp_string_literal_lines(value))
+    if ros_type == 'bool':
+        return 'true' if value else 'false'
+    if ros_type in ('float32', 'float64'):
+        cpp_type = BUILTIN_TYPES[ros_type][0]
+        if math.isnan(value):
+            return 'std::numeric_limits<%s>::quiet_NaN()' % cpp_type
+        if math.isinf(value):
+            sign = '-' if value < 0 else ''
+            return '%sstd::numeric_limits<%s>::infinity()' % (sign, cpp_type)
+        text = repr(float(value))
+        return text if ('.' in text or 'e' in text) else text + '.0'
+    # Integers: spelled so that no literal exceeds its type, the minimum of
+    # int64 included (the literal 9223372036854775808 does not exist).
+    cpp_type = BUILTIN_TYPES[ros_type][0]
+    if ros_type == 'int64' and value == -(1 << 63):
+        return '(-INT64_C(9223372036854775807) - 1)'
+    if ros_type in ('int64', 'uint64'):
+        macro = 'UINT64_C' if ros_type == 'uint64' else 'INT64_C'
+        return '%s(%d)' % (macro, value)
+    if ros_type == 'int32' and value == -(1 << 31):
+        return '(-2147483647 - 1)'
+    return '%du' % value if cpp_type.startswith('u') else '%d' % value
+
+
+class Constant:
+    """A constant of a message: a static member of its C++ type."""
+
+    def __init__(self, genmsg_constant, line):
+        self.name = genmsg_constant.name
+        self.ros_type = genmsg_constant.type
+        self.cpp_name = cpp_identifier(self.name)
+        self.cpp_type = 'std::string' if self.ros_type == 'string' else BUILTIN_TYPES[self.ros_type][0]
+        self.cpp_literal = cpp_constant_literal(self.ros_type, genmsg_constant.val)
+        self.is_string = self.ros_type == 'string'
+        self.line = line
+
+
+class Field:
+    """A field of a message: its C++ declaration and its size on the wire."""
+
+    def __init__(self, name, ros_type, element, line):
+        self.name = name
+        self.ros_type = ros_type
+        self.cpp_name = cpp_identifier(name)
+        self.line = line
+        base_type, is_array, array_length = parse_type(ros_type)
+        element_cpp, element_fixed, element_min = element
+        self.element_type = base_type
+        if not is_array:
+            self.cpp_type = element_cpp
+            self.fixed_size = element_fixed
+            self.min_size = element_min
+        elif array_length is None:
+            self.cpp_type = 'std::vector<%s>' % element_cpp
+            self.fixed_size = None
+            self.min_size = ARRAY_COUNT_SIZE
+        else:
+            self.cpp_type = 'std::array<%s, %d>' % (element_cpp, array_length)
+            self.fixed_size = None if element_fixed is None else element_fixed * array_length
+            self.min_size = element_min * array_length
+
+
+class Message:
+    """One message type (or one half of a service) ready for rendering."""
+
+    def __init__(self, full_name, spec, context, declarations, element_of):
+        self.full_name = full_name
+        self.package, self.name = full_name.split('/', 1)
+        self.cpp_name = '%s::%s' % (self.package, self.name)
+        self.source = declarations.path
+        self.origin = origin(self.package, self.source)
+        self.md5sum = gentools.compute_md5(context, spec)
+        self.definition = gentools.compute_full_text(context, spec)
+        self.definition_lines = cpp_string_literal_lines(self.definition)
+        self.type_id = type_id(full_name)
+        self.header_guard = 'MROS_MSG_%s_%s_H' % (self.package.upper(), self.name.upper())
+        self.constants = [Constant(constant, line) for constant, line
+                          in zip(spec.constants, declarations.constant_lines)]
+        self.fields = [Field(name, ros_type, element_of(ros_type), line) for name, ros_type, line
+                       in zip(spec.names, spec.types, declarations.field_lines)]
+        self.dependencies = sorted({f.element_type for f in self.fields if '/' in f.element_type})
+        self.includes = ['%s.h' % dependency for dependency in self.dependencies]
+        self.min_size = sum(f.min_size for f in self.fields)
+        sizes = [f.fixed_size for f in self.fields]
+        self.fixed_size = None if None in sizes else sum(sizes)
+        self._check_names()
+
+    def _check_names(self):
+        seen = {}
+        for member in self.fields + self.constants:
+            if member.cpp_name in seen:
+                raise GenmrosError(
+                    "name '%s' is already declared on line %d" % (member.name, seen[member.cpp_name]),
+                    self.source, member.line)
+            seen[member.cpp_name] = member.line
+
+
+class Service:
+    """A service: its request and response messages and the service's own identity."""
+
+    def __init__(self, full_name, spec, context, request, response):
+        self.full_name = full_name
+        self.package, self.name = full_name.split('/', 1)
+        self.cpp_name = '%s::%s' % (self.package, self.name)
+        self.source = request.source
+        self.origin = request.origin
+        self.md5sum = gentools.compute_md5(context, spec)
+        self.header_guard = 'MROS_SRV_%s_%s_H' % (self.package.upper(), self.name.upper())
+        self.request = request
+        self.response = response
+
+
+class ModelBuilder:
+    """Turns specs loaded by a :class:`colcon_mros.parse.SpecLoader` into models."""
+
+    def __init__(self, loader):
+        self.loader = loader
+        self._messages = {}
+
+    def message(self, full_name):
+        """The model of a loaded message type, built once."""
+        if full_name not in self._messages:
+            spec = self.loader.context.get_registered(full_name)
+            self._messages[full_name] = Message(
+                full_name, spec, self.loader.context,
+                self.loader.declarations(full_name), self._element)
+        return self._messages[full_name]
+
+    def service(self, spec):
+        return Service(spec.full_name, spec, self.loader.context,
+                       self.message(spec.request.full_name),
+                       self.message(spec.response.full_name))
+
+    def closure(self, full_names):
+        """The messages named and every message they contain, dependencies first."""
+        ordered = []
+        visiting = set()
+
+        def visit(full_name):
+            if full_name in visiting:
+                return
+            visiting.add(full_name)
+            message = self.message(full_name)
+            for dependency in message.dependencies:
+                visit(dependency)
+            ordered.append(message)
+
+        for full_name in full_names:
+            visit(full_name)
+        return ordered
+
+    def _element(self, ros_type):
+        """(C++ type, fixed wire size or None, minimal wire size) of an array element type."""
+        base_type = parse_type(ros_type)[0]
+        if base_type in BUILTIN_TYPES:
+            cpp_type, size = BUILTIN_TYPES[base_type]
+            return cpp_type, size, STRING_MIN_SIZE if size is None else size
+        nested = self.message(base_type)
+        return nested.cpp_name, nested.fixed_size, nested.min_size
+
+
+class MaxSizeEntry:
+    """The publish buffer one message type needs."""
+
+    def __init__(self, message, variable_budget):
+        self.full_name = message.full_name
+        if message.fixed_size is None:
+            self.size = max(variable_budget, message.min_size)
+            self.description = 'variable, at least %d bytes' % message.min_size
+        else:
+            self.size = message.fixed_size
+            self.description = '%d bytes' % message.fixed_size
+
+
+class MaxSize:
+    """PUB_MSG_MAX_SIZE for a firmware's message types."""
+
+    def __init__(self, messages, variable_budget):
+        self.variable_budget = variable_budget
+        self.entries = [MaxSizeEntry(message, variable_budget) for message in messages]
+        self.max_size = max([entry.size for entry in self.entries] or [0])

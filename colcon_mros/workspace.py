@@ -1,0 +1,127 @@
+"""Find ROS packages and the directories that hold their .msg and .srv files.
+
+Two places hold packages: a workspace's source tree (found with catkin_pkg,
+as catkin and colcon find it) and installed prefixes (``<prefix>/share/<pkg>``,
+as Debian installs std_msgs to ``/usr/share/std_msgs``). A workspace package
+hides an installed one of the same name.
+"""
+
+import os
+import re
+
+from catkin_pkg.packages import find_packages
+
+from colcon_mros.errors import GenmrosError
+
+DEFAULT_PREFIXES = ('/usr/local', '/usr')
+
+
+class Package:
+    """A package's name and its msg/ and srv/ directories."""
+
+    def __init__(self, name, msg_dirs, srv_dirs):
+        self.name = name
+        self.msg_dirs = [d for d in msg_dirs if os.path.isdir(d)]
+        self.srv_dirs = [d for d in srv_dirs if os.path.isdir(d)]
+
+    def message_files(self):
+        return _files(self.msg_dirs, '.msg')
+
+    def service_files(self):
+        return _files(self.srv_dirs, '.srv')
+
+    def type_names(self):
+        """Names of every type the package defines, services' halves included."""
+        names = {_stem(path) for path in self.message_files()}
+        for path in self.service_files():
+            stem = _stem(path)
+            names.update((stem, stem + 'Request', stem + 'Response'))
+        return names
+
+
+def _stem(path):
+    return os.path.splitext(os.path.basename(path))[0]
+
+
+def _files(directories, extension):
+    found = {}
+    for directory in directories:
+        for name in sorted(os.listdir(directory)):
+            if name.endswith(extension) and name not in found:
+                found[name] = os.path.join(directory, name)
+    return [found[name] for name in sorted(found)]
+
+
+def default_prefixes():
+    """Installed prefixes to search: CMAKE_PREFIX_PATH, then /usr/local and /usr."""
+    prefixes = [p for p in os.environ.get('CMAKE_PREFIX_PATH', '').split(os.pathsep) if p]
+    prefixes.extend(DEFAULT_PREFIXES)
+    return list(dict.fromkeys(prefixes))
+
+
+def workspace_packages(workspace):
+    """{name: Package} for the packages in a workspace's source tree."""
+    source = os.path.join(workspace, 'src')
+    if not os.path.isdir(source):
+        source = workspace
+    if not os.path.isdir(source):
+        raise GenmrosError('workspace not found', workspace)
+    try:
+        found = find_packages(source)
+    except Exception as error:  # catkin_pkg raises plain exceptions for bad manifests
+        raise GenmrosError('cannot read packages: %s' % error, source)
+    packages = {}
+    for relative, manifest in found.items():
+        root = os.path.join(source, relative)
+        packages[manifest.name] = Package(
+            manifest.name, [os.path.join(root, 'msg')], [os.path.join(root, 'srv')])
+    return packages
+
+
+_MSG_INCLUDE_DIRS = re.compile(r'set\(\w+_MSG_INCLUDE_DIRS\s+"([^"]*)"\)')
+
+
+def _installed_msg_dirs(share):
+    """msg directories of an installed package: its own msg/, or those its
+    <pkg>-msg-paths.cmake names (a catkin devel space keeps them in the sources)."""
+    name = os.path.basename(share)
+    directories = [os.path.join(share, 'msg')]
+    paths_file = os.path.join(share, 'cmake', '%s-msg-paths.cmake' % name)
+    if os.path.isfile(paths_file):
+        with open(paths_file) as stream:
+            for match in _MSG_INCLUDE_DIRS.finditer(stream.read()):
+                directories.extend(d for d in match.group(1).split(';') if d)
+    return list(dict.fromkeys(directories))
+
+
+def installed_packages(prefixes):
+    """{name: Package} for the packages under <prefix>/share; earlier prefixes win."""
+    packages = {}
+    for prefix in prefixes:
+        share = os.path.join(prefix, 'share')
+        if not os.path.isdir(share):
+            continue
+        for name in sorted(os.listdir(share)):
+            root = os.path.join(share, name)
+            if name in packages or not os.path.isfile(os.path.join(root, 'package.xml')):
+                continue
+            package = Package(name, _installed_msg_dirs(root), [os.path.join(root, 'srv')])
+            if package.msg_dirs or package.srv_dirs:
+                packages[name] = package
+    return packages
+
+
+def msg_search_path(packages):
+    """genmsg's search path, {package: [msg directories]}."""
+    return {name: package.msg_dirs for name, package in packages.items() if package.msg_dirs}
+
+
+def parse_include_flags(flags):
+    """genmsg's ``-I pkg:dir`` flags as {package: [dirs]}."""
+    search_path = {}
+    for flag in flags:
+        package, separator, directory = flag.partition(':')
+        if not separator or not package or not directory:
+            raise GenmrosError("bad include path '%s' (expected PACKAGE:DIRECTORY)" % flag)
+        search_path.setdefault(package, []).append(directory)
+    return search_path
