@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Installs what genmros needs on Debian 12 and installs the project itself
+# into Debian's /usr/bin/python3, the interpreter that can import genmsg and
+# that catkin and colcon run. Idempotent; needs root (or sudo).
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
+
+packages=$(grep -v '^#' "$here/scripts/debian-packages.txt" | tr '\n' ' ')
+missing=$(dpkg-query -W -f='${Package} ${Status}\n' $packages 2>/dev/null \
+          | awk '$NF != "installed" {print $1}' || true)
+if [ -n "$missing" ] || ! dpkg-query -W $packages >/dev/null 2>&1; then
+  as_root apt-get update -qq
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $packages
+fi
+
+# --no-deps: every dependency comes from Debian (genmsg is not on PyPI, and
+# empy 4 from PyPI would break catkin). --break-system-packages: the project
+# must live in Debian's interpreter for catkin and colcon to find it.
+as_root /usr/bin/python3 -m pip install --quiet --no-deps --no-build-isolation \
+  --break-system-packages --root-user-action=ignore --force-reinstall "$here"
