@@ -19,3 +19,12 @@ fi
 # must live in Debian's interpreter for catkin and colcon to find it.
 as_root /usr/bin/python3 -m pip install --quiet --no-deps --no-build-isolation \
   --break-system-packages --root-user-action=ignore --force-reinstall "$here"
+
+# --- catkin generator registration (issue 3) ---------------------------------
+# genmsg runs every generator named by a file in /etc/ros/genmsg (gencpp, genpy
+# come from Debian) or in a catkin workspace; pip cannot write to /etc, so the
+# marker that pip installed with the CMake files is linked there. Remove the
+# link to unregister genmros (or set ROS_LANG_DISABLE=genmros for one build).
+data_prefix=$(/usr/bin/python3 -c 'import sysconfig; print(sysconfig.get_path("data"))')
+as_root mkdir -p /etc/ros/genmsg
+as_root ln -sfn "$data_prefix/share/genmros/genmsg/genmros" /etc/ros/genmsg/genmros

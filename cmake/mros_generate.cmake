@@ -1,0 +1,167 @@
+# mROS message headers for a firmware build (plain CMake, cross-compiling
+# welcome: nothing of ROS is needed but the .msg files and genmros).
+#
+#   mros_import_messages(TARGET t EXPORT_DIR dir [TYPES pkg/Type ...])
+#     Use the headers a ROS build exported (catkin with MROS_EXPORT_DIR, or
+#     colcon build --mros-export): dir/include/<pkg>/<Type>.h. Without TYPES,
+#     every type the export dir holds.
+#
+#   mros_generate_messages(TARGET t TYPES pkg/Type ... [PACKAGE_PATHS dir ...])
+#     Generate the headers at build time from .msg files. Each PACKAGE_PATHS
+#     entry is an installed prefix (dir/share/<pkg>/msg, as ROS installs them
+#     and as an export dir holds them) or one source tree of packages (found
+#     by their package.xml). Without PACKAGE_PATHS: $CMAKE_PREFIX_PATH,
+#     /usr/local and /usr.
+#
+# Both write the per-firmware aggregates for exactly the listed types
+# (message_headers.h, message_class_specialization.h, msg_max_size.h, so
+# PUB_MSG_MAX_SIZE fits the firmware's types) and give t the include
+# directories. Installed as <prefix>/share/genmros/cmake/mros_generate.cmake;
+# find_package(genmros) includes it.
+
+find_program(GENMROS_BIN genmros
+  HINTS "${CMAKE_CURRENT_LIST_DIR}/../../../bin"
+  DOC "genmros, the mROS message generator of colcon-mros")
+
+# The aggregates of the listed types go to their own directory per target:
+# two firmwares in one build tree may use different types.
+function(_mros_output_dir ARG_TARGET ARG_OUTPUT_VAR)
+  set(${ARG_OUTPUT_VAR} "${CMAKE_CURRENT_BINARY_DIR}/mros_messages/${ARG_TARGET}" PARENT_SCOPE)
+endfunction()
+
+function(_mros_check_arguments ARG_FUNCTION ARG_TARGET ARG_UNPARSED)
+  if(ARG_UNPARSED)
+    message(FATAL_ERROR "${ARG_FUNCTION}() called with unknown arguments: ${ARG_UNPARSED}")
+  endif()
+  if(NOT ARG_TARGET)
+    message(FATAL_ERROR "${ARG_FUNCTION}() needs TARGET")
+  endif()
+  if(NOT TARGET "${ARG_TARGET}")
+    message(FATAL_ERROR "${ARG_FUNCTION}(): '${ARG_TARGET}' is not a target; "
+      "call add_executable() or add_library() first")
+  endif()
+  if(NOT GENMROS_BIN)
+    message(FATAL_ERROR "${ARG_FUNCTION}(): genmros not found; install colcon-mros "
+      "(scripts/setup.sh) or set GENMROS_BIN")
+  endif()
+endfunction()
+
+# A custom target that writes OUTPUTS with COMMAND_ARGS to genmros, and makes
+# ARG_TARGET build after it with ARG_INCLUDE_DIRS.
+function(_mros_attach ARG_TARGET ARG_OUTPUT_DIR ARG_GENMROS_ARGS ARG_DEPENDS ARG_INCLUDE_DIRS)
+  set(outputs "")
+  foreach(name message_headers.h message_class_specialization.h msg_max_size.h)
+    list(APPEND outputs "${ARG_OUTPUT_DIR}/${name}")
+  endforeach()
+  # genmros keeps unchanged files as they are (so the firmware's objects are
+  # not rebuilt for nothing); the touch marks the rule as done for make.
+  add_custom_command(OUTPUT ${outputs}
+    COMMAND "${GENMROS_BIN}" export ${ARG_GENMROS_ARGS}
+    COMMAND "${CMAKE_COMMAND}" -E touch_nocreate ${outputs}
+    DEPENDS "${GENMROS_BIN}" ${ARG_DEPENDS}
+    COMMENT "Generating mROS message headers for ${ARG_TARGET}"
+    VERBATIM)
+  add_custom_target(${ARG_TARGET}_mros_messages DEPENDS ${outputs})
+  add_dependencies(${ARG_TARGET} ${ARG_TARGET}_mros_messages)
+  target_include_directories(${ARG_TARGET} PUBLIC ${ARG_INCLUDE_DIRS})
+endfunction()
+
+function(mros_import_messages)
+  cmake_parse_arguments(ARG "" "TARGET;EXPORT_DIR" "TYPES" ${ARGN})
+  _mros_check_arguments(mros_import_messages "${ARG_TARGET}" "${ARG_UNPARSED_ARGUMENTS}")
+  get_filename_component(export_dir "${ARG_EXPORT_DIR}" ABSOLUTE)
+  if(NOT ARG_EXPORT_DIR OR NOT EXISTS "${export_dir}/include/mros_message_support.h")
+    message(FATAL_ERROR "mros_import_messages(): EXPORT_DIR '${ARG_EXPORT_DIR}' holds no "
+      "genmros export (no include/mros_message_support.h); build the ROS workspace with "
+      "MROS_EXPORT_DIR or colcon build --mros-export first")
+  endif()
+
+  set(types ${ARG_TYPES})
+  if(NOT types)
+    # Every type whose definition the export dir holds.
+    file(GLOB definitions RELATIVE "${export_dir}/share"
+      "${export_dir}/share/*/msg/*.msg" "${export_dir}/share/*/srv/*.srv")
+    foreach(definition ${definitions})
+      string(REGEX REPLACE "^([^/]+)/(msg|srv)/([^/]+)\\.(msg|srv)$" "\\1/\\3" type "${definition}")
+      list(APPEND types "${type}")
+    endforeach()
+  endif()
+  if(NOT types)
+    message(FATAL_ERROR "mros_import_messages(): EXPORT_DIR '${export_dir}' holds no message types")
+  endif()
+
+  set(genmros_args --only aggregates --underlay "${export_dir}")
+  set(headers "")
+  foreach(type ${types})
+    if(NOT EXISTS "${export_dir}/include/${type}.h")
+      message(FATAL_ERROR "mros_import_messages(): type '${type}' is not in the export "
+        "dir '${export_dir}' (no include/${type}.h)")
+    endif()
+    list(APPEND genmros_args --type "${type}")
+    list(APPEND headers "${export_dir}/include/${type}.h")
+  endforeach()
+
+  _mros_output_dir(${ARG_TARGET} output_dir)
+  list(APPEND genmros_args -o "${output_dir}")
+  # The aggregates first: the export dir has none, but a firmware's own
+  # aggregates must win over any a user copied there.
+  _mros_attach(${ARG_TARGET} "${output_dir}" "${genmros_args}" "${headers}"
+    "${output_dir};${export_dir}/include")
+endfunction()
+
+function(mros_generate_messages)
+  cmake_parse_arguments(ARG "" "TARGET" "TYPES;PACKAGE_PATHS" ${ARGN})
+  _mros_check_arguments(mros_generate_messages "${ARG_TARGET}" "${ARG_UNPARSED_ARGUMENTS}")
+  if(NOT ARG_TYPES)
+    message(FATAL_ERROR "mros_generate_messages(): TYPES lists no message type")
+  endif()
+
+  set(genmros_args "")
+  set(prefix_globs "")
+  set(workspace "")
+  foreach(path ${ARG_PACKAGE_PATHS})
+    get_filename_component(path "${path}" ABSOLUTE)
+    if(IS_DIRECTORY "${path}/share")
+      list(APPEND genmros_args --underlay "${path}")
+      list(APPEND prefix_globs "${path}/share/*/msg/*.msg" "${path}/share/*/srv/*.srv")
+    elseif(NOT IS_DIRECTORY "${path}")
+      message(FATAL_ERROR "mros_generate_messages(): PACKAGE_PATHS entry '${path}' is not a directory")
+    elseif(workspace)
+      message(FATAL_ERROR "mros_generate_messages(): PACKAGE_PATHS has two source trees, "
+        "'${workspace}' and '${path}'; give one, the others as installed prefixes")
+    else()
+      set(workspace "${path}")
+      list(APPEND genmros_args --workspace "${path}")
+    endif()
+  endforeach()
+  if(NOT ARG_PACKAGE_PATHS)
+    # genmros' own default search path; the .msg files below are the ones it reads.
+    string(REPLACE ":" ";" prefixes "$ENV{CMAKE_PREFIX_PATH}")
+    foreach(prefix ${prefixes} /usr/local /usr)
+      list(APPEND prefix_globs "${prefix}/share/*/msg/*.msg" "${prefix}/share/*/srv/*.srv")
+    endforeach()
+  endif()
+  foreach(type ${ARG_TYPES})
+    list(APPEND genmros_args --type "${type}")
+  endforeach()
+
+  _mros_output_dir(${ARG_TARGET} output_dir)
+  list(APPEND genmros_args -o "${output_dir}")
+
+  # Run once now, so a type or package that does not exist fails the
+  # configure step, naming it, rather than the first build.
+  execute_process(COMMAND "${GENMROS_BIN}" export ${genmros_args}
+    RESULT_VARIABLE result ERROR_VARIABLE error OUTPUT_QUIET)
+  if(NOT result EQUAL 0)
+    string(STRIP "${error}" error)
+    message(FATAL_ERROR "mros_generate_messages(): ${error}")
+  endif()
+
+  # A changed .msg in any package genmros may read regenerates the headers.
+  file(GLOB definitions ${prefix_globs})
+  if(workspace)
+    file(GLOB_RECURSE workspace_definitions "${workspace}/*.msg" "${workspace}/*.srv")
+    list(APPEND definitions ${workspace_definitions})
+  endif()
+  _mros_attach(${ARG_TARGET} "${output_dir}" "${genmros_args}" "${definitions}" "${output_dir}")
+endfunction()

@@ -1,0 +1,163 @@
+"""``colcon build --mros-export DIR``: the mROS headers of the built workspace.
+
+Implements colcon-core's ``colcon_core.argument_parser`` extension point
+(``ArgumentParserDecoratorExtensionPoint``), registered in setup.cfg. It is
+the extension point that sees both a verb's parser and the ``main`` the verb
+runs: the decorator adds ``--mros-export`` to the ``build`` verb alone and,
+when the flag is given, exports after a successful build, so a failed export
+fails ``colcon build`` (colcon prints the one-line error, exit code 1).
+Without the flag, colcon runs exactly as before.
+
+DIR receives, for every message and service of the built packages and of the
+installed packages they depend on (std_msgs from Debian included)::
+
+    DIR/include/mros_message_support.h, DIR/include/<pkg>/<Type>.h
+    DIR/share/<pkg>/package.xml, msg/*.msg, srv/*.srv   read by mros_import_messages()
+    DIR/mros_export.cmake                                include() it from a firmware
+
+The headers are those ``genmros export --only headers`` writes; a second run
+rewrites only what changed and removes what no longer exists.
+"""
+
+import os
+import sysconfig
+
+from colcon_core.argument_parser import ArgumentParserDecorator
+from colcon_core.argument_parser import ArgumentParserDecoratorExtensionPoint
+from colcon_core.package_selection import get_packages
+from colcon_core.plugin_system import satisfies_version
+
+from colcon_mros.errors import GenmrosError
+from colcon_mros.export import export
+from colcon_mros.output import check_writable, write_files
+from colcon_mros.workspace import default_prefixes, installed_packages
+
+CMAKE_FILE = 'mros_export.cmake'
+CMAKE_MODULE = os.path.join(sysconfig.get_path('data'), 'share', 'genmros', 'cmake',
+                            'mros_generate.cmake')
+DEFINITION_KINDS = ('msg', 'srv')
+
+
+class MrosExportArgumentParserDecorator(ArgumentParserDecoratorExtensionPoint):
+    """Adds --mros-export DIR to colcon build."""
+
+    def __init__(self):  # noqa: D107
+        super().__init__()
+        satisfies_version(ArgumentParserDecoratorExtensionPoint.EXTENSION_POINT_VERSION, '^1.0')
+
+    def decorate_argument_parser(self, *, parser):  # noqa: D102
+        return _BuildVerbDecorator(parser)
+
+
+class _BuildVerbDecorator(ArgumentParserDecorator):
+    """Catches the build verb's parser when colcon sets the verb's main on it."""
+
+    def set_defaults(self, **kwargs):  # noqa: D102
+        extension = kwargs.get('verb_extension')
+        if getattr(extension, 'VERB_NAME', None) == 'build':
+            self._parser.add_argument(
+                '--mros-export', metavar='DIR',
+                help='After the build, write the mROS headers (genmros) of every message '
+                     'and service of the built packages and their dependencies to '
+                     'DIR/include, and DIR/%s for a firmware build' % CMAKE_FILE)
+            kwargs['main'] = _exporting(kwargs['main'])
+        return self._parser.set_defaults(**kwargs)
+
+
+def _exporting(build_main):
+    def main(*, context):
+        export_dir = context.args.mros_export
+        if export_dir:
+            _fail_as_colcon_error(check_writable, os.path.abspath(export_dir))
+        rc = build_main(context=context)
+        if rc or not export_dir:
+            return rc
+        _fail_as_colcon_error(export_workspace, context.args, os.path.abspath(export_dir))
+        return 0
+    return main
+
+
+def _fail_as_colcon_error(function, *arguments):
+    # colcon reports a RuntimeError from a verb as one line and exits with 1.
+    try:
+        function(*arguments)
+    except GenmrosError as error:
+        raise RuntimeError('genmros: error: %s' % error)
+
+
+def _install_prefixes(args, descriptors):
+    install_base = os.path.abspath(args.install_base)
+    if args.merge_install:
+        return [install_base]
+    return [os.path.join(install_base, descriptor.name) for descriptor in descriptors]
+
+
+def export_workspace(args, export_dir):
+    """Export the packages colcon built (as selected by args) to export_dir."""
+    decorators = get_packages(args, recursive_categories=('run',))
+    descriptors = [decorator.descriptor for decorator in decorators]
+    prefixes = _install_prefixes(args, descriptors) + default_prefixes()
+    packages = installed_packages(prefixes)
+
+    names = set()
+    for decorator in decorators:
+        if decorator.selected and decorator.descriptor.name in packages:
+            names.add(decorator.descriptor.name)
+            names.update(str(dependency) for dependency in decorator.descriptor.get_dependencies()
+                         if dependency in packages)
+    if not names:
+        raise GenmrosError('the built packages define no messages or services; nothing to '
+                           'export', export_dir)
+
+    result = export(os.path.join(export_dir, 'include'), prefixes,
+                    package_names=sorted(names), only='headers')
+    exported = {message.package for message in result.messages}
+    exported.update(service.package for service in result.services)
+    for name in sorted(exported):
+        _export_definitions(packages[name], os.path.join(export_dir, 'share', name))
+    types = sorted(message.full_name for message in result.messages)
+    types.extend(sorted(service.full_name for service in result.services))
+    write_files(export_dir, {CMAKE_FILE: _cmake_file(types)})
+
+
+def _export_definitions(package, share_dir):
+    """Copy package.xml and the .msg/.srv files of package; drop removed ones."""
+    files = {}
+    for kind, paths in (('msg', package.message_files()), ('srv', package.service_files())):
+        for path in paths:
+            files[os.path.join(kind, os.path.basename(path))] = _read(path)
+    # msg/ and srv/ sit beside package.xml in every installed prefix.
+    manifest = os.path.join(os.path.dirname((package.msg_dirs + package.srv_dirs)[0]),
+                            'package.xml')
+    files['package.xml'] = _read(manifest)
+    write_files(share_dir, files)
+    for kind in DEFINITION_KINDS:
+        directory = os.path.join(share_dir, kind)
+        for name in os.listdir(directory) if os.path.isdir(directory) else ():
+            if name.endswith('.' + kind) and os.path.join(kind, name) not in files:
+                os.unlink(os.path.join(directory, name))
+
+
+def _read(path):
+    try:
+        with open(path, encoding='utf-8') as stream:
+            return stream.read()
+    except (OSError, UnicodeDecodeError) as error:
+        raise GenmrosError('cannot read file: %s' % getattr(error, 'strerror', error), path)
+
+
+def _cmake_file(types):
+    return '''\
+# Generated by genmros (colcon build --mros-export); do not edit.
+# The mROS headers of a ROS workspace, for a firmware's CMakeLists.txt:
+#   include(<this file>)
+#   mros_import_messages(TARGET <firmware> EXPORT_DIR ${MROS_EXPORT_DIR}
+#                        TYPES <the pkg/Type the firmware uses>)
+set(MROS_EXPORT_DIR "${CMAKE_CURRENT_LIST_DIR}")
+set(MROS_EXPORT_INCLUDE_DIR "${CMAKE_CURRENT_LIST_DIR}/include")
+set(MROS_EXPORT_TYPES
+%s)
+if(NOT COMMAND mros_import_messages)
+  include("%s")
+endif()
+''' % (''.join('  %s\n' % name for name in types), CMAKE_MODULE)
