@@ -5,7 +5,7 @@ import sys
 
 from colcon_mros import __version__
 from colcon_mros.errors import GenmrosError
-from colcon_mros.export import export
+from colcon_mros.export import EXPORT_PARTS, export
 from colcon_mros.generate import generate_file
 from colcon_mros.render import DEFAULT_VARIABLE_SIZE_BUDGET
 from colcon_mros.workspace import default_prefixes, parse_include_flags
@@ -58,6 +58,8 @@ def _export_parser():
                         default=DEFAULT_VARIABLE_SIZE_BUDGET,
                         help='PUB_MSG_MAX_SIZE share of a type without an upper size '
                              '(default: %(default)s)')
+    parser.add_argument('--only', choices=EXPORT_PARTS[1:],
+                        help='write only the headers, or only the per-firmware aggregates')
     parser.add_argument('-e', dest='template_dir', help='template directory to use instead of ours')
     return parser
 
@@ -69,7 +71,8 @@ def main(argv=None):
             options = _export_parser().parse_args(argv[1:])
             result = export(options.output_dir, options.prefixes or default_prefixes(),
                             options.workspace, options.packages, options.types,
-                            options.variable_size_budget, options.template_dir)
+                            options.variable_size_budget, options.template_dir,
+                            options.only or 'all')
             print('genmros: exported %d message and %d service types to %s'
                   % (len(result.messages), len(result.services), options.output_dir))
         else:

@@ -82,8 +82,13 @@ def _check_type_ids(messages):
                                % (message.type_id, other, message.full_name))
 
 
+# What an export writes: everything, or one of its two halves (an export
+# dir shared by many firmwares takes the headers, each firmware its aggregates).
+EXPORT_PARTS = ('all', 'headers', 'aggregates')
+
+
 def export(output_dir, prefixes, workspace=None, package_names=(), type_names=(),
-           variable_budget=DEFAULT_VARIABLE_SIZE_BUDGET, template_dir=None):
+           variable_budget=DEFAULT_VARIABLE_SIZE_BUDGET, template_dir=None, only='all'):
     packages = installed_packages(prefixes)
     local = workspace_packages(workspace) if workspace else {}
     packages.update(local)
@@ -103,18 +108,21 @@ def export(output_dir, prefixes, workspace=None, package_names=(), type_names=()
     messages = builder.closure(roots)
     _check_type_ids(messages)
 
-    files = renderer.support_header()
-    for message in messages:
-        files.update(renderer.message(message))
-    for service in services:
-        files.update(renderer.service(service))
-    files.update(renderer.aggregates(messages, variable_budget))
+    files = {}
+    if only != 'aggregates':
+        files.update(renderer.support_header())
+        for message in messages:
+            files.update(renderer.message(message))
+        for service in services:
+            files.update(renderer.service(service))
+    if only != 'headers':
+        files.update(renderer.aggregates(messages, variable_budget))
 
     changed = write_files(output_dir, files)
     removed = []
     exported_packages = {message.package for message in messages}
     exported_packages.update(service.package for service in services)
-    for name in sorted(exported_packages):
+    for name in sorted(exported_packages) if only != 'aggregates' else ():
         keep = {'%s.h' % type_name for type_name in packages[name].type_names()}
         removed.extend(remove_stale(os.path.join(output_dir, name), keep))
     return ExportResult(messages, services, changed, removed)

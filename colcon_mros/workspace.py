@@ -9,8 +9,6 @@ hides an installed one of the same name.
 import os
 import re
 
-from catkin_pkg.packages import find_packages
-
 from colcon_mros.errors import GenmrosError
 
 DEFAULT_PREFIXES = ('/usr/local', '/usr')
@@ -61,6 +59,10 @@ def default_prefixes():
 
 def workspace_packages(workspace):
     """{name: Package} for the packages in a workspace's source tree."""
+    # Imported here: catkin_pkg takes most of genmros' start-up time, and
+    # generator mode, which catkin runs once per .msg file, never needs it.
+    from catkin_pkg.packages import find_packages
+
     source = os.path.join(workspace, 'src')
     if not os.path.isdir(source):
         source = workspace
