@@ -1,0 +1,85 @@
+// The roscpp reference talker of bench/posix_bench.py, the twin of the
+// firmware's bench_talker: publishes COUNT messages on /bench (PersonalData
+// with score = sequence number, or a 640x480 rgb8 Image with header.seq =
+// sequence number) at RATE per second (0: as fast as publish() returns) and
+// writes "sequence send_time_ns" lines (CLOCK_MONOTONIC) to SEND_TIMES_FILE.
+//
+//   bench_talker personal|image COUNT RATE SEND_TIMES_FILE
+#include <mros_test/PersonalData.h>
+#include <ros/ros.h>
+#include <sensor_msgs/Image.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+namespace {
+
+int64_t nowNs() {
+  timespec now;
+  clock_gettime(CLOCK_MONOTONIC, &now);
+  return static_cast<int64_t>(now.tv_sec) * 1000000000 + now.tv_nsec;
+}
+
+void setSequence(mros_test::PersonalData& message, uint32_t sequence) {
+  message.score = static_cast<int32_t>(sequence);
+}
+
+void setSequence(sensor_msgs::Image& message, uint32_t sequence) { message.header.seq = sequence; }
+
+template <class T>
+int run(ros::NodeHandle& n, T& message, int count, int rate, const char* times_path) {
+  ros::Publisher publisher = n.advertise<T>("/bench", 1000);
+  sleep(2);  // the benchmark's subscriber connects meanwhile
+  std::vector<int64_t> send_times(static_cast<size_t>(count));
+  ros::WallRate loop_rate(rate > 0 ? rate : 1);
+  for (int i = 0; i < count; ++i) {
+    setSequence(message, static_cast<uint32_t>(i));
+    send_times[static_cast<size_t>(i)] = nowNs();
+    publisher.publish(message);
+    if (rate > 0) {
+      loop_rate.sleep();
+    }
+  }
+  FILE* out = std::fopen(times_path, "w");
+  if (out == nullptr) {
+    return 1;
+  }
+  for (int i = 0; i < count; ++i) {
+    std::fprintf(out, "%d %lld\n", i, static_cast<long long>(send_times[static_cast<size_t>(i)]));
+  }
+  std::fclose(out);
+  sleep(2);  // the connections drain their queues
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "ros_bench_talker");
+  if (argc < 5) {
+    ROS_FATAL("usage: bench_talker personal|image COUNT RATE SEND_TIMES_FILE");
+    return 2;
+  }
+  const std::string kind = argv[1];
+  const int count = std::atoi(argv[2]);
+  const int rate = std::atoi(argv[3]);
+  ros::NodeHandle n;
+  if (kind == "image") {
+    sensor_msgs::Image image;
+    image.height = 480;
+    image.width = 640;
+    image.encoding = "rgb8";
+    image.step = 640 * 3;
+    image.data.assign(640 * 480 * 3, 0x5a);
+    return run(n, image, count, rate, argv[4]);
+  }
+  mros_test::PersonalData person;
+  person.first_name = "Phil";
+  person.last_name = "Woods";
+  person.age = 83;
+  return run(n, person, count, rate, argv[4]);
+}

@@ -1,0 +1,74 @@
+"""Builds shared by the POSIX tests, the evaluation and the benchmark, each
+done once per process in a temporary directory: a copy of test_ws built with
+catkin_make (the real roscpp/rospy nodes of mros_test_nodes, gencpp/genpy
+and genmros messages) and the sample firmware built with CMake."""
+
+import atexit
+import functools
+import os
+import shutil
+import subprocess
+import tempfile
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+TEST_WS = os.path.join(REPO, 'test_ws')
+PYTHON = '/usr/bin/python3'  # the interpreter that has genmsg, catkin_pkg, rospy
+
+
+def _scratch(prefix):
+    path = tempfile.mkdtemp(prefix=prefix)
+    atexit.register(shutil.rmtree, path, True)
+    return path
+
+
+def _run(argv, log_path, **kwargs):
+    with open(log_path, 'w') as log:
+        result = subprocess.run(argv, stdout=log, stderr=subprocess.STDOUT, **kwargs)
+    if result.returncode != 0:
+        with open(log_path) as log:
+            raise RuntimeError('%s failed:\n%s' % (' '.join(argv), log.read()[-6000:]))
+
+
+class Workspace:
+    """A built copy of test_ws."""
+
+    def __init__(self, root):
+        self.root = root
+        self.setup_bash = os.path.join(root, 'devel', 'setup.bash')
+        self.lib = os.path.join(root, 'devel', 'lib', 'mros_test_nodes')
+        self.scripts = os.path.join(root, 'src', 'mros_test_nodes', 'scripts')
+
+    def roscpp(self, node, *arguments):
+        return [os.path.join(self.lib, node)] + list(arguments)
+
+    def rospy(self, script, *arguments):
+        return [PYTHON, os.path.join(self.scripts, script)] + list(arguments)
+
+
+class Firmware:
+    """The sample firmware's POSIX build."""
+
+    def __init__(self, root):
+        self.root = root
+
+    def node(self, program, *arguments):
+        return [os.path.join(self.root, program)] + list(arguments)
+
+
+@functools.lru_cache(maxsize=None)
+def workspace(root=None):
+    root = root or _scratch('mros_test_ws_')
+    shutil.copytree(os.path.join(TEST_WS, 'src'), os.path.join(root, 'src'), dirs_exist_ok=True)
+    _run(['catkin_make', '-DPYTHON_EXECUTABLE=' + PYTHON, '-DCMAKE_BUILD_TYPE=Release', '-j2'],
+         os.path.join(root, 'catkin_make.log'), cwd=root)
+    return Workspace(root)
+
+
+@functools.lru_cache(maxsize=None)
+def firmware(root=None):
+    root = root or _scratch('mros_firmware_')
+    log = os.path.join(root, 'build.log')
+    _run(['cmake', '-S', os.path.join(TEST_WS, 'firmware'), '-B', root,
+          '-DCMAKE_BUILD_TYPE=Release'], log)
+    _run(['cmake', '--build', root, '-j2'], log + '.make')
+    return Firmware(root)
