@@ -14,6 +14,7 @@ installed packages they depend on (std_msgs from Debian included)::
     DIR/include/mros_message_support.h, DIR/include/<pkg>/<Type>.h
     DIR/share/<pkg>/package.xml, msg/*.msg, srv/*.srv   read by mros_import_messages()
     DIR/mros_export.cmake                                include() it from a firmware
+    DIR/COLCON_IGNORE                                    so no tool takes DIR/share for packages
 
 The headers are those ``genmros export --only headers`` writes; a second run
 rewrites only what changed and removes what no longer exists.
@@ -33,6 +34,7 @@ from colcon_mros.output import check_writable, write_files
 from colcon_mros.workspace import default_prefixes, installed_packages
 
 CMAKE_FILE = 'mros_export.cmake'
+IGNORE_MARKER = 'COLCON_IGNORE'
 CMAKE_MODULE = os.path.join(sysconfig.get_path('data'), 'share', 'genmros', 'cmake',
                             'mros_generate.cmake')
 DEFINITION_KINDS = ('msg', 'srv')
@@ -117,7 +119,9 @@ def export_workspace(args, export_dir):
         _export_definitions(packages[name], os.path.join(export_dir, 'share', name))
     types = sorted(message.full_name for message in result.messages)
     types.extend(sorted(service.full_name for service in result.services))
-    write_files(export_dir, {CMAKE_FILE: _cmake_file(types)})
+    # COLCON_IGNORE: DIR/share/<pkg>/package.xml must not look like a second
+    # copy of each package to colcon or catkin when DIR is in the workspace.
+    write_files(export_dir, {CMAKE_FILE: _cmake_file(types), IGNORE_MARKER: ''})
 
 
 def _export_definitions(package, share_dir):

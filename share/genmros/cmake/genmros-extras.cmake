@@ -25,8 +25,27 @@ set(GENMROS_SUPPORT_HEADER mros_message_support.h)
 if(NOT MROS_EXPORT_DIR AND NOT "$ENV{MROS_EXPORT_DIR}" STREQUAL "")
   set(MROS_EXPORT_DIR "$ENV{MROS_EXPORT_DIR}")
 endif()
+
+# Fail at configure time, naming the directory, if the export dir cannot
+# take the headers.
+function(_genmros_check_export_dir ARG_DIR)
+  set(probe "${ARG_DIR}")
+  while(NOT EXISTS "${probe}")
+    get_filename_component(probe "${probe}" DIRECTORY)
+  endwhile()
+  if(NOT IS_DIRECTORY "${probe}")
+    message(FATAL_ERROR "genmros: MROS_EXPORT_DIR '${ARG_DIR}' cannot be created: "
+      "'${probe}' is not a directory")
+  endif()
+  file(MAKE_DIRECTORY "${ARG_DIR}/include")
+  # DIR/share/<pkg>/package.xml must not look like a second copy of each
+  # package to catkin or colcon when DIR is inside the workspace.
+  file(TOUCH "${ARG_DIR}/COLCON_IGNORE")
+endfunction()
+
 if(MROS_EXPORT_DIR)
   get_filename_component(MROS_EXPORT_DIR "${MROS_EXPORT_DIR}" ABSOLUTE)
+  _genmros_check_export_dir("${MROS_EXPORT_DIR}")
 endif()
 
 # The header names one .msg or .srv file produces, relative to its package dir.
@@ -115,29 +134,14 @@ macro(_generate_module_mros ARG_PKG ARG_GEN_OUTPUT_DIR ARG_GENERATED_FILES)
   # A .msg removed from the package: its header goes on the next configure.
   _genmros_remove_stale("${ARG_GEN_OUTPUT_DIR}" "${_genmros_keep}" "")
   if(MROS_EXPORT_DIR)
-    _genmros_check_export_dir("${MROS_EXPORT_DIR}")
     _genmros_remove_stale("${MROS_EXPORT_DIR}/include/${ARG_PKG}" "${_genmros_keep}"
       "${MROS_EXPORT_DIR}/share/${ARG_PKG}")
     file(MAKE_DIRECTORY "${MROS_EXPORT_DIR}/share/${ARG_PKG}")
     configure_file("${PROJECT_SOURCE_DIR}/package.xml"
       "${MROS_EXPORT_DIR}/share/${ARG_PKG}/package.xml" COPYONLY)
   endif()
-  if(ARG_GENERATED_FILES)
+  if(NOT "${ARG_GENERATED_FILES}" STREQUAL "")
     install(FILES "${CATKIN_DEVEL_PREFIX}/${genmros_INSTALL_DIR}/${GENMROS_SUPPORT_HEADER}"
       DESTINATION "${genmros_INSTALL_DIR}")
   endif()
 endmacro()
-
-# Fail at configure time, naming the directory, if the export dir cannot
-# take the headers.
-function(_genmros_check_export_dir ARG_DIR)
-  set(probe "${ARG_DIR}")
-  while(NOT EXISTS "${probe}")
-    get_filename_component(probe "${probe}" DIRECTORY)
-  endwhile()
-  if(NOT IS_DIRECTORY "${probe}")
-    message(FATAL_ERROR "genmros: MROS_EXPORT_DIR '${ARG_DIR}' cannot be created: "
-      "'${probe}' is not a directory")
-  endif()
-  file(MAKE_DIRECTORY "${ARG_DIR}/include")
-endfunction()
