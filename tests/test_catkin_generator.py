@@ -14,7 +14,7 @@ import pytest
 
 from fixtures.build_integration.tools import (
     MESSAGE_PACKAGES, SUPPORT_HEADER, compile_headers, expected_header_names, genmros_export,
-    headers_under, new_workspace, package_headers, run, user_environment)
+    headers_under, new_workspace, package_headers, run, unwrapped, user_environment)
 
 GENMROS_INCLUDE = os.path.join('share', 'genmros', 'include')
 
@@ -180,5 +180,5 @@ def test_unwritable_export_dir_fails_the_configure_step(tmp_path):
     result = run(['catkin_make', '-DMROS_EXPORT_DIR=%s' % export_dir], workspace, check=False)
     assert result.returncode != 0
     assert ("genmros: MROS_EXPORT_DIR '%s' cannot be created: '%s' is not a directory"
-            % (export_dir, blocker)) in ' '.join(result.stdout.split())
+            % (export_dir, blocker)) in unwrapped(result.stdout)
     assert not os.path.exists(os.path.join(workspace, 'devel', 'share', 'genmros'))

@@ -1,0 +1,105 @@
+"""Rebuilds with genmros in catkin: nothing runs when nothing changed, a
+touched .msg regenerates its type and the types that include it, an edited
+.msg reaches the devel space and the export dir, a deleted .msg loses its
+headers in both.
+
+The steps share one catkin_make workspace and run in file order.
+"""
+
+import os
+import time
+
+import pytest
+
+from fixtures.build_integration.tools import (
+    GENERATOR_LOG_LINE, genmros_export, headers_under, mtimes, new_workspace, run)
+
+# Types that contain mros_test_base/Vector3i, directly or through another type.
+VECTOR3I_HEADERS = {
+    os.path.join('mros_test_base', 'Vector3i.h'),
+    os.path.join('mros_test', 'ArrayTypes.h'),
+    os.path.join('mros_test', 'NestedTypes.h'),
+}
+
+
+class Workspace:
+    def __init__(self, root):
+        self.root = new_workspace(root)
+        self.export_dir = os.path.join(root, 'mros_export')
+        self.devel = os.path.join(root, 'devel', 'share', 'genmros', 'include')
+
+    def source(self, *parts):
+        return os.path.join(self.root, 'src', *parts)
+
+    def build(self):
+        return run(['catkin_make', '-DMROS_EXPORT_DIR=%s' % self.export_dir], self.root).stdout
+
+    def edit(self, relative_path, old, new):
+        path = self.source(relative_path)
+        with open(path) as stream:
+            text = stream.read()
+        assert old in text
+        with open(path, 'w') as stream:
+            stream.write(text.replace(old, new))
+
+
+def _generated_types(log):
+    return sorted(line.split(GENERATOR_LOG_LINE)[1].strip()
+                  for line in log.splitlines() if GENERATOR_LOG_LINE in line)
+
+
+@pytest.fixture(scope='module')
+def workspace(tmp_path_factory):
+    workspace = Workspace(str(tmp_path_factory.mktemp('incremental_ws')))
+    workspace.build()
+    return workspace
+
+
+def test_rebuild_without_changes_runs_no_generator(workspace):
+    before = mtimes(workspace.devel)
+    log = workspace.build()
+    assert _generated_types(log) == []
+    assert mtimes(workspace.devel) == before
+
+
+def test_touched_msg_regenerates_its_type_and_the_types_including_it(workspace):
+    before = mtimes(workspace.devel)
+    exported_before = mtimes(os.path.join(workspace.export_dir, 'include'))
+    time.sleep(0.01)
+    os.utime(workspace.source('mros_test_base', 'msg', 'Vector3i.msg'))
+    log = workspace.build()
+    assert _generated_types(log) == ['mros_test/ArrayTypes.msg', 'mros_test/NestedTypes.msg',
+                                     'mros_test_base/Vector3i.msg']
+    after = mtimes(workspace.devel)
+    changed = {path for path in before if after[path] != before[path]}
+    assert changed == VECTOR3I_HEADERS
+    # Same content: the export dir keeps its files, so firmware objects stay.
+    assert mtimes(os.path.join(workspace.export_dir, 'include')) == exported_before
+
+
+def test_edited_msg_reaches_devel_space_and_export_dir(workspace, tmp_path):
+    workspace.edit(os.path.join('mros_test', 'msg', 'PersonalData.msg'),
+                   'int32 score', 'int32 score\nfloat32 height_m')
+    log = workspace.build()
+    assert 'mros_test/PersonalData.msg' in _generated_types(log)
+    reference = genmros_export(str(tmp_path), '--workspace', workspace.root,
+                               '--underlay', '/usr')
+    header = os.path.join('mros_test', 'PersonalData.h')
+    expected = headers_under(reference)[header]
+    assert b'height_m' in expected
+    assert headers_under(workspace.devel)[header] == expected
+    assert headers_under(os.path.join(workspace.export_dir, 'include'))[header] == expected
+
+
+def test_deleted_msg_loses_its_headers_and_definition(workspace):
+    os.remove(workspace.source('mros_test', 'msg', 'Constants.msg'))
+    workspace.edit(os.path.join('mros_test', 'CMakeLists.txt'), '  Constants.msg\n', '')
+    workspace.build()
+    header = os.path.join('mros_test', 'Constants.h')
+    for root in (workspace.devel, os.path.join(workspace.export_dir, 'include')):
+        headers = headers_under(root)
+        assert header not in headers
+        assert os.path.join('mros_test', 'BuiltinTypes.h') in headers
+    exported_msgs = os.listdir(os.path.join(workspace.export_dir, 'share', 'mros_test', 'msg'))
+    assert 'Constants.msg' not in exported_msgs
+    assert 'BuiltinTypes.msg' in exported_msgs

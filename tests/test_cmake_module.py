@@ -1,0 +1,185 @@
+"""cmake/mros_generate.cmake in a plain CMake firmware project
+(tests/fixtures/build_integration/firmware), found with find_package(genmros)
+as installed by the README's set-up.
+
+mros_generate_messages() runs on a fresh copy of test_ws's message packages;
+mros_import_messages() on the export dir of a catkin build (and of colcon in
+test_colcon_export.py). The program prints PUB_MSG_MAX_SIZE, the type's MD5
+sum and its serialized size; the MD5 sum is checked against genmsg's own.
+"""
+
+import os
+import shutil
+
+import pytest
+from genmsg import gentools, msg_loader
+
+from fixtures.build_integration.tools import (
+    FIRMWARE_FIXTURE, TEST_WS_SRC, new_workspace, run, unwrapped)
+
+# What genmros itself gives a type with strings (--variable-size-budget).
+VARIABLE_SIZE_BUDGET = 1024
+REGENERATION_LOG_LINE = 'Generating mROS message headers for firmware'
+
+
+def genmsg_md5(full_name, search_path):
+    context = msg_loader.MsgContext.create_default()
+    spec = msg_loader.load_msg_by_type(context, full_name, search_path)
+    msg_loader.load_depends(context, spec, search_path)
+    return gentools.compute_md5(context, spec)
+
+
+def search_path_of(source):
+    search_path = {'std_msgs': ['/usr/share/std_msgs/msg'],
+                   'geometry_msgs': ['/usr/share/geometry_msgs/msg']}
+    for package in ('mros_test', 'mros_test_base'):
+        search_path[package] = [os.path.join(source, package, 'msg')]
+    return search_path
+
+
+class Firmware:
+    """The fixture project configured in a build dir of its own."""
+
+    def __init__(self, build_dir):
+        self.build_dir = build_dir
+
+    def configure(self, check=True, **cache):
+        command = ['cmake', '-S', FIRMWARE_FIXTURE, '-B', self.build_dir]
+        command += ['-D%s=%s' % (key, ';'.join(value) if isinstance(value, (list, tuple))
+                                 else value) for key, value in sorted(cache.items())]
+        return run(command, self.build_dir if os.path.isdir(self.build_dir) else '/',
+                   check=check)
+
+    def build(self):
+        return run(['cmake', '--build', self.build_dir], self.build_dir).stdout
+
+    def output(self):
+        result = run([os.path.join(self.build_dir, 'firmware')], self.build_dir).stdout
+        return dict(line.split('=', 1) for line in result.split())
+
+    def aggregate(self, name):
+        with open(os.path.join(self.build_dir, 'mros_messages', 'firmware', name)) as stream:
+            return stream.read()
+
+
+@pytest.fixture
+def firmware(tmp_path):
+    return Firmware(str(tmp_path / 'build'))
+
+
+@pytest.fixture
+def workspace(tmp_path):
+    return new_workspace(str(tmp_path / 'ws'))
+
+
+def test_generate_builds_the_firmware_from_msg_files(firmware, workspace):
+    source = os.path.join(workspace, 'src')
+    firmware.configure(MROS_PACKAGE_PATHS=[source, '/usr'])
+    firmware.build()
+    output = firmware.output()
+    assert output['md5'] == genmsg_md5('mros_test/PersonalData', search_path_of(source))
+    assert output['PUB_MSG_MAX_SIZE'] == str(VARIABLE_SIZE_BUDGET)
+    # Four empty strings' lengths, uint16 age, int32 score.
+    assert output['serialized'] == '14'
+
+
+def test_generate_rebuilds_after_a_msg_change_and_not_otherwise(firmware, workspace):
+    source = os.path.join(workspace, 'src')
+    firmware.configure(MROS_PACKAGE_PATHS=[source, '/usr'])
+    firmware.build()
+    assert REGENERATION_LOG_LINE not in firmware.build()
+
+    path = os.path.join(source, 'mros_test', 'msg', 'PersonalData.msg')
+    with open(path, 'a') as stream:
+        stream.write('float32 height_m\n')
+    assert REGENERATION_LOG_LINE in firmware.build()
+    output = firmware.output()
+    assert output['serialized'] == '18'
+    assert output['md5'] == genmsg_md5('mros_test/PersonalData', search_path_of(source))
+
+
+def test_aggregates_hold_exactly_the_listed_types(firmware, workspace):
+    firmware.configure(MROS_PACKAGE_PATHS=[os.path.join(workspace, 'src'), '/usr'],
+                       FIRMWARE_TYPES=['mros_test_base/Vector3i', 'std_msgs/ColorRGBA'])
+    firmware.build()
+    # Three int32 (12 bytes) and four float32 (16 bytes): both fixed-size.
+    assert firmware.output()['PUB_MSG_MAX_SIZE'] == '16'
+    headers = firmware.aggregate('message_headers.h')
+    assert '#include <mros_test_base/Vector3i.h>' in headers
+    assert '#include <std_msgs/ColorRGBA.h>' in headers
+    assert headers.count('#include <') == 3  # the two types and <cstddef>
+
+
+def test_generate_fails_at_configure_time_for_an_unknown_type(firmware, workspace):
+    result = firmware.configure(check=False, FIRMWARE_TYPES='mros_test/NoSuchType',
+                                MROS_PACKAGE_PATHS=[os.path.join(workspace, 'src'), '/usr'])
+    assert result.returncode != 0
+    assert "unknown type 'mros_test/NoSuchType'" in unwrapped(result.stdout)
+
+
+def test_generate_fails_at_configure_time_for_a_missing_package(firmware, workspace):
+    # mros_test needs mros_test_base, which is not on the search path.
+    shutil.rmtree(os.path.join(workspace, 'src', 'mros_test_base'))
+    result = firmware.configure(check=False, FIRMWARE_TYPES='mros_test/NestedTypes',
+                                MROS_PACKAGE_PATHS=[os.path.join(workspace, 'src'), '/usr'])
+    assert result.returncode != 0
+    assert "unknown package 'mros_test_base'" in unwrapped(result.stdout)
+
+
+@pytest.fixture(scope='module')
+def catkin_export(tmp_path_factory):
+    """The export dir of a catkin_make build of test_ws's message packages."""
+    workspace = new_workspace(str(tmp_path_factory.mktemp('export_ws')))
+    export_dir = os.path.join(workspace, 'mros_export')
+    run(['catkin_make', '-DMROS_EXPORT_DIR=%s' % export_dir], workspace)
+    return export_dir
+
+
+def test_import_builds_the_firmware_from_a_catkin_export(firmware, catkin_export):
+    firmware.configure(MROS_MODE='import', MROS_EXPORT_DIR=catkin_export)
+    firmware.build()
+    output = firmware.output()
+    assert output['md5'] == genmsg_md5('mros_test/PersonalData', search_path_of(TEST_WS_SRC))
+    assert output['serialized'] == '14'
+    # The headers come from the export dir; only the aggregates are the firmware's.
+    generated = os.listdir(os.path.join(firmware.build_dir, 'mros_messages', 'firmware'))
+    assert sorted(generated) == ['message_class_specialization.h', 'message_headers.h',
+                                 'msg_max_size.h']
+
+
+def test_import_rebuilds_when_the_export_changes(firmware, catkin_export, tmp_path):
+    export_dir = str(tmp_path / 'export')
+    shutil.copytree(catkin_export, export_dir)
+    firmware.configure(MROS_MODE='import', MROS_EXPORT_DIR=export_dir,
+                       FIRMWARE_TYPES='mros_test_base/Vector3i')
+    firmware.build()
+    assert firmware.output()['PUB_MSG_MAX_SIZE'] == '12'
+    assert REGENERATION_LOG_LINE not in firmware.build()
+    # A re-export of a changed Vector3i (as the ROS build does it).
+    copy = new_workspace(str(tmp_path / 'changed'))
+    with open(os.path.join(copy, 'src', 'mros_test_base', 'msg', 'Vector3i.msg'), 'a') as stream:
+        stream.write('int32 w\n')
+    run(['genmros', os.path.join(copy, 'src', 'mros_test_base', 'msg', 'Vector3i.msg'),
+         '-p', 'mros_test_base', '-o', os.path.join(export_dir, 'include', 'mros_test_base')],
+        copy)
+    shutil.copy(os.path.join(copy, 'src', 'mros_test_base', 'msg', 'Vector3i.msg'),
+                os.path.join(export_dir, 'share', 'mros_test_base', 'msg'))
+    assert REGENERATION_LOG_LINE in firmware.build()
+    assert firmware.output()['PUB_MSG_MAX_SIZE'] == '16'
+
+
+def test_import_fails_at_configure_time_for_a_type_not_exported(firmware, catkin_export):
+    result = firmware.configure(check=False, MROS_MODE='import', MROS_EXPORT_DIR=catkin_export,
+                                FIRMWARE_TYPES='mros_test/NoSuchType')
+    assert result.returncode != 0
+    assert ("type 'mros_test/NoSuchType' is not in the export dir '%s'" % catkin_export
+            in unwrapped(result.stdout))
+
+
+def test_import_fails_at_configure_time_without_an_export(firmware, tmp_path):
+    empty = str(tmp_path / 'empty')
+    os.mkdir(empty)
+    result = firmware.configure(check=False, MROS_MODE='import', MROS_EXPORT_DIR=empty)
+    assert result.returncode != 0
+    assert ("EXPORT_DIR '%s' holds no genmros export" % empty) in unwrapped(result.stdout)
+
