@@ -10,7 +10,7 @@ import os
 import zlib
 
 from genmsg import gentools
-from genmsg.msgs import parse_type
+from genmsg.msgs import is_valid_msg_field_name, parse_type
 
 from colcon_mros.errors import GenmrosError
 
@@ -203,8 +203,13 @@ class Message:
         self._check_names()
 
     def _check_names(self):
+        # genmsg checks field names but takes any text before '=' as a constant's name.
+        for constant in self.constants:
+            if not is_valid_msg_field_name(constant.name):
+                raise GenmrosError("'%s' is not a legal constant name" % constant.name,
+                                   self.source, constant.line)
         seen = {}
-        for member in self.fields + self.constants:
+        for member in sorted(self.fields + self.constants, key=lambda m: m.line):
             if member.cpp_name in seen:
                 raise GenmrosError(
                     "name '%s' is already declared on line %d" % (member.name, seen[member.cpp_name]),

@@ -46,7 +46,7 @@ def check_writable(root):
     if not os.path.isdir(probe):
         raise GenmrosError('output directory is not a directory: %s' % probe, root)
     if not os.access(probe, os.W_OK | os.X_OK):
-        raise GenmrosError('output directory is not writable', root)
+        raise GenmrosError('cannot write to output directory (permission denied)', root)
 
 
 def write_files(root, files):
@@ -62,7 +62,7 @@ def write_files(root, files):
             _write_atomically(path, files[relative])
             changed.append(path)
     except OSError as error:
-        raise GenmrosError('cannot write output: %s' % (error.strerror or error),
+        raise GenmrosError('cannot write to output directory (%s)' % (error.strerror or error),
                            getattr(error, 'filename', None) or root)
     return changed
 

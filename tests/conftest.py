@@ -1,0 +1,45 @@
+"""Fixtures shared by the test modules."""
+
+import os
+import subprocess
+import sys
+
+import pytest
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+TEST_WS = os.path.join(REPO, 'test_ws')
+
+# The Debian ROS message packages genmros is held against (issue 2).
+DEBIAN_MESSAGE_PACKAGES = [
+    'std_msgs', 'geometry_msgs', 'sensor_msgs', 'nav_msgs', 'trajectory_msgs',
+    'visualization_msgs', 'diagnostic_msgs', 'actionlib_msgs', 'shape_msgs',
+    'stereo_msgs', 'tf2_msgs', 'map_msgs', 'pcl_msgs', 'std_srvs', 'rosgraph_msgs',
+]
+
+
+def run_genmros(*arguments, check=True):
+    """Run genmros from this checkout as users run it; returns the CompletedProcess."""
+    result = subprocess.run([sys.executable, '-m', 'colcon_mros'] + list(arguments),
+                            capture_output=True, text=True, cwd=REPO)
+    if check and result.returncode != 0:
+        raise AssertionError('genmros %s failed:\n%s' % (' '.join(arguments), result.stderr))
+    return result
+
+
+@pytest.fixture(scope='session')
+def debian_export(tmp_path_factory):
+    """genmros export of every Debian message package: the include root."""
+    root = str(tmp_path_factory.mktemp('debian_export'))
+    arguments = ['export', '-o', root, '--underlay', '/usr']
+    for package in DEBIAN_MESSAGE_PACKAGES:
+        arguments += ['--package', package]
+    run_genmros(*arguments)
+    return root
+
+
+@pytest.fixture(scope='session')
+def test_ws_export(tmp_path_factory):
+    """genmros export of test_ws: the include root."""
+    root = str(tmp_path_factory.mktemp('test_ws_export'))
+    run_genmros('export', '--workspace', TEST_WS, '-o', root, '--underlay', '/usr')
+    return root
