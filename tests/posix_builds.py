@@ -59,7 +59,7 @@ class Firmware:
 def workspace(root=None):
     root = root or _scratch('mros_test_ws_')
     shutil.copytree(os.path.join(TEST_WS, 'src'), os.path.join(root, 'src'), dirs_exist_ok=True)
-    _run(['catkin_make', '-DPYTHON_EXECUTABLE=' + PYTHON, '-DCMAKE_BUILD_TYPE=Release', '-j2'],
+    _run(['catkin_make', '-C', root, '-DPYTHON_EXECUTABLE=' + PYTHON, '-DCMAKE_BUILD_TYPE=Release', '-j2'],
          os.path.join(root, 'catkin_make.log'), cwd=root)
     return Workspace(root)
 

@@ -4,12 +4,16 @@
 #include <mros_test/PersonalData.h>
 #include <ros/ros.h>
 
+#include <cstdio>
+
 void heard(const mros_test::PersonalData::ConstPtr& msg) {
   ROS_INFO("I heard from mROS: %s %s age:%u score:%d", msg->first_name.c_str(),
            msg->last_name.c_str(), msg->age, msg->score);
 }
 
 int main(int argc, char** argv) {
+  // Whole lines at once when stdout is a pipe, so a test sees them as printed.
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   ros::init(argc, argv, "ros_personal_listener");
   ros::NodeHandle n;
   ros::Subscriber sub = n.subscribe("mros_str", 10, heard);

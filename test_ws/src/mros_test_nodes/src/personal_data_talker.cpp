@@ -4,7 +4,11 @@
 #include <mros_test/PersonalData.h>
 #include <ros/ros.h>
 
+#include <cstdio>
+
 int main(int argc, char** argv) {
+  // Whole lines at once when stdout is a pipe, so a test sees them as printed.
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   ros::init(argc, argv, "ros_personal_talker");
   ros::NodeHandle n;
   ros::Publisher pub = n.advertise<mros_test::PersonalData>("test_msg", 1);

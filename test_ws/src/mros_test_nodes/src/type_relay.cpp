@@ -11,6 +11,8 @@
 #include <mros_test/NestedTypes.h>
 #include <mros_test/PersonalData.h>
 #include <ros/ros.h>
+
+#include <cstdio>
 #include <std_msgs/Header.h>
 
 #include <string>
@@ -26,6 +28,8 @@ void relay(ros::NodeHandle& n, const std::string& from, const std::string& to,
 }
 
 int main(int argc, char** argv) {
+  // Whole lines at once when stdout is a pipe, so a test sees them as printed.
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   ros::init(argc, argv, "ros_type_relay");
   if (argc < 3) {
     ROS_FATAL("usage: type_relay FROM_PREFIX TO_PREFIX");
