@@ -31,7 +31,7 @@ from colcon_core.plugin_system import satisfies_version
 from colcon_mros.errors import GenmrosError
 from colcon_mros.export import export
 from colcon_mros.output import check_writable, write_files
-from colcon_mros.workspace import default_prefixes, installed_packages
+from colcon_mros.workspace import default_prefixes, installed_packages, workspace_packages
 
 CMAKE_FILE = 'mros_export.cmake'
 IGNORE_MARKER = 'COLCON_IGNORE'
@@ -87,22 +87,23 @@ def _fail_as_colcon_error(function, *arguments):
         raise RuntimeError('genmros: error: %s' % error)
 
 
-def _install_prefixes(args, descriptors):
-    install_base = os.path.abspath(args.install_base)
-    if args.merge_install:
-        return [install_base]
-    return [os.path.join(install_base, descriptor.name) for descriptor in descriptors]
-
-
 def export_workspace(args, export_dir):
-    """Export the packages colcon built (as selected by args) to export_dir."""
-    decorators = get_packages(args, recursive_categories=('run',))
-    descriptors = [decorator.descriptor for decorator in decorators]
-    prefixes = _install_prefixes(args, descriptors) + default_prefixes()
+    """Export the packages colcon built (as selected by args) to export_dir.
+
+    The built packages' types come from their sources, as catkin generates
+    them (an install space keeps the files of a deleted .msg); their
+    dependencies from the installed prefixes.
+    """
+    if len(args.base_paths) != 1:
+        raise GenmrosError('--mros-export needs the packages under one base path, not %s'
+                           % ' '.join(args.base_paths), export_dir)
+    workspace = os.path.abspath(args.base_paths[0])
+    prefixes = default_prefixes()
     packages = installed_packages(prefixes)
+    packages.update(workspace_packages(workspace))
 
     names = set()
-    for decorator in decorators:
+    for decorator in get_packages(args, recursive_categories=('run',)):
         if decorator.selected and decorator.descriptor.name in packages:
             names.add(decorator.descriptor.name)
             names.update(str(dependency) for dependency in decorator.descriptor.get_dependencies()
@@ -111,7 +112,7 @@ def export_workspace(args, export_dir):
         raise GenmrosError('the built packages define no messages or services; nothing to '
                            'export', export_dir)
 
-    result = export(os.path.join(export_dir, 'include'), prefixes,
+    result = export(os.path.join(export_dir, 'include'), prefixes, workspace,
                     package_names=sorted(names), only='headers')
     exported = {message.package for message in result.messages}
     exported.update(service.package for service in result.services)

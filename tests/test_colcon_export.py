@@ -1,0 +1,131 @@
+"""colcon build --mros-export DIR on a fresh copy of test_ws's message packages.
+
+DIR sits inside the workspace, where a user is likely to put it; the second
+build in the module also shows that colcon does not take DIR/share for
+packages. The steps share one workspace and run in file order.
+"""
+
+import os
+
+import pytest
+
+from fixtures.build_integration.tools import (
+    FIRMWARE_FIXTURE, MESSAGE_PACKAGES, SUPPORT_HEADER, compile_headers,
+    expected_header_names, genmros_export, headers_under, mtimes, new_workspace, run,
+    unwrapped)
+
+# The packages the export holds: the built ones and the installed message
+# packages they depend on.
+EXPORTED_PACKAGES = ('geometry_msgs', 'mros_test', 'mros_test_base', 'std_msgs')
+
+
+class Workspace:
+    def __init__(self, root):
+        self.root = new_workspace(root)
+        self.export_dir = os.path.join(root, 'mros_export')
+        self.include = os.path.join(self.export_dir, 'include')
+
+    def colcon_build(self, *arguments, check=True):
+        return run(['colcon', 'build', '--event-handlers', 'console_direct+'] + list(arguments),
+                   self.root, check=check)
+
+    def reference(self, output_dir):
+        arguments = ['--workspace', self.root, '--underlay', '/usr', '--only', 'headers']
+        for package in EXPORTED_PACKAGES:
+            arguments += ['--package', package]
+        return genmros_export(output_dir, *arguments)
+
+
+@pytest.fixture(scope='module')
+def workspace(tmp_path_factory):
+    workspace = Workspace(str(tmp_path_factory.mktemp('colcon_ws')))
+    workspace.colcon_build('--mros-export', workspace.export_dir)
+    return workspace
+
+
+def test_colcon_build_help_lists_the_flag():
+    help_text = run(['colcon', 'build', '--help'], '/').stdout
+    assert '--mros-export DIR' in help_text
+
+
+def test_export_holds_every_built_type_and_its_installed_dependencies(workspace):
+    headers = headers_under(workspace.include)
+    assert SUPPORT_HEADER in headers
+    for package in MESSAGE_PACKAGES:
+        assert expected_header_names(package) <= set(headers)
+    assert os.path.join('std_msgs', 'Header.h') in headers
+    assert os.path.join('geometry_msgs', 'Twist.h') in headers
+    assert 'message_headers.h' not in headers, 'aggregates are per firmware'
+
+
+def test_export_equals_genmros_export(workspace, tmp_path):
+    assert headers_under(workspace.include) == headers_under(workspace.reference(str(tmp_path)))
+
+
+def test_exported_headers_compile_with_strict_flags(workspace, tmp_path):
+    headers = [path for path in headers_under(workspace.include)
+               if path.split(os.sep)[0] in MESSAGE_PACKAGES]
+    compile_headers([workspace.include], headers, str(tmp_path))
+
+
+def test_cmake_file_lists_the_types_and_definitions_are_exported(workspace):
+    with open(os.path.join(workspace.export_dir, 'mros_export.cmake')) as stream:
+        cmake_file = stream.read()
+    for type_name in ('mros_test/PersonalData', 'mros_test/LookupPerson', 'std_msgs/Header'):
+        assert '\n  %s\n' % type_name in cmake_file
+    for package in EXPORTED_PACKAGES:
+        assert os.path.isfile(os.path.join(workspace.export_dir, 'share', package, 'package.xml'))
+    assert os.path.isfile(os.path.join(workspace.export_dir, 'share', 'mros_test', 'srv',
+                                       'LookupPerson.srv'))
+
+
+def test_firmware_imports_the_export_through_its_cmake_file(workspace, tmp_path):
+    build_dir = str(tmp_path / 'firmware')
+    run(['cmake', '-S', FIRMWARE_FIXTURE, '-B', build_dir, '-DMROS_MODE=import',
+         '-DMROS_EXPORT_CMAKE=%s' % os.path.join(workspace.export_dir, 'mros_export.cmake'),
+         '-DFIRMWARE_TYPES=mros_test/NestedTypes'], '/')
+    run(['cmake', '--build', build_dir], build_dir)
+    output = run([os.path.join(build_dir, 'firmware')], build_dir).stdout
+    assert 'md5=' in output and 'serialized=' in output
+
+
+def test_build_without_the_flag_leaves_the_export_alone(workspace):
+    cmake_file = os.path.join(workspace.export_dir, 'mros_export.cmake')
+    before = mtimes(workspace.include), os.stat(cmake_file).st_mtime_ns
+    workspace.colcon_build()
+    assert (mtimes(workspace.include), os.stat(cmake_file).st_mtime_ns) == before
+
+
+def test_second_run_updates_the_export(workspace):
+    source = os.path.join(workspace.root, 'src', 'mros_test')
+    with open(os.path.join(source, 'msg', 'PersonalData.msg'), 'a') as stream:
+        stream.write('float32 height_m\n')
+    os.remove(os.path.join(source, 'msg', 'Constants.msg'))
+    cmake_lists = os.path.join(source, 'CMakeLists.txt')
+    with open(cmake_lists) as stream:
+        text = stream.read()
+    with open(cmake_lists, 'w') as stream:
+        stream.write(text.replace('  Constants.msg\n', ''))
+    unchanged = os.path.join('mros_test_base', 'Vector3i.h')
+    before = mtimes(workspace.include)
+
+    workspace.colcon_build('--mros-export', workspace.export_dir)
+    headers = headers_under(workspace.include)
+    assert b'height_m' in headers[os.path.join('mros_test', 'PersonalData.h')]
+    assert os.path.join('mros_test', 'Constants.h') not in headers
+    assert not os.path.exists(os.path.join(workspace.export_dir, 'share', 'mros_test', 'msg',
+                                           'Constants.msg'))
+    assert mtimes(workspace.include)[unchanged] == before[unchanged]
+
+
+def test_unwritable_export_dir_fails_before_building(tmp_path):
+    workspace = Workspace(str(tmp_path / 'ws'))
+    blocker = os.path.join(workspace.root, 'not_a_directory')
+    with open(blocker, 'w') as stream:
+        stream.write('a file where the export dir should go\n')
+    export_dir = os.path.join(blocker, 'export')
+    result = workspace.colcon_build('--mros-export', export_dir, check=False)
+    assert result.returncode != 0
+    assert ('genmros: error: %s: output directory is not a directory: %s'
+            % (export_dir, blocker)) in unwrapped(result.stdout)
+    assert not os.path.exists(os.path.join(workspace.root, 'install', 'mros_test'))
