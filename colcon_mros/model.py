@@ -81,6 +81,12 @@ def origin(package, path):
     return '/'.join([package, os.path.basename(os.path.dirname(path)), os.path.basename(path)])
 
 
+def gencpp_definition_text(full_text):
+    """The definition text as gencpp (and so roscpp's TCPROS handshake) gives it:
+    genmsg's full text with every line, the last included, ending in '\\n'."""
+    return ''.join(line + '\n' for line in full_text.splitlines() or [''])
+
+
 def cpp_string_literal_lines(text):
     """text as C++ string literal pieces, one per line of text.
 
@@ -187,7 +193,7 @@ class Message:
         self.source = declarations.path
         self.origin = origin(self.package, self.source)
         self.md5sum = gentools.compute_md5(context, spec)
-        self.definition = gentools.compute_full_text(context, spec)
+        self.definition = gencpp_definition_text(gentools.compute_full_text(context, spec))
         self.definition_lines = cpp_string_literal_lines(self.definition)
         self.type_id = type_id(full_name)
         self.header_guard = 'MROS_MSG_%s_%s_H' % (self.package.upper(), self.name.upper())

@@ -65,12 +65,20 @@ class Random {
     nsec = static_cast<int32_t>(next() % 1000000000u);
   }
 
-  // Element counts: empty, short, or (outside compact mode) long.
+  // Element counts: empty, short, or (outside compact mode) long. Long runs
+  // draw on a per-instance budget, so nested arrays stay in the kilobytes.
   size_t length() {
     const uint64_t pick = next() % 10;
-    if (pick < 2) return 0;
-    if (pick < 8 || mode_ == kCompact) return 1 + next() % 4;
-    return 40 + next() % 300;
+    size_t count;
+    if (pick < 2) {
+      count = 0;
+    } else if (pick < 8 || mode_ == kCompact || budget_ < kLongRunMax) {
+      count = 1 + next() % 4;
+    } else {
+      count = 40 + next() % (kLongRunMax - 40);
+    }
+    budget_ = budget_ > count ? budget_ - count : 0;
+    return count;
   }
 
   void text(std::string& out) {
@@ -104,8 +112,11 @@ class Random {
     std::memcpy(&out, &bits, sizeof out);
   }
 
+  static const size_t kLongRunMax = 340;
+
   uint64_t state_;
   int mode_;
+  size_t budget_ = 1200;
 };
 
 }  // namespace harness
