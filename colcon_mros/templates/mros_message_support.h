@@ -123,12 +123,17 @@ struct Reader {
   }
 
   // A count read from the wire is believed only if the bytes left could hold
-  // that many elements of at least min_element_size bytes each (elements
-  // that serialize to nothing count as one byte, so a 4-byte count can never
-  // make the receiver allocate gigabytes).
+  // that many elements of min_element_size bytes each, so a 4-byte count can
+  // never make the receiver allocate more than the input describes. Elements
+  // that serialize to nothing (empty messages) are capped at
+  // kMaxZeroSizeElements instead.
+  static const uint32_t kMaxZeroSizeElements = 65536;
+
   bool plausibleCount(uint32_t count, uint32_t min_element_size) const {
-    const uint32_t unit = min_element_size == 0 ? 1 : min_element_size;
-    return count <= remaining / unit;
+    if (min_element_size == 0) {
+      return count <= kMaxZeroSizeElements;
+    }
+    return count <= remaining / min_element_size;
   }
 
   template <class T> bool read(T& value) { return Codec<T>::read(*this, value); }
