@@ -1,0 +1,189 @@
+"""What genmros writes: which files, for which types, and what they do when compiled."""
+
+import filecmp
+import hashlib
+import glob
+import os
+import shutil
+import subprocess
+
+import pytest
+
+from conftest import REPO, TEST_WS, run_genmros
+
+FIXTURES = os.path.join(REPO, 'tests', 'fixtures')
+STRICT = ['g++', '-std=c++11', '-Wall', '-Wextra', '-Werror', '-pedantic']
+
+
+def _tree(root):
+    return sorted(os.path.relpath(p, root) for p in glob.glob(os.path.join(root, '**', '*.h'), recursive=True))
+
+
+def _build_and_run(tmp_path, include_dirs, source_text, extra_sources=()):
+    source = tmp_path / 'main.cpp'
+    source.write_text(source_text)
+    program = str(tmp_path / 'main')
+    command = STRICT + ['-o', program, str(source)] + list(extra_sources) + ['-I' + d for d in include_dirs]
+    compiled = subprocess.run(command, capture_output=True, text=True)
+    assert compiled.returncode == 0, compiled.stderr[-4000:]
+    return subprocess.run([program], capture_output=True, text=True, check=True).stdout
+
+
+AGGREGATES = ['message_class_specialization.h', 'message_headers.h', 'msg_max_size.h']
+
+
+def test_export_of_one_type_brings_its_whole_closure(tmp_path):
+    run_genmros('export', '--type', 'geometry_msgs/PoseStamped', '-o', str(tmp_path), '--underlay', '/usr')
+    assert _tree(str(tmp_path)) == sorted(AGGREGATES + [
+        'geometry_msgs/Point.h', 'geometry_msgs/Pose.h', 'geometry_msgs/PoseStamped.h',
+        'geometry_msgs/Quaternion.h', 'mros_message_support.h', 'std_msgs/Header.h'])
+
+
+def test_export_of_a_workspace_covers_every_type_and_dependency(test_ws_export):
+    expected = {'mros_test_base/Vector3i.h', 'mros_test_base/Labeled.h', 'std_msgs/ColorRGBA.h',
+                'std_msgs/Header.h', 'geometry_msgs/Twist.h', 'geometry_msgs/Vector3.h', 'geometry_msgs/Point.h',
+                'mros_test/LookupPerson.h', 'mros_test/LookupPersonRequest.h', 'mros_test/LookupPersonResponse.h'}
+    expected.update('mros_test/%s.h' % os.path.basename(p)[:-4]
+                    for p in glob.glob(os.path.join(TEST_WS, 'src', 'mros_test', 'msg', '*.msg')))
+    assert expected <= set(_tree(test_ws_export))
+    assert 'std_msgs/String.h' not in _tree(test_ws_export)
+
+
+def test_generator_mode_writes_what_export_writes(test_ws_export, tmp_path):
+    flags = ['-I', 'std_msgs:/usr/share/std_msgs/msg', '-I', 'geometry_msgs:/usr/share/geometry_msgs/msg']
+    for package in ('mros_test_base', 'mros_test'):
+        flags += ['-I', '%s:%s' % (package, os.path.join(TEST_WS, 'src', package, 'msg'))]
+    definitions = sorted(glob.glob(os.path.join(TEST_WS, 'src', '*', 'msg', '*.msg')) +
+                         glob.glob(os.path.join(TEST_WS, 'src', '*', 'srv', '*.srv')))
+    for path in definitions:
+        package = path.split(os.sep)[-3]
+        run_genmros(path, '-p', package, '-o', str(tmp_path / package), *flags)
+    generated = _tree(str(tmp_path))
+    assert 'mros_test/LookupPersonRequest.h' in generated and 'mros_message_support.h' in generated
+    for relative in generated:
+        assert filecmp.cmp(str(tmp_path / relative), os.path.join(test_ws_export, relative), shallow=False), relative
+
+
+def test_type_ids_depend_on_the_type_name_only(tmp_path):
+    run_genmros('export', '--type', 'std_msgs/Header', '-o', str(tmp_path / 'a'), '--underlay', '/usr')
+    run_genmros('export', '--package', 'sensor_msgs', '--type', 'std_msgs/Header', '-o', str(tmp_path / 'b'),
+                '--underlay', '/usr')
+    assert filecmp.cmp(str(tmp_path / 'a' / 'std_msgs' / 'Header.h'), str(tmp_path / 'b' / 'std_msgs' / 'Header.h'),
+                       shallow=False)
+
+
+def test_fields_named_like_cpp_keywords_compile_and_round_trip(tmp_path):
+    workspace = tmp_path / 'ws' / 'src'
+    shutil.copytree(os.path.join(FIXTURES, 'keyword_msgs'), str(workspace / 'keyword_msgs'))
+    include = str(tmp_path / 'include')
+    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', include, '--underlay', '/usr')
+    output = _build_and_run(tmp_path, [include], r'''
+#include <cstdio>
+#include <keyword_msgs/Keywords.h>
+int main() {
+  keyword_msgs::Keywords sent;
+  sent.class_ = -7;
+  sent.new_ = "fresh";
+  sent.delete_.assign(3, 0.5);
+  sent.operator_[1] = 1;
+  sent.namespace_ = 200;
+  sent.NULL_ = -1;
+  sent.serialize_ = 65535;
+  sent.dataSize_ = "size";
+  uint8_t buffer[256];
+  const int32_t size = sent.serialize(buffer, sizeof buffer);
+  keyword_msgs::Keywords received;
+  const int32_t consumed = received.deserialize(buffer, static_cast<uint32_t>(size));
+  std::printf("%d %d %d %s %zu %d %u %lld %u %s %d %s\n", size, consumed, received.class_, received.new_.c_str(),
+              received.delete_.size(), received.operator_[1], received.namespace_,
+              static_cast<long long>(received.NULL_), received.serialize_, received.dataSize_.c_str(),
+              keyword_msgs::Keywords::register_, keyword_msgs::Keywords::typename_.c_str());
+  return 0;
+}
+''')
+    # 4 + (4+5) + (4+3*8) + 2 + 1 + 8 + 2 + (4+4) = 62 bytes
+    assert output.split() == ['62', '62', '-7', 'fresh', '3', '1', '200', '-1', '65535', 'size', '1', 'text']
+
+
+def test_constants_hold_the_values_written_in_the_msg_file(test_ws_export, tmp_path):
+    output = _build_and_run(tmp_path, [test_ws_export], r'''
+#include <cinttypes>
+#include <cstdio>
+#include <mros_test/Constants.h>
+typedef mros_test::Constants C;
+int main() {
+  std::printf("%d %d %d %d %u %d %u\n", C::FLAG_ON, C::FLAG_OFF, C::I8_MIN, C::I8_MAX, C::U8_MAX, C::BYTE_MIN,
+              C::CHAR_TOP);
+  std::printf("%d %u %" PRId32 " %" PRId32 " %" PRIu32 "\n", C::I16_MIN, C::U16_MAX, C::I32_MIN, C::I32_MAX,
+              C::U32_MAX);
+  std::printf("%" PRId64 " %" PRId64 " %" PRIu64 "\n", C::I64_MIN, C::I64_MAX, C::U64_MAX);
+  std::printf("%.9g %.17g %g\n", C::F32_PI, C::F64_SMALL, C::F64_NEG);
+  std::printf("[%s] [%s]\n", C::GREETING.c_str(), C::EMPTY.c_str());
+  const int32_t& bound = C::I32_MAX;  // odr-use: needs the out-of-class definition
+  return bound == 2147483647 ? 0 : 1;
+}
+''')
+    assert output.split('\n')[:5] == [
+        '1 0 -128 127 255 -128 255',
+        '-32768 65535 -2147483648 2147483647 4294967295',
+        '-9223372036854775808 9223372036854775807 18446744073709551615',
+        '3.14159274 1e-300 -2.5',
+        '[Hello, "mROS" \\ # not a comment ??=] []',
+    ]
+
+
+def test_mros_v1_interface_and_aggregates(tmp_path):
+    include = str(tmp_path / 'include')
+    run_genmros('export', '--workspace', TEST_WS, '--type', 'mros_test/PersonalData', '--type',
+                'mros_test_base/Vector3i', '-o', include, '--underlay', '/usr', '--variable-size-budget', '96')
+    with open(os.path.join(include, 'msg_max_size.h')) as stream:
+        assert '#define PUB_MSG_MAX_SIZE 96' in stream.read()
+    output = _build_and_run(tmp_path, [include, os.path.join(FIXTURES, 'mros_v1')], r'''
+#include "ros.h"
+#include <cstdio>
+#include <mros_test/PersonalData.h>
+static void on_person(mros_test::PersonalData::Ptr msg) {
+  std::printf("heard %s %s %u %d\n", msg->first_name.c_str(), msg->last_name.c_str(), msg->age, msg->score);
+}
+int main() {
+  ros::NodeHandle node;
+  ros::Publisher publisher = node.advertise<mros_test::PersonalData>("mros_str", 1);
+  mros_test::PersonalData msg;
+  msg.first_name = "Phil";
+  msg.last_name = "Woods";
+  msg.age = 83;
+  msg.score = 100000;
+  publisher.publish(msg);
+  node.subscribe("mros_str", 1, on_person);
+  return 0;
+}
+''', extra_sources=[os.path.join(FIXTURES, 'mros_v1', 'ros_api.cpp')])
+    # ROS' MD5 text: the declarations without comments; the definition: the file itself.
+    md5sum = hashlib.md5(b'string first_name\nstring last_name\nuint16 age\nint32 score').hexdigest()
+    with open(os.path.join(TEST_WS, 'src', 'mros_test', 'msg', 'PersonalData.msg')) as stream:
+        definition_length = len(stream.read())
+    assert output.split('\n')[:2] == [
+        'advertise mros_test/PersonalData %s %d' % (md5sum, definition_length),
+        'heard Phil Woods 83 100000']
+
+
+def test_template_directory_override(tmp_path):
+    templates = str(tmp_path / 'templates')
+    shutil.copytree(os.path.join(REPO, 'colcon_mros', 'templates'), templates)
+    with open(os.path.join(templates, 'msg.h.em'), 'a') as stream:
+        stream.write('// custom template\n')
+    output = str(tmp_path / 'include' / 'mros_test')
+    run_genmros(os.path.join(TEST_WS, 'src', 'mros_test', 'msg', 'PersonalData.msg'), '-p', 'mros_test',
+                '-o', output, '-e', templates)
+    with open(os.path.join(output, 'PersonalData.h')) as stream:
+        assert stream.read().endswith('// custom template\n')
+
+
+@pytest.mark.parametrize('arguments, expected', [
+    (['--help'], ['genmros FILE.msg|FILE.srv -p PKG -o OUTDIR', 'genmros export']),
+    (['export', '--help'], ['--workspace WS', '--package PKG', '--type PKG/TYPE', '--variable-size-budget']),
+])
+def test_help_describes_both_modes(arguments, expected):
+    result = run_genmros(*arguments)
+    for text in expected:
+        assert text in result.stdout
