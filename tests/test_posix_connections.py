@@ -92,7 +92,7 @@ MALFORMED_FRAMES = {
                          r'malformed frame from publisher http://127\.0\.0\.1:\d+/: message length '
                          r'4294967280 exceeds the limit of \d+ bytes; closing the connection'),
     'trailing bytes': (frame(personal_data('Eve', 'Raw', 40, 8) + b'\x00'),
-                       r'malformed mros_test/PersonalData message of 23 bytes'),
+                       r'malformed mros_test/PersonalData message of 21 bytes'),
 }
 
 
