@@ -183,20 +183,27 @@ class Field:
             self.min_size = element_min * array_length
 
 
-class Message:
-    """One message type (or one half of a service) ready for rendering."""
+class NamedType:
+    """The names a ROS type pkg/Name has in C++."""
 
-    def __init__(self, full_name, spec, context, declarations, element_of):
+    def __init__(self, full_name, guard_prefix):
         self.full_name = full_name
         self.package, self.name = full_name.split('/', 1)
         self.cpp_name = '%s::%s' % (self.package, self.name)
+        self.header_guard = '%s_%s_%s_H' % (guard_prefix, self.package.upper(), self.name.upper())
+
+
+class Message(NamedType):
+    """One message type (or one half of a service) ready for rendering."""
+
+    def __init__(self, full_name, spec, context, declarations, element_of):
+        super().__init__(full_name, 'MROS_MSG')
         self.source = declarations.path
         self.origin = origin(self.package, self.source)
         self.md5sum = gentools.compute_md5(context, spec)
         self.definition = gencpp_definition_text(gentools.compute_full_text(context, spec))
         self.definition_lines = cpp_string_literal_lines(self.definition)
         self.type_id = type_id(full_name)
-        self.header_guard = 'MROS_MSG_%s_%s_H' % (self.package.upper(), self.name.upper())
         self.constants = [Constant(constant, line) for constant, line
                           in zip(spec.constants, declarations.constant_lines)]
         self.fields = [Field(name, ros_type, element_of(ros_type), line) for name, ros_type, line
@@ -223,17 +230,14 @@ class Message:
             seen[member.cpp_name] = member.line
 
 
-class Service:
+class Service(NamedType):
     """A service: its request and response messages and the service's own identity."""
 
     def __init__(self, full_name, spec, context, request, response):
-        self.full_name = full_name
-        self.package, self.name = full_name.split('/', 1)
-        self.cpp_name = '%s::%s' % (self.package, self.name)
+        super().__init__(full_name, 'MROS_SRV')
         self.source = request.source
         self.origin = request.origin
         self.md5sum = gentools.compute_md5(context, spec)
-        self.header_guard = 'MROS_SRV_%s_%s_H' % (self.package.upper(), self.name.upper())
         self.request = request
         self.response = response
 

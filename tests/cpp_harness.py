@@ -59,11 +59,6 @@ class TypeSet:
     def spec(self, full_name):
         return self.context.get_registered(full_name)
 
-    @property
-    def top_level(self):
-        """Every message, but not the halves of services (compared separately)."""
-        return self.messages
-
 
 def _fill_element(target, base_type):
     if base_type == 'bool':
@@ -79,7 +74,7 @@ def _fill_element(target, base_type):
     return 'fill_%s(%s, r);' % (mangle(base_type), target)
 
 
-def fill_functions(type_set, escape=lambda name: name):
+def fill_functions(type_set):
     """C++ templates ``fill_<pkg>__<Type>(M&, harness::Random&)``, one per message."""
     lines = ['#include "harness_random.h"', '']
     for full_name in type_set.messages:
@@ -90,7 +85,7 @@ def fill_functions(type_set, escape=lambda name: name):
         lines.append('template <class M> void fill_%s(M& m, harness::Random& r) {' % mangle(full_name))
         lines.append('  (void)m; (void)r;')
         for field in spec.parsed_fields():
-            member = 'm.%s' % escape(field.name)
+            member = 'm.%s' % field.name
             base_type = bare_msg_type(field.base_type) if not field.is_builtin else field.base_type
             if not field.is_array:
                 lines.append('  ' + _fill_element(member, base_type))
@@ -119,11 +114,7 @@ def _dispatch(type_set, body):
 COMMON_DECLARATIONS = '#include "harness_sides.h"'
 
 
-def roscpp_side(type_set):
-    """Translation unit that fills and serializes roscpp's classes."""
-    return '\n'.join(['#include <ros/serialization.h>'] + _includes(type_set) + [
-        COMMON_DECLARATIONS, fill_functions(type_set), 'namespace roscpp_side {',
-        '''
+ROSCPP_TEMPLATES = '''
 template <class M> std::vector<uint8_t> encode(const M& m) {
   const uint32_t size = ros::serialization::serializationLength(m);
   std::vector<uint8_t> bytes(size);
@@ -140,24 +131,9 @@ template <class M> Identity identity() {
 template <class S> Identity service_identity() {
   return Identity{ros::service_traits::MD5Sum<S>::value(), ros::service_traits::DataType<S>::value(), ""};
 }
-''',
-        'std::vector<uint8_t> sample(int type, uint64_t seed, int mode) {',
-        _dispatch(type_set, lambda n: '%s m; harness::Random r(seed, mode); fill_%s(m, r); return encode(m);'
-                  % (cpp_name(n), mangle(n))),
-        '  return {};', '}', '',
-        'Identity identity(int type) {',
-        _dispatch(type_set, lambda n: 'return identity<%s>();' % cpp_name(n)),
-        '  return {};', '}', '',
-        'Identity service_identity(int service) {', '  switch (service) {'] +
-        ['    case %d: return service_identity<%s>();' % (i, cpp_name(s)) for i, s in enumerate(type_set.services)] +
-        ['  }', '  return {};', '}', '}  // namespace roscpp_side', ''])
+'''
 
-
-def mros_side(type_set, escape=lambda name: name):
-    """Translation unit that fills, serializes and parses genmros' classes."""
-    return '\n'.join(_includes(type_set) + [
-        COMMON_DECLARATIONS, fill_functions(type_set, escape), 'namespace mros_side {',
-        '''
+MROS_TEMPLATES = '''
 template <class M> std::vector<uint8_t> encode(const M& m) {
   std::vector<uint8_t> bytes(m.serializedLength());
   const int32_t written = m.serialize(bytes.data(), static_cast<uint32_t>(bytes.size()));
@@ -181,20 +157,39 @@ template <class M> Identity identity() {
 template <class S> Identity service_identity() {
   return Identity{service_traits::MD5Sum<S*>::value(), service_traits::DataType<S*>::value(), ""};
 }
-''',
+'''
+
+
+def _side(type_set, namespace, prelude, templates, parses):
+    """One translation unit: the types' headers, fill functions, and the
+    functions of harness_sides.h for this side, dispatched by type index."""
+    lines = prelude + _includes(type_set) + [
+        COMMON_DECLARATIONS, fill_functions(type_set), 'namespace %s {' % namespace, templates,
         'std::vector<uint8_t> sample(int type, uint64_t seed, int mode) {',
         _dispatch(type_set, lambda n: '%s m; harness::Random r(seed, mode); fill_%s(m, r); return encode(m);'
                   % (cpp_name(n), mangle(n))),
-        '  return {};', '}', '',
-        'int32_t reencode(int type, const uint8_t* input, uint32_t size, std::vector<uint8_t>& out) {',
-        _dispatch(type_set, lambda n: 'return reencode<%s>(input, size, out);' % cpp_name(n)),
-        '  return -2;', '}', '',
-        'Identity identity(int type) {',
-        _dispatch(type_set, lambda n: 'return identity<%s>();' % cpp_name(n)),
-        '  return {};', '}', '',
-        'Identity service_identity(int service) {', '  switch (service) {'] +
-        ['    case %d: return service_identity<%s>();' % (i, cpp_name(s)) for i, s in enumerate(type_set.services)] +
-        ['  }', '  return {};', '}', '}  // namespace mros_side', ''])
+        '  return {};', '}', '']
+    if parses:
+        lines += ['int32_t reencode(int type, const uint8_t* input, uint32_t size, std::vector<uint8_t>& out) {',
+                  _dispatch(type_set, lambda n: 'return reencode<%s>(input, size, out);' % cpp_name(n)),
+                  '  return -2;', '}', '']
+    lines += ['Identity identity(int type) {',
+              _dispatch(type_set, lambda n: 'return identity<%s>();' % cpp_name(n)),
+              '  return {};', '}', '',
+              'Identity service_identity(int service) {', '  switch (service) {']
+    lines += ['    case %d: return service_identity<%s>();' % (i, cpp_name(s)) for i, s in enumerate(type_set.services)]
+    lines += ['  }', '  return {};', '}', '}  // namespace %s' % namespace, '']
+    return '\n'.join(lines)
+
+
+def roscpp_side(type_set):
+    """Translation unit that fills and serializes roscpp's classes."""
+    return _side(type_set, 'roscpp_side', ['#include <ros/serialization.h>'], ROSCPP_TEMPLATES, parses=False)
+
+
+def mros_side(type_set):
+    """Translation unit that fills, serializes and parses genmros' classes."""
+    return _side(type_set, 'mros_side', [], MROS_TEMPLATES, parses=True)
 
 
 def type_table(type_set):
