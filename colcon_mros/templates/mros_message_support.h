@@ -72,9 +72,14 @@ struct Writer {
 
   explicit Writer(uint8_t* buffer) : pos(buffer) {}
 
+  // Writes the low width bytes of value, least significant first.
   void putUnsigned(uint64_t value, unsigned width) {
-    for (unsigned i = 0; i < width; ++i) {
-      pos[i] = static_cast<uint8_t>(value >> (8 * i));
+    if (kHostIsLittleEndian) {
+      std::memcpy(pos, &value, width);
+    } else {
+      for (unsigned i = 0; i < width; ++i) {
+        pos[i] = static_cast<uint8_t>(value >> (8 * i));
+      }
     }
     pos += width;
   }
@@ -102,8 +107,12 @@ struct Reader {
       return false;
     }
     value = 0;
-    for (unsigned i = 0; i < width; ++i) {
-      value |= static_cast<uint64_t>(pos[i]) << (8 * i);
+    if (kHostIsLittleEndian) {
+      std::memcpy(&value, pos, width);
+    } else {
+      for (unsigned i = 0; i < width; ++i) {
+        value |= static_cast<uint64_t>(pos[i]) << (8 * i);
+      }
     }
     pos += width;
     remaining -= width;

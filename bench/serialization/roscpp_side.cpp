@@ -1,0 +1,44 @@
+// roscpp's half of the serialization benchmark.
+#include <chrono>
+#include <type_traits>
+#include <vector>
+
+#include <geometry_msgs/PoseStamped.h>
+#include <ros/serialization.h>
+#include <sensor_msgs/Image.h>
+#include <sensor_msgs/JointState.h>
+#include <std_msgs/String.h>
+
+#include "instances.h"
+
+namespace roscpp_side {
+
+template <class M, int kInstance> Rates measure_type(double seconds) {
+  M message;
+  make(message, std::integral_constant<int, kInstance>());
+  const uint32_t size = ros::serialization::serializationLength(message);
+  std::vector<uint8_t> buffer(size);
+  Rates rates;
+  rates.bytes = size;
+  rates.encodes_per_second = rate(seconds, [&] {
+    ros::serialization::OStream stream(buffer.data(), ros::serialization::serializationLength(message));
+    ros::serialization::serialize(stream, message);
+  });
+  rates.decodes_per_second = rate(seconds, [&] {
+    M decoded;
+    ros::serialization::IStream stream(buffer.data(), size);
+    ros::serialization::deserialize(stream, decoded);
+  });
+  return rates;
+}
+
+Rates measure(int instance, double seconds) {
+  switch (instance) {
+    case kImage: return measure_type<sensor_msgs::Image, kImage>(seconds);
+    case kPoseStamped: return measure_type<geometry_msgs::PoseStamped, kPoseStamped>(seconds);
+    case kJointState: return measure_type<sensor_msgs::JointState, kJointState>(seconds);
+    default: return measure_type<std_msgs::String, kString>(seconds);
+  }
+}
+
+}  // namespace roscpp_side
