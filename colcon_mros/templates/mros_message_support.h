@@ -54,10 +54,11 @@ struct Duration {
 
 namespace wire {
 
+// On little-endian hosts numbers are copied as they lie in memory, arrays of
+// numbers in one block; elsewhere (or with MROS_WIRE_PORTABLE defined) every
+// number goes through the byte-by-byte path, which works on any host.
 #if defined(__BYTE_ORDER__) && defined(__ORDER_LITTLE_ENDIAN__) && \
-    __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
-// On little-endian hosts arrays of numbers are copied in one block; elsewhere
-// every element goes through the portable byte-by-byte path.
+    __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ && !defined(MROS_WIRE_PORTABLE)
 static const bool kHostIsLittleEndian = true;
 #else
 static const bool kHostIsLittleEndian = false;
