@@ -5,6 +5,7 @@ the ROS 1 wire sizes and the type identity (MD5 sum, definition text, type
 ID), and nothing about how headers are laid out, which is the templates' job.
 """
 
+import functools
 import math
 import os
 import zlib
@@ -200,9 +201,8 @@ class Message(NamedType):
         super().__init__(full_name, 'MROS_MSG')
         self.source = declarations.path
         self.origin = origin(self.package, self.source)
-        self.md5sum = gentools.compute_md5(context, spec)
-        self.definition = gencpp_definition_text(gentools.compute_full_text(context, spec))
-        self.definition_lines = cpp_string_literal_lines(self.definition)
+        self._spec = spec
+        self._context = context
         self.type_id = type_id(full_name)
         self.constants = [Constant(constant, line) for constant, line
                           in zip(spec.constants, declarations.constant_lines)]
@@ -214,6 +214,21 @@ class Message(NamedType):
         sizes = [f.fixed_size for f in self.fields]
         self.fixed_size = None if None in sizes else sum(sizes)
         self._check_names()
+
+    # The identity is computed when a template asks for it: a header needs
+    # only its own, while the model is built for every type it contains (for
+    # sizes), and genmsg's MD5 recursion is costly for deeply nested types.
+    @functools.cached_property
+    def md5sum(self):
+        return gentools.compute_md5(self._context, self._spec)
+
+    @functools.cached_property
+    def definition(self):
+        return gencpp_definition_text(gentools.compute_full_text(self._context, self._spec))
+
+    @functools.cached_property
+    def definition_lines(self):
+        return cpp_string_literal_lines(self.definition)
 
     def _check_names(self):
         # genmsg checks field names but takes any text before '=' as a constant's name.
