@@ -2,6 +2,7 @@
 // connects gets a SubscriberLink: a bounded queue of frames and a thread
 // that writes them (the paper's publishing task), so a slow subscriber
 // neither blocks publish() nor the other subscribers.
+#include <cerrno>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -15,23 +16,48 @@ namespace posix {
 class SubscriberLink {
  public:
   SubscriberLink(int fd, int id, const std::string& caller_id, size_t queue_size)
-      : id_(id), caller_id_(caller_id), queue_size_(queue_size), fd_(fd), closing_(false) {}
+      : id_(id),
+        caller_id_(caller_id),
+        queue_size_(queue_size),
+        fd_(fd),
+        closing_(false),
+        sending_(false),
+        head_offset_(0) {}
 
   int id() const { return id_; }
   const std::string& callerId() const { return caller_id_; }
 
-  // A full queue drops its oldest frame, as roscpp does (queue_size 0: no limit).
+  // An idle link is written to at once by the publishing thread, as far as
+  // the socket takes it without blocking (roscpp does the same): this saves
+  // the hand-over to the sending thread, which writes the rest. A full queue
+  // drops its oldest frame not yet begun, as roscpp does (queue_size 0: no
+  // limit).
   void enqueue(const std::shared_ptr<const Frame>& frame) {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      if (closing_) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (closing_) {
+      return;
+    }
+    if (!sending_ && queue_.empty()) {
+      const ssize_t sent =
+          send(fd_, frame->wire(), frame->wireSize(), MSG_DONTWAIT | MSG_NOSIGNAL);
+      if (sent == static_cast<ssize_t>(frame->wireSize())) {
         return;
       }
-      if (queue_size_ != 0 && queue_.size() >= queue_size_) {
-        queue_.pop_front();
+      if (sent < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR) {
+        closing_ = true;
+        wakeup_.notify_one();
+        return;
       }
-      queue_.push_back(frame);
+      head_offset_ = sent > 0 ? static_cast<size_t>(sent) : 0;
+    } else if (queue_size_ != 0 && queue_.size() >= queue_size_) {
+      const bool head_begun = head_offset_ > 0;
+      if (!head_begun) {
+        queue_.pop_front();
+      } else if (queue_.size() > 1) {
+        queue_.erase(queue_.begin() + 1);
+      }
     }
+    queue_.push_back(frame);
     wakeup_.notify_one();
   }
 
@@ -45,10 +71,14 @@ class SubscriberLink {
         break;
       }
       const std::shared_ptr<const Frame> frame = queue_.front();
+      const size_t offset = head_offset_;
       queue_.pop_front();
+      head_offset_ = 0;
+      sending_ = true;
       lock.unlock();
-      const bool sent = net::sendAll(fd_, frame->wire(), frame->wireSize());
+      const bool sent = net::sendAll(fd_, frame->wire() + offset, frame->wireSize() - offset);
       lock.lock();
+      sending_ = false;
       if (!sent) {
         break;
       }
@@ -77,6 +107,8 @@ class SubscriberLink {
   std::deque<std::shared_ptr<const Frame> > queue_;
   int fd_;
   bool closing_;
+  bool sending_;        // the sending thread is writing a frame it took
+  size_t head_offset_;  // bytes of queue_.front() already written
 };
 
 Publication::Publication(NodeContext& node, const std::string& topic, const TopicType& type,

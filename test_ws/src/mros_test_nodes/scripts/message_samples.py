@@ -42,7 +42,8 @@ def _arrays():
                    vectors=[Vector3i(1, -2, 3), Vector3i(-2147483648, 0, 2147483647)],
                    fixed_vectors=[Vector3i(4, 5, 6), Vector3i(7, 8, 9)],
                    labeled=[_labeled('one', [1.0, 2.5]), _labeled('', [])],
-                   fixed_labeled=[_labeled('left', [0.125]), _labeled('right', [])]),
+                   fixed_labeled=[_labeled('left', [0.125]), _labeled('right', [])],
+                   empties=[Empty(), Empty(), Empty()]),
         ArrayTypes(fixed_bytes=b'\x00\x00\x00\x00', fixed_floats=[0.0, 0.0, 0.0],
                    flags=[False, False], fixed_names=['', ''],
                    durations=[genpy.Duration(), genpy.Duration()],
@@ -63,17 +64,6 @@ def _nested():
                     arrays=arrays[0]),
         NestedTypes(header=Header(frame_id=''), arrays=arrays[1]),
     ]
-
-
-def zero_size_element_samples():
-    """An array of messages without fields (zero bytes each) ending the body."""
-    return {'ArrayTypes': [ArrayTypes(fixed_bytes=b'\x00\x00\x00\x00',
-                                      fixed_floats=[0.0, 0.0, 0.0], flags=[False, False],
-                                      fixed_names=['', ''],
-                                      durations=[genpy.Duration(), genpy.Duration()],
-                                      fixed_vectors=[Vector3i(), Vector3i()],
-                                      fixed_labeled=[_labeled('', []), _labeled('', [])],
-                                      empties=[Empty(), Empty(), Empty()])]}
 
 
 def samples():

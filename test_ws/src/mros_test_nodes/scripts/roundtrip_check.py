@@ -6,7 +6,7 @@ back, so connection set-up along the chain needs no extra waiting. Prints
 one PASS/FAIL line per type and exits 0 only if every sample came back.
 
   roundtrip_check.py FROM_PREFIX TO_PREFIX [--types T,...] [--timeout S]
-                     [--ignore-header-seq] [--zero-size-elements]
+                     [--ignore-header-seq]
 """
 import argparse
 import io
@@ -16,7 +16,7 @@ import time
 
 import rospy
 
-from message_samples import samples, zero_size_element_samples
+from message_samples import samples
 
 
 def wire_bytes(message, ignore_seq=False):
@@ -79,11 +79,9 @@ def main():
     parser.add_argument('--timeout', type=float, default=15.0)
     parser.add_argument('--ignore-header-seq', action='store_true',
                         help='a roscpp relay on the way renumbers header.seq, as roscpp does')
-    parser.add_argument('--zero-size-elements', action='store_true',
-                        help='send the samples with arrays of field-less messages instead')
     args = parser.parse_args(rospy.myargv()[1:])
     rospy.init_node('roundtrip_check', anonymous=True)
-    all_samples = zero_size_element_samples() if args.zero_size_elements else samples()
+    all_samples = samples()
     names = args.types.split(',') if args.types else sorted(all_samples)
     results = [check_type(name, all_samples[name], args.source, args.sink, args.timeout,
                           args.ignore_header_seq)

@@ -55,8 +55,8 @@ int main(int argc, char** argv) {
   arrivals.reserve(expected);
   ros::NodeHandle n;
   const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
-  ros::Subscriber sub = kind == "image" ? n.subscribe("/bench", 1000, onImage, hints)
-                                        : n.subscribe("/bench", 1000, onPerson, hints);
+  ros::Subscriber sub = kind == "image" ? n.subscribe("/bench", 0, onImage, hints)
+                                        : n.subscribe("/bench", 0, onPerson, hints);
   last_arrival = ros::WallTime::now();
   ros::WallTimer idle_check = n.createWallTimer(ros::WallDuration(0.2), [idle_s](const ros::WallTimerEvent&) {
     if (!arrivals.empty() && (ros::WallTime::now() - last_arrival).toSec() > idle_s) {

@@ -32,7 +32,7 @@ void setSequence(sensor_msgs::Image& message, uint32_t sequence) { message.heade
 
 template <class T>
 int run(ros::NodeHandle& n, T& message, int count, int rate, const char* times_path) {
-  ros::Publisher publisher = n.advertise<T>("/bench", 1000);
+  ros::Publisher publisher = n.advertise<T>("/bench", 0);  // 0: no limit, nothing dropped
   sleep(2);  // the benchmark's subscriber connects meanwhile
   std::vector<int64_t> send_times(static_cast<size_t>(count));
   ros::WallRate loop_rate(rate > 0 ? rate : 1);
