@@ -102,7 +102,7 @@ def main():
         for root in roots:
             os.makedirs(root, exist_ok=True)
     workspace = posix_builds.workspace(roots[0])
-    firmware = posix_builds.firmware(roots[1])
+    firmware = posix_builds.firmware(workspace.mros_export, roots[1])
     samples = {}
     with tempfile.TemporaryDirectory(prefix='posix_bench_') as scratch, \
             RosGraph(sourced_environment(workspace.setup_bash)) as graph:

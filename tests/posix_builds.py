@@ -1,7 +1,9 @@
 """Builds shared by the POSIX tests, the evaluation and the benchmark, each
 done once per process in a temporary directory: a copy of test_ws built with
-catkin_make (the real roscpp/rospy nodes of mros_test_nodes, gencpp/genpy
-and genmros messages) and the sample firmware built with CMake."""
+catkin_make (the real roscpp/rospy nodes of mros_test_nodes; gencpp, genpy
+and genmros messages, the genmros ones also exported to mros_export/) and
+the sample firmware built with CMake, taking the paper's programs' headers
+from that export."""
 
 import atexit
 import functools
@@ -35,6 +37,7 @@ class Workspace:
     def __init__(self, root):
         self.root = root
         self.setup_bash = os.path.join(root, 'devel', 'setup.bash')
+        self.mros_export = os.path.join(root, 'mros_export')
         self.lib = os.path.join(root, 'devel', 'lib', 'mros_test_nodes')
         self.scripts = os.path.join(root, 'src', 'mros_test_nodes', 'scripts')
 
@@ -59,16 +62,19 @@ class Firmware:
 def workspace(root=None):
     root = root or _scratch('mros_test_ws_')
     shutil.copytree(os.path.join(TEST_WS, 'src'), os.path.join(root, 'src'), dirs_exist_ok=True)
-    _run(['catkin_make', '-C', root, '-DPYTHON_EXECUTABLE=' + PYTHON, '-DCMAKE_BUILD_TYPE=Release', '-j2'],
+    built = Workspace(root)
+    _run(['catkin_make', '-C', root, '-DPYTHON_EXECUTABLE=' + PYTHON, '-DCMAKE_BUILD_TYPE=Release',
+          '-DMROS_EXPORT_DIR=' + built.mros_export, '-j2'],
          os.path.join(root, 'catkin_make.log'), cwd=root)
-    return Workspace(root)
+    return built
 
 
 @functools.lru_cache(maxsize=None)
-def firmware(root=None):
+def firmware(mros_export, root=None):
+    """Built against mros_export, the genmros export of a built Workspace."""
     root = root or _scratch('mros_firmware_')
     log = os.path.join(root, 'build.log')
     _run(['cmake', '-S', os.path.join(TEST_WS, 'firmware'), '-B', root,
-          '-DCMAKE_BUILD_TYPE=Release'], log)
+          '-DCMAKE_BUILD_TYPE=Release', '-DMROS_EXPORT_DIR=' + mros_export], log)
     _run(['cmake', '--build', root, '-j2'], log + '.make')
     return Firmware(root)

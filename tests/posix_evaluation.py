@@ -163,10 +163,11 @@ def main():
         fw_root = os.path.join(os.path.abspath(args.build_dir), 'firmware')
         os.makedirs(ws_root, exist_ok=True)
         os.makedirs(fw_root, exist_ok=True)
-    print('building test_ws with catkin_make ...', flush=True)
+    print('building test_ws with catkin_make (genmros exporting to mros_export/) ...', flush=True)
     workspace = posix_builds.workspace(ws_root)
-    print('building the sample firmware (POSIX target) with CMake ...', flush=True)
-    firmware = posix_builds.firmware(fw_root)
+    print('building the sample firmware (POSIX target) with CMake and '
+          'cmake/mros_generate.cmake ...', flush=True)
+    firmware = posix_builds.firmware(workspace.mros_export, fw_root)
     directions = run(workspace, firmware, args.messages)
     print('\n==== mROS POSIX evaluation (paper section 6.2) ====')
     for direction in directions:

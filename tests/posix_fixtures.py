@@ -23,8 +23,8 @@ def ros_workspace():
 
 
 @pytest.fixture(scope='session')
-def mros_firmware():
-    return posix_builds.firmware()
+def mros_firmware(ros_workspace):
+    return posix_builds.firmware(ros_workspace.mros_export)
 
 
 @pytest.fixture

@@ -98,3 +98,13 @@ def test_stopped_node_unregisters_and_exits_cleanly(ros_graph, mros_firmware):
     assert '/mros_node' not in publishers.get('/mros_str', set())
     assert '/mros_node2' not in subscribers.get('/test_msg', set())
     talker.wait_for(r'shutting down node /mros_node: SIGINT', timeout=0)
+
+
+def test_shutdown_call_of_the_slave_api_ends_the_node(ros_graph, mros_firmware):
+    listener = ros_graph.start('mROS listener', mros_firmware.node('mros_personal_listener'))
+    ros_graph.wait_for_graph(subscribers=[('/test_msg', '/mros_node2')])
+    assert slave(ros_graph, '/mros_node2').shutdown('/test', 'test is over') == [1, 'shutdown', 0]
+    assert listener.popen.wait(timeout=10) == 0
+    listener.wait_for(r'shutting down node /mros_node2: shutdown requested by /test '
+                      r'\(test is over\)', timeout=0)
+    assert '/mros_node2' not in ros_graph.system_state()[1].get('/test_msg', set())

@@ -63,10 +63,23 @@ class Node {
 
   Publication* advertise(const std::string& name, const TopicType& type, int queue_size) {
     const std::string topic = settings_.resolve(name);
-    Publication* publication =
-        new Publication(context_, topic, type, queue_size > 0 ? static_cast<size_t>(queue_size) : 0);
+    Publication* publication = nullptr;
     {
       std::lock_guard<std::mutex> lock(mutex_);
+      for (const auto& existing : publications_) {
+        if (existing->topic() != topic) {
+          continue;
+        }
+        if (existing->type().md5sum == type.md5sum) {
+          return existing.get();  // one publication per topic, as in roscpp
+        }
+        ROS_ERROR("cannot advertise %s as [%s/%s]: it is already advertised as [%s/%s]",
+                  topic.c_str(), type.datatype.c_str(), type.md5sum.c_str(),
+                  existing->type().datatype.c_str(), existing->type().md5sum.c_str());
+        return nullptr;
+      }
+      publication = new Publication(context_, topic, type,
+                                    queue_size > 0 ? static_cast<size_t>(queue_size) : 0);
       publications_.emplace_back(publication);
     }
     Value subscribers;
