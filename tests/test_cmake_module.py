@@ -183,3 +183,24 @@ def test_import_fails_at_configure_time_without_an_export(firmware, tmp_path):
     assert result.returncode != 0
     assert ("EXPORT_DIR '%s' holds no genmros export" % empty) in unwrapped(result.stdout)
 
+
+
+SAMPLE_FIRMWARE = os.path.join(os.path.dirname(TEST_WS_SRC), 'firmware')
+PAPER_PROGRAMS = ('mros_personal_talker', 'mros_personal_listener')
+
+
+@pytest.mark.parametrize('function', ['mros_generate_messages', 'mros_import_messages'])
+def test_sample_firmware_builds_with_each_function(function, catkin_export, tmp_path):
+    """test_ws/firmware: the paper's PersonalData talker and listener."""
+    build_dir = str(tmp_path / 'sample')
+    command = ['cmake', '-S', SAMPLE_FIRMWARE, '-B', build_dir]
+    if function == 'mros_import_messages':
+        command.append('-DMROS_EXPORT_DIR=%s' % catkin_export)
+    run(command, '/')
+    run(['cmake', '--build', build_dir, '--target'] + list(PAPER_PROGRAMS), build_dir)
+    for program in PAPER_PROGRAMS:
+        assert os.access(os.path.join(build_dir, program), os.X_OK)
+        generated = os.listdir(os.path.join(build_dir, 'mros_messages', program))
+        # Imported: the firmware's own aggregates only; generated: the headers too.
+        assert ('mros_test' in generated) == (function == 'mros_generate_messages')
+        assert 'message_headers.h' in generated
