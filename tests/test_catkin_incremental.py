@@ -1,18 +1,19 @@
 """Rebuilds with genmros in catkin: nothing runs when nothing changed, a
 touched .msg regenerates its type and the types that include it, an edited
-.msg reaches the devel space and the export dir, a deleted .msg loses its
-headers in both.
+.msg reaches the devel space and the export dir, a removed export dir comes
+back, a deleted .msg loses its headers in both.
 
 The steps share one catkin_make workspace and run in file order.
 """
 
 import os
+import shutil
 import time
 
 import pytest
 
 from fixtures.build_integration.tools import (
-    GENERATOR_LOG_LINE, genmros_export, headers_under, mtimes, new_workspace, run)
+    GENERATOR_LOG_LINE, MESSAGE_PACKAGES, genmros_export, headers_under, mtimes, new_workspace, run)
 
 # Types that contain mros_test_base/Vector3i, directly or through another type.
 VECTOR3I_HEADERS = {
@@ -73,8 +74,9 @@ def test_touched_msg_regenerates_its_type_and_the_types_including_it(workspace):
     after = mtimes(workspace.devel)
     changed = {path for path in before if after[path] != before[path]}
     assert changed == VECTOR3I_HEADERS
-    # Same content: the export dir keeps its files, so firmware objects stay.
-    assert mtimes(os.path.join(workspace.export_dir, 'include')) == exported_before
+    exported_after = mtimes(os.path.join(workspace.export_dir, 'include'))
+    changed = {path for path in exported_before if exported_after[path] != exported_before[path]}
+    assert changed == VECTOR3I_HEADERS
 
 
 def test_edited_msg_reaches_devel_space_and_export_dir(workspace, tmp_path):
@@ -89,6 +91,15 @@ def test_edited_msg_reaches_devel_space_and_export_dir(workspace, tmp_path):
     assert b'height_m' in expected
     assert headers_under(workspace.devel)[header] == expected
     assert headers_under(os.path.join(workspace.export_dir, 'include'))[header] == expected
+
+
+def test_export_dir_removed_by_hand_comes_back_on_the_next_build(workspace):
+    before = headers_under(os.path.join(workspace.export_dir, 'include'))
+    shutil.rmtree(workspace.export_dir)
+    workspace.build()
+    assert headers_under(os.path.join(workspace.export_dir, 'include')) == before
+    for package in MESSAGE_PACKAGES:
+        assert os.path.isfile(os.path.join(workspace.export_dir, 'share', package, 'package.xml'))
 
 
 def test_deleted_msg_loses_its_headers_and_definition(workspace):

@@ -75,24 +75,30 @@ macro(_genmros_add_command ARG_PKG ARG_FILE ARG_IFLAGS ARG_FILE_DEPS ARG_GEN_OUT
   # exists when the package is configured.
   file(MAKE_DIRECTORY "${ARG_GEN_OUTPUT_DIR}")
   _genmros_header_names("${ARG_FILE}" _genmros_names)
+  get_filename_component(_genmros_file_name "${ARG_FILE}" NAME)
   set(_genmros_outputs "")
   foreach(_genmros_name ${_genmros_names})
     list(APPEND _genmros_outputs "${ARG_GEN_OUTPUT_DIR}/${_genmros_name}")
   endforeach()
-  get_filename_component(_genmros_file_name "${ARG_FILE}" NAME)
 
   set(_genmros_export_commands "")
   if(MROS_EXPORT_DIR)
+    # A second genmros run rather than a copy: genmros writes atomically, and
+    # packages built in parallel share the export dir's support header.
+    set(_genmros_export_dir "${MROS_EXPORT_DIR}/include/${ARG_PKG}")
+    set(_genmros_definition "${MROS_EXPORT_DIR}/share/${ARG_PKG}/${ARG_KIND}/${_genmros_file_name}")
     set(_genmros_export_commands
-      COMMAND "${GENMROS_BIN}" "${ARG_FILE}" ${ARG_IFLAGS} -p "${ARG_PKG}"
-              -o "${MROS_EXPORT_DIR}/include/${ARG_PKG}"
-      COMMAND "${CMAKE_COMMAND}" -E copy_if_different "${ARG_FILE}"
-              "${MROS_EXPORT_DIR}/share/${ARG_PKG}/${ARG_KIND}/${_genmros_file_name}")
+      COMMAND "${GENMROS_BIN}" "${ARG_FILE}" ${ARG_IFLAGS} -p "${ARG_PKG}" -o "${_genmros_export_dir}"
+      COMMAND "${CMAKE_COMMAND}" -E copy_if_different "${ARG_FILE}" "${_genmros_definition}")
+    foreach(_genmros_name ${_genmros_names})
+      list(APPEND _genmros_outputs "${_genmros_export_dir}/${_genmros_name}")
+    endforeach()
+    list(APPEND _genmros_outputs "${_genmros_definition}")
   endif()
 
-  # genmros leaves a header with unchanged content untouched (firmware builds
-  # keep their objects); the touch tells make that this rule has run, so a
-  # build with nothing changed runs no generator at all.
+  # genmros leaves a header with unchanged content untouched; the touch tells
+  # make that this rule has run, so a build with nothing changed runs no
+  # generator at all.
   add_custom_command(OUTPUT ${_genmros_outputs}
     COMMAND "${GENMROS_BIN}" "${ARG_FILE}" ${ARG_IFLAGS} -p "${ARG_PKG}" -o "${ARG_GEN_OUTPUT_DIR}"
     ${_genmros_export_commands}
@@ -126,6 +132,7 @@ function(_genmros_remove_stale ARG_DIR ARG_KEEP ARG_DEFINITIONS_DIR)
 endfunction()
 
 macro(_generate_module_mros ARG_PKG ARG_GEN_OUTPUT_DIR ARG_GENERATED_FILES)
+  # The names of the headers (and exported definitions) the package has now.
   set(_genmros_keep "")
   foreach(_genmros_output ${ARG_GENERATED_FILES})
     get_filename_component(_genmros_name "${_genmros_output}" NAME)
@@ -136,9 +143,13 @@ macro(_generate_module_mros ARG_PKG ARG_GEN_OUTPUT_DIR ARG_GENERATED_FILES)
   if(MROS_EXPORT_DIR)
     _genmros_remove_stale("${MROS_EXPORT_DIR}/include/${ARG_PKG}" "${_genmros_keep}"
       "${MROS_EXPORT_DIR}/share/${ARG_PKG}")
-    file(MAKE_DIRECTORY "${MROS_EXPORT_DIR}/share/${ARG_PKG}")
-    configure_file("${PROJECT_SOURCE_DIR}/package.xml"
-      "${MROS_EXPORT_DIR}/share/${ARG_PKG}/package.xml" COPYONLY)
+    # Built, not configured: an export dir removed by hand comes back whole.
+    set(_genmros_manifest "${MROS_EXPORT_DIR}/share/${ARG_PKG}/package.xml")
+    add_custom_command(OUTPUT "${_genmros_manifest}"
+      COMMAND "${CMAKE_COMMAND}" -E copy "${PROJECT_SOURCE_DIR}/package.xml" "${_genmros_manifest}"
+      DEPENDS "${PROJECT_SOURCE_DIR}/package.xml"
+      VERBATIM)
+    list(APPEND ALL_GEN_OUTPUT_FILES_mros "${_genmros_manifest}")
   endif()
   if(NOT "${ARG_GENERATED_FILES}" STREQUAL "")
     install(FILES "${CATKIN_DEVEL_PREFIX}/${genmros_INSTALL_DIR}/${GENMROS_SUPPORT_HEADER}"
