@@ -67,6 +67,7 @@ class _BuildVerbDecorator(ArgumentParserDecorator):
 
 
 def _exporting(build_main):
+    """The build verb's main, checking DIR before and exporting after the build."""
     def main(*, context):
         export_dir = context.args.mros_export
         if export_dir:
