@@ -11,7 +11,7 @@ messages published as fast as publish() returns, with unbounded queues on
 both sides (nothing dropped), divided by the time from the first send to the
 last arrival. Not a test: it prints a table with ratios (mROS / roscpp).
 
-  bench/posix_bench.py [--build-dir DIR] [--rounds N]
+  bench/posix_bench.py [--build-dir DIR] [--rounds N] [--kinds personal,image]
 """
 
 import argparse
@@ -94,7 +94,10 @@ def main():
     parser.add_argument('--build-dir', help='keep the builds here (default: a temporary dir)')
     parser.add_argument('--rounds', type=int, default=1,
                         help='alternate mROS and roscpp this many times; medians are shown')
+    parser.add_argument('--kinds', default=','.join(WORKLOADS),
+                        help='message kinds to measure (default: %(default)s)')
     args = parser.parse_args()
+    kinds = args.kinds.split(',')
     roots = (None, None)
     if args.build_dir:
         roots = tuple(os.path.join(os.path.abspath(args.build_dir), name)
@@ -107,16 +110,16 @@ def main():
     with tempfile.TemporaryDirectory(prefix='posix_bench_') as scratch, \
             RosGraph(sourced_environment(workspace.setup_bash)) as graph:
         for round_index in range(args.rounds):
-            for kind in WORKLOADS:
+            for kind in kinds:
                 for implementation in ('mros', 'roscpp'):
                     result = measure(graph, workspace, firmware, kind, implementation, scratch,
                                      round_index)
                     samples.setdefault((kind, implementation), []).append(result)
-    print_table(samples, args.rounds)
+    print_table(samples, kinds, args.rounds)
     return 0
 
 
-def print_table(samples, rounds):
+def print_table(samples, kinds, rounds):
     rows = [('throughput [msg/s]', 'rate', '%.0f', True),
             ('latency p50 [us]', 'p50', '%.0f', False),
             ('latency p90 [us]', 'p90', '%.0f', False),
@@ -124,10 +127,11 @@ def print_table(samples, rounds):
             ('delivered at fixed rate', 'delivered', '%.3f', True),
             ('delivered when flooding', 'flood_delivered', '%.3f', True)]
     print('\nmROS POSIX node -> roscpp node vs. roscpp node -> roscpp node '
-          '(same machine, one run, median of %d round(s))' % rounds)
+          '(same machine, one run, median of %d alternating round(s))' % rounds)
     print('| message | metric | mROS POSIX | roscpp | mROS/roscpp |')
     print('|---|---|---:|---:|---:|')
-    for kind, workload in WORKLOADS.items():
+    for kind in kinds:
+        workload = WORKLOADS[kind]
         for label, key, fmt, _ in rows:
             mros = statistics.median(r[key] for r in samples[(kind, 'mros')])
             roscpp = statistics.median(r[key] for r in samples[(kind, 'roscpp')])
