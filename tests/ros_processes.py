@@ -58,7 +58,7 @@ class Process:
     def output(self):
         return '\n'.join(self.lines())
 
-    def wait_for(self, pattern, timeout=10.0, start=0, count=1):
+    def wait_for(self, pattern, timeout=15.0, start=0, count=1):
         """The first `count` matches of regex pattern in lines[start:]; raises
         AssertionError with the output if they do not appear in time."""
         regex = re.compile(pattern)

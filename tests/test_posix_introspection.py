@@ -108,3 +108,10 @@ def test_shutdown_call_of_the_slave_api_ends_the_node(ros_graph, mros_firmware):
     listener.wait_for(r'shutting down node /mros_node2: shutdown requested by /test '
                       r'\(test is over\)', timeout=0)
     assert '/mros_node2' not in ros_graph.system_state()[1].get('/test_msg', set())
+
+
+def test_namespace_and_remapping_from_the_command_line(ros_graph, mros_firmware):
+    ros_graph.start('mROS talker', mros_firmware.node(
+        'mros_personal_talker', '__ns:=/robot1', 'mros_str:=people'))
+    ros_graph.wait_for_graph(publishers=[('/robot1/people', '/robot1/mros_node')])
+    assert 'Type: mros_test/PersonalData' in rostopic(ros_graph, 'info', '/robot1/people')
