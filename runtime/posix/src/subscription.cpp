@@ -25,7 +25,8 @@ const int kMaxRetryDelayMs = 2000;
 
 class PublisherLink {
  public:
-  PublisherLink(const std::string& uri, int id) : uri_(uri), id_(id), fd_(-1), stopped_(false) {}
+  PublisherLink(const std::string& uri, int id)
+      : uri_(uri), id_(id), failed_attempts_(0), fd_(-1), stopped_(false) {}
 
   const std::string& uri() const { return uri_; }
   int id() const { return id_; }
@@ -64,6 +65,12 @@ class PublisherLink {
     wakeup_.notify_all();
   }
 
+  // A dead publisher that the master still lists is retried for as long as
+  // it is listed: only the first failure of a series is worth a warning.
+  // (Used by the link's own thread only.)
+  bool firstFailure() { return failed_attempts_++ == 0; }
+  void connected() { failed_attempts_ = 0; }
+
   // Sleeps unless stopped meanwhile; returns false if stopped.
   bool pause(int milliseconds) {
     std::unique_lock<std::mutex> lock(mutex_);
@@ -74,6 +81,7 @@ class PublisherLink {
  private:
   const std::string uri_;
   const int id_;
+  int failed_attempts_;
   std::mutex mutex_;
   std::condition_variable wakeup_;
   int fd_;
@@ -138,7 +146,10 @@ bool Subscription::connectAndReceive(PublisherLink& link) {
   if (!xmlrpc::callRosApi(link.uri(), "requestTopic",
                           {xmlrpc::Value::of(node_.caller_id), xmlrpc::Value::of(topic_), protocols},
                           answer, error)) {
-    ROS_WARN("%s: publisher %s not reachable: %s", topic, uri, error.c_str());
+    if (link.firstFailure()) {
+      ROS_WARN("%s: publisher %s not reachable: %s; retrying while the master lists it", topic,
+               uri, error.c_str());
+    }
     return true;
   }
   if (!answer.isArray() || answer.items.size() < 3 || answer.items[0].text != "TCPROS" ||
@@ -151,7 +162,10 @@ bool Subscription::connectAndReceive(PublisherLink& link) {
                                  static_cast<uint16_t>(answer.items[2].integer)};
   const int fd = net::connectTcp(address, kHandshakeTimeoutMs, error);
   if (fd < 0) {
-    ROS_WARN("%s: cannot connect to publisher %s: %s", topic, uri, error.c_str());
+    if (link.firstFailure()) {
+      ROS_WARN("%s: cannot connect to publisher %s: %s; retrying while the master lists it",
+               topic, uri, error.c_str());
+    }
     return true;
   }
   if (!link.attach(fd)) {
@@ -195,6 +209,7 @@ bool Subscription::receive(PublisherLink& link, int fd) {
   net::setTimeouts(fd, 0);
   net::setNoDelay(fd);
   ROS_INFO("%s: connected to publisher %s", topic, uri);
+  link.connected();
   std::vector<uint8_t> body;
   for (;;) {
     const tcpros::FrameStatus status = tcpros::readFrame(fd, body, error);
