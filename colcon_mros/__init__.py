@@ -7,8 +7,10 @@ The package is laid out along the generation pipeline:
 - ``render``: fill the empy templates in ``templates/`` from the model
 - ``output``: write generated files atomically
 - ``workspace``: find packages and their message directories
+- ``generate``: generator mode, one .msg/.srv file (what catkin runs)
 - ``export``: the whole-workspace export used by firmware builds
 - ``cli``: the ``genmros`` command
+- ``colcon_export``: ``colcon build --mros-export``
 """
 
 __version__ = '0.1.0'

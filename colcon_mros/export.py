@@ -108,8 +108,9 @@ def export(output_dir, prefixes, workspace=None, package_names=(), type_names=()
     messages = builder.closure(roots)
     _check_type_ids(messages)
 
+    writes_headers = only != 'aggregates'
     files = {}
-    if only != 'aggregates':
+    if writes_headers:
         files.update(renderer.support_header())
         for message in messages:
             files.update(renderer.message(message))
@@ -120,9 +121,10 @@ def export(output_dir, prefixes, workspace=None, package_names=(), type_names=()
 
     changed = write_files(output_dir, files)
     removed = []
-    exported_packages = {message.package for message in messages}
-    exported_packages.update(service.package for service in services)
-    for name in sorted(exported_packages) if only != 'aggregates' else ():
-        keep = {'%s.h' % type_name for type_name in packages[name].type_names()}
-        removed.extend(remove_stale(os.path.join(output_dir, name), keep))
+    if writes_headers:
+        exported_packages = {message.package for message in messages}
+        exported_packages.update(service.package for service in services)
+        for name in sorted(exported_packages):
+            keep = {'%s.h' % type_name for type_name in packages[name].type_names()}
+            removed.extend(remove_stale(os.path.join(output_dir, name), keep))
     return ExportResult(messages, services, changed, removed)
