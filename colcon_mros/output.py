@@ -1,8 +1,10 @@
 """Write generated files so that a reader never sees a half-written one.
 
-Each file goes to a temporary file in its own directory and is renamed over
-the target; a file whose content is unchanged is left alone, so its mtime
-stays and builds that depend on it do not rerun.
+Every changed file is first written in full to a temporary file beside its
+target; only when all of them are written are they renamed over their
+targets, so a run that fails (a full disk, say) leaves the old output as it
+was. A file whose content is unchanged is left alone, so its mtime stays and
+builds that depend on it do not rerun.
 """
 
 import os
@@ -22,17 +24,17 @@ def _unchanged(path, text):
         return False
 
 
-def _write_atomically(path, text):
-    directory = os.path.dirname(path)
-    handle, temporary = tempfile.mkstemp(prefix='.genmros-', suffix='.tmp', dir=directory)
+def _stage(path, text):
+    """Write text to a temporary file beside path; returns the temporary's path."""
+    handle, temporary = tempfile.mkstemp(prefix='.genmros-', suffix='.tmp', dir=os.path.dirname(path))
     try:
         with os.fdopen(handle, 'w', encoding='utf-8') as stream:
             stream.write(text)
         os.chmod(temporary, 0o644)
-        os.replace(temporary, path)
     except BaseException:
         os.unlink(temporary)
         raise
+    return temporary
 
 
 def check_writable(root):
@@ -52,19 +54,22 @@ def check_writable(root):
 def write_files(root, files):
     """Write {relative path: text} under root; returns the paths it changed."""
     check_writable(root)
-    changed = []
+    staged = {}
     try:
         for relative in sorted(files):
             path = os.path.join(root, relative)
             os.makedirs(os.path.dirname(path), exist_ok=True)
-            if _unchanged(path, files[relative]):
-                continue
-            _write_atomically(path, files[relative])
-            changed.append(path)
+            if not _unchanged(path, files[relative]):
+                staged[path] = _stage(path, files[relative])
+        for path, temporary in staged.items():
+            os.replace(temporary, path)
     except OSError as error:
+        for temporary in staged.values():
+            if os.path.exists(temporary):
+                os.unlink(temporary)
         raise GenmrosError('cannot write to output directory (%s)' % (error.strerror or error),
                            getattr(error, 'filename', None) or root)
-    return changed
+    return list(staged)
 
 
 def is_generated(path):

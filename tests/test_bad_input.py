@@ -1,6 +1,7 @@
 """Malformed definitions and bad arguments: one clear line, non-zero exit, output untouched."""
 
 import os
+import shutil
 
 import pytest
 
@@ -202,4 +203,18 @@ def test_unchanged_headers_keep_their_mtime(workspace):
     workspace_dir, _, output = workspace
     before = _snapshot(output)
     run_genmros('export', '--workspace', workspace_dir, '-o', output, '--underlay', '/usr')
+    assert _snapshot(output) == before
+
+
+def test_failed_write_changes_no_file(workspace):
+    workspace_dir, package, output = workspace
+    _write(package, {'msg/Good.msg': GOOD_MESSAGE + 'float64 added\n'})
+    # std_msgs/Header.h sorts after the headers that would change, so they are
+    # already written out (to temporaries) when std_msgs/ turns out to be a file.
+    shutil.rmtree(os.path.join(output, 'std_msgs'))
+    with open(os.path.join(output, 'std_msgs'), 'w') as stream:
+        stream.write('in the way\n')
+    before = _snapshot(output)
+    result = run_genmros('export', '--workspace', workspace_dir, '-o', output, '--underlay', '/usr', check=False)
+    _assert_one_line_error(result, 'cannot write to output directory')
     assert _snapshot(output) == before
