@@ -1,13 +1,19 @@
-// The roscpp reference talker of bench/posix_bench.py, the twin of the
-// firmware's bench_talker: publishes COUNT messages on /bench (PersonalData
-// with score = sequence number, or a 640x480 rgb8 Image with header.seq =
-// sequence number) at RATE per second (0: as fast as publish() returns) and
-// writes "sequence send_time_ns" lines (CLOCK_MONOTONIC) to SEND_TIMES_FILE.
+// The talker of bench/posix_bench.py, one source for both sides it compares:
+// built by test_ws/firmware against the mROS POSIX runtime (MROS_POSIX
+// defined) and by this package against roscpp. Publishes COUNT messages on
+// /bench, either PersonalData (score = sequence number) or a 640x480 rgb8
+// sensor_msgs/Image (header.seq = sequence number), at RATE per second
+// (0: as fast as publish() returns), and writes "sequence send_time_ns"
+// lines (CLOCK_MONOTONIC, just before publish) to SEND_TIMES_FILE.
 //
-//   bench_talker personal|image COUNT RATE SEND_TIMES_FILE
-#include <mros_test/PersonalData.h>
+//   bench_talker personal|image COUNT RATE SEND_TIMES_FILE [remappings]
+#ifdef MROS_POSIX
+#include "ros.h"
+static const char* const kNodeName = "mros_bench_talker";
+#else
 #include <ros/ros.h>
-#include <sensor_msgs/Image.h>
+static const char* const kNodeName = "ros_bench_talker";
+#endif
 
 #include <cstdio>
 #include <cstdlib>
@@ -15,6 +21,9 @@
 #include <string>
 #include <unistd.h>
 #include <vector>
+
+#include <mros_test/PersonalData.h>
+#include <sensor_msgs/Image.h>
 
 namespace {
 
@@ -35,7 +44,7 @@ int run(ros::NodeHandle& n, T& message, int count, int rate, const char* times_p
   ros::Publisher publisher = n.advertise<T>("/bench", 0);  // 0: no limit, nothing dropped
   sleep(2);  // the benchmark's subscriber connects meanwhile
   std::vector<int64_t> send_times(static_cast<size_t>(count));
-  ros::WallRate loop_rate(rate > 0 ? rate : 1);
+  ros::Rate loop_rate(rate > 0 ? rate : 1);
   for (int i = 0; i < count; ++i) {
     setSequence(message, static_cast<uint32_t>(i));
     send_times[static_cast<size_t>(i)] = nowNs();
@@ -59,14 +68,14 @@ int run(ros::NodeHandle& n, T& message, int count, int rate, const char* times_p
 }  // namespace
 
 int main(int argc, char** argv) {
-  ros::init(argc, argv, "ros_bench_talker");
   if (argc < 5) {
-    ROS_FATAL("usage: bench_talker personal|image COUNT RATE SEND_TIMES_FILE");
+    std::fprintf(stderr, "usage: %s personal|image COUNT RATE SEND_TIMES_FILE\n", argv[0]);
     return 2;
   }
   const std::string kind = argv[1];
   const int count = std::atoi(argv[2]);
   const int rate = std::atoi(argv[3]);
+  ros::init(argc, argv, kNodeName);
   ros::NodeHandle n;
   if (kind == "image") {
     sensor_msgs::Image image;
