@@ -12,28 +12,16 @@
 
 namespace mros_side {
 
-template <class M, int kInstance> Rates measure_type(double seconds) {
-  M message;
-  make(message, std::integral_constant<int, kInstance>());
-  std::vector<uint8_t> buffer(message.serializedLength());
-  const uint32_t size = static_cast<uint32_t>(buffer.size());
-  Rates rates;
-  rates.bytes = size;
-  rates.encodes_per_second = rate(seconds, [&] { message.serialize(buffer.data(), size); });
-  rates.decodes_per_second = rate(seconds, [&] {
-    M decoded;
-    decoded.deserialize(buffer.data(), size);
-  });
-  return rates;
+template <class M> uint32_t encodedSize(const M& message) { return message.serializedLength(); }
+
+template <class M> void encode(const M& message, uint8_t* buffer, uint32_t size) {
+  message.serialize(buffer, size);
 }
 
-Rates measure(int instance, double seconds) {
-  switch (instance) {
-    case kImage: return measure_type<sensor_msgs::Image, kImage>(seconds);
-    case kPoseStamped: return measure_type<geometry_msgs::PoseStamped, kPoseStamped>(seconds);
-    case kJointState: return measure_type<sensor_msgs::JointState, kJointState>(seconds);
-    default: return measure_type<std_msgs::String, kString>(seconds);
-  }
+template <class M> void decode(M& message, const uint8_t* buffer, uint32_t size) {
+  message.deserialize(buffer, size);
 }
+
+#include "measure.inc"
 
 }  // namespace mros_side

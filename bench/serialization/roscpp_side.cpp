@@ -13,32 +13,21 @@
 
 namespace roscpp_side {
 
-template <class M, int kInstance> Rates measure_type(double seconds) {
-  M message;
-  make(message, std::integral_constant<int, kInstance>());
-  const uint32_t size = ros::serialization::serializationLength(message);
-  std::vector<uint8_t> buffer(size);
-  Rates rates;
-  rates.bytes = size;
-  rates.encodes_per_second = rate(seconds, [&] {
-    ros::serialization::OStream stream(buffer.data(), ros::serialization::serializationLength(message));
-    ros::serialization::serialize(stream, message);
-  });
-  rates.decodes_per_second = rate(seconds, [&] {
-    M decoded;
-    ros::serialization::IStream stream(buffer.data(), size);
-    ros::serialization::deserialize(stream, decoded);
-  });
-  return rates;
+template <class M> uint32_t encodedSize(const M& message) {
+  return ros::serialization::serializationLength(message);
 }
 
-Rates measure(int instance, double seconds) {
-  switch (instance) {
-    case kImage: return measure_type<sensor_msgs::Image, kImage>(seconds);
-    case kPoseStamped: return measure_type<geometry_msgs::PoseStamped, kPoseStamped>(seconds);
-    case kJointState: return measure_type<sensor_msgs::JointState, kJointState>(seconds);
-    default: return measure_type<std_msgs::String, kString>(seconds);
-  }
+template <class M> void encode(const M& message, uint8_t* buffer, uint32_t) {
+  // roscpp sizes its stream from the message, as a publisher does.
+  ros::serialization::OStream stream(buffer, ros::serialization::serializationLength(message));
+  ros::serialization::serialize(stream, message);
 }
+
+template <class M> void decode(M& message, const uint8_t* buffer, uint32_t size) {
+  ros::serialization::IStream stream(const_cast<uint8_t*>(buffer), size);
+  ros::serialization::deserialize(stream, message);
+}
+
+#include "measure.inc"
 
 }  // namespace roscpp_side
