@@ -7,11 +7,11 @@ header goes to the include root beside it.
 
 import os
 
+from colcon_mros.errors import GenmrosError
 from colcon_mros.model import ModelBuilder
 from colcon_mros.output import write_files
 from colcon_mros.parse import SpecLoader
 from colcon_mros.render import Renderer
-from colcon_mros.errors import GenmrosError
 
 
 def generate_file(path, package, output_dir, search_path, template_dir=None):

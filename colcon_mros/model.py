@@ -40,8 +40,9 @@ BUILTIN_TYPES = {
 STRING_MIN_SIZE = 4
 ARRAY_COUNT_SIZE = 4
 
-# Names a field cannot take in C++: the language's keywords, and the members
-# every generated message has. Such a field gets a trailing underscore.
+# Names a field cannot take in C++: the language's keywords (and NULL, a macro
+# everywhere), and the members every generated message has. Such a field gets
+# a trailing underscore.
 CPP_KEYWORDS = frozenset('''
     alignas alignof and and_eq asm auto bitand bitor bool break case catch char
     char16_t char32_t class compl const constexpr const_cast continue decltype

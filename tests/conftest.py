@@ -6,6 +6,10 @@ import sys
 
 import pytest
 
+# The POSIX runtime's fixtures (catkin-built test_ws, the sample firmware, a
+# ROS graph with a rosmaster), shared by the test_posix_* modules.
+pytest_plugins = ['posix_fixtures']
+
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TEST_WS = os.path.join(REPO, 'test_ws')
 

@@ -9,7 +9,6 @@ import xmlrpc.client
 
 import pytest
 
-from posix_fixtures import mros_firmware, ros_graph, ros_workspace  # noqa: F401 (fixtures)
 from tcpros_peer import (HostilePublisher, closed_by_peer, encode_header, frame, personal_data,
                          read_header, receive_exactly)
 

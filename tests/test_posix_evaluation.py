@@ -2,7 +2,6 @@
 rospy/roscpp and rospy/roscpp -> mROS with PersonalData, values checked."""
 
 import posix_evaluation
-from posix_fixtures import mros_firmware, ros_workspace  # noqa: F401 (fixtures)
 
 
 def test_paper_evaluation_delivers_personal_data_both_ways(ros_workspace, mros_firmware):

@@ -6,7 +6,6 @@ the node is stopped."""
 import subprocess
 import xmlrpc.client
 
-from posix_fixtures import mros_firmware, ros_graph, ros_workspace  # noqa: F401 (fixtures)
 
 PERSONAL_DATA_MD5 = 'db8764b0e4c604ae579ade5118a6958c'  # gencpp's, for the refusal texts
 

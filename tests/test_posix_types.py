@@ -3,7 +3,6 @@ directions: every built-in type, every array form, nested and cross-package
 types, Header with time stamps. A rospy node sends samples (message_samples.py)
 and checks that the same bytes come back through the relays."""
 
-from posix_fixtures import mros_firmware, ros_graph, ros_workspace  # noqa: F401 (fixtures)
 
 TYPES = ['ArrayTypes', 'BuiltinTypes', 'Constants', 'Empty', 'Header', 'NestedTypes',
          'PersonalData']
