@@ -307,6 +307,10 @@ class ModelBuilder:
         return nested.cpp_name, nested.fixed_size, nested.min_size
 
 
+def _bytes(count):
+    return '%d byte%s' % (count, '' if count == 1 else 's')
+
+
 class MaxSizeEntry:
     """The publish buffer one message type needs."""
 
@@ -314,10 +318,10 @@ class MaxSizeEntry:
         self.full_name = message.full_name
         if message.fixed_size is None:
             self.size = max(variable_budget, message.min_size)
-            self.description = 'variable, at least %d bytes' % message.min_size
+            self.description = 'variable, at least %s' % _bytes(message.min_size)
         else:
             self.size = message.fixed_size
-            self.description = '%d bytes' % message.fixed_size
+            self.description = _bytes(message.fixed_size)
 
 
 class MaxSize:
