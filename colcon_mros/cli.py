@@ -14,6 +14,7 @@ DESCRIPTION = '''\
 Generate mROS message headers from ROS 1 .msg and .srv files.
 
   genmros FILE.msg|FILE.srv -p PKG -o OUTDIR [-I PKG:DIR ...] [-e TEMPLATE_DIR]
+          [--export-dir DIR]
       generator mode, with gencpp's arguments: the headers of one file
       (catkin runs it for every message of every package).
 
@@ -36,6 +37,10 @@ def _generator_parser():
     parser.add_argument('-I', dest='include_paths', action='append', default=[],
                         metavar='PKG:DIR', help='msg directory of a package (repeatable)')
     parser.add_argument('-e', dest='template_dir', help='template directory to use instead of ours')
+    parser.add_argument('--export-dir', metavar='DIR',
+                        help='also write DIR/include/<pkg>/<Type>.h for the types of FILE and every '
+                             'type they contain, and their definitions to DIR/share/<pkg>/ '
+                             "(catkin's MROS_EXPORT_DIR)")
     return parser
 
 
@@ -78,7 +83,8 @@ def main(argv=None):
         else:
             options = _generator_parser().parse_args(argv)
             generate_file(options.file, options.package, options.output_dir,
-                          parse_include_flags(options.include_paths), options.template_dir)
+                          parse_include_flags(options.include_paths), options.template_dir,
+                          options.export_dir)
     except GenmrosError as error:
         print('genmros: error: %s' % error, file=sys.stderr)
         return 1

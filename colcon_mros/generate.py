@@ -3,30 +3,72 @@
 This is what catkin calls per file, with gencpp's arguments. OUTDIR is the
 package's directory under the include root (``<root>/<pkg>``); the support
 header goes to the include root beside it.
+
+With an export dir (catkin's MROS_EXPORT_DIR), the same run also fills that
+dir for a firmware: ``include/<pkg>/<Type>.h`` for the file's types and every
+type they contain, from whichever package, and ``share/<pkg>/`` with those
+types' definitions and package.xml, which is what a firmware build reads to
+write its aggregates.
 """
 
 import os
 
 from colcon_mros.errors import GenmrosError
-from colcon_mros.model import ModelBuilder
+from colcon_mros.model import SUPPORT_HEADER, ModelBuilder
 from colcon_mros.output import write_files
 from colcon_mros.parse import SpecLoader
 from colcon_mros.render import Renderer
 
 
-def generate_file(path, package, output_dir, search_path, template_dir=None):
+def _read(path):
+    with open(path, encoding='utf-8') as stream:
+        return stream.read()
+
+
+def _definition_files(package, path):
+    """{share-relative path: text} of one definition file and its package.xml."""
+    kind_dir = os.path.dirname(path)
+    files = {'%s/%s/%s' % (package, os.path.basename(kind_dir), os.path.basename(path)): _read(path)}
+    manifest = os.path.join(os.path.dirname(kind_dir), 'package.xml')
+    if os.path.isfile(manifest):
+        files['%s/package.xml' % package] = _read(manifest)
+    return files
+
+
+def _export_files(renderer, builder, headers, package, path, dependencies):
+    """What an export dir takes from one definition file: {relative path: text}."""
+    files = {'include/' + relative: text for relative, text in headers.items()}
+    files['include/' + SUPPORT_HEADER] = renderer.support_header()[SUPPORT_HEADER]
+    definitions = _definition_files(package, path)
+    for message in builder.closure(dependencies):
+        files.update(('include/' + relative, text) for relative, text in renderer.message(message).items())
+        definitions.update(_definition_files(message.package, message.source))
+    files.update(('share/' + relative, text) for relative, text in definitions.items())
+    return files
+
+
+def generate_file(path, package, output_dir, search_path, template_dir=None, export_dir=None):
     """Generate the headers of one definition file; returns the paths written."""
     loader = SpecLoader(search_path)
     builder = ModelBuilder(loader)
     renderer = Renderer(template_dir)
     if path.endswith('.msg'):
-        spec = loader.load_message_file(path, package)
-        files = renderer.message(builder.message(spec.full_name))
+        message = builder.message(loader.load_message_file(path, package).full_name)
+        headers = renderer.message(message)
+        dependencies = message.dependencies
     elif path.endswith('.srv'):
-        files = renderer.service(builder.service(loader.load_service_file(path, package)))
+        service = builder.service(loader.load_service_file(path, package))
+        headers = renderer.service(service)
+        dependencies = service.request.dependencies + service.response.dependencies
     else:
         raise GenmrosError('expected a .msg or .srv file', path)
-    package_files = {os.path.basename(relative): text for relative, text in files.items()}
+    # Rendered in full before anything is written: a bad file changes nothing.
+    export_files = (_export_files(renderer, builder, headers, package, path, dependencies)
+                    if export_dir else {})
+    package_files = {os.path.basename(relative): text for relative, text in headers.items()}
     include_root = os.path.dirname(os.path.abspath(output_dir))
-    return (write_files(output_dir, package_files) +
-            write_files(include_root, renderer.support_header()))
+    written = (write_files(output_dir, package_files) +
+               write_files(include_root, renderer.support_header()))
+    if export_dir:
+        written += write_files(export_dir, export_files)
+    return written

@@ -204,3 +204,14 @@ def test_sample_firmware_builds_with_each_function(function, catkin_export, tmp_
         # Imported: the firmware's own aggregates only; generated: the headers too.
         assert ('mros_test' in generated) == (function == 'mros_generate_messages')
         assert 'message_headers.h' in generated
+
+
+def test_import_from_a_catkin_export_of_types_that_nest_installed_ones(firmware, catkin_export):
+    # NestedTypes holds a std_msgs/Header and geometry_msgs types: the catkin
+    # export carries their headers and definitions, so no ROS is needed here.
+    for package in ('std_msgs', 'geometry_msgs'):
+        assert os.path.isfile(os.path.join(catkin_export, 'share', package, 'package.xml'))
+    assert os.path.isfile(os.path.join(catkin_export, 'include', 'std_msgs', 'Header.h'))
+    firmware.configure(MROS_MODE='import', MROS_EXPORT_DIR=catkin_export, FIRMWARE_TYPES='mros_test/NestedTypes')
+    firmware.build()
+    assert firmware.output()['md5'] == genmsg_md5('mros_test/NestedTypes', search_path_of(TEST_WS_SRC))

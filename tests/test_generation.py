@@ -187,3 +187,24 @@ def test_help_describes_both_modes(arguments, expected):
     result = run_genmros(*arguments)
     for text in expected:
         assert text in result.stdout
+
+
+def test_generator_mode_fills_an_export_dir_with_the_whole_closure(test_ws_export, tmp_path):
+    flags = ['-I', 'std_msgs:/usr/share/std_msgs/msg', '-I', 'geometry_msgs:/usr/share/geometry_msgs/msg']
+    for package in ('mros_test_base', 'mros_test'):
+        flags += ['-I', '%s:%s' % (package, os.path.join(TEST_WS, 'src', package, 'msg'))]
+    export_dir = tmp_path / 'export'
+    run_genmros(os.path.join(TEST_WS, 'src', 'mros_test', 'srv', 'LookupPerson.srv'), '-p', 'mros_test',
+                '-o', str(tmp_path / 'devel' / 'mros_test'), '--export-dir', str(export_dir), *flags)
+    assert _tree(str(export_dir / 'include')) == [
+        'geometry_msgs/Point.h', 'mros_message_support.h', 'mros_test/LookupPerson.h',
+        'mros_test/LookupPersonRequest.h', 'mros_test/LookupPersonResponse.h', 'mros_test/PersonalData.h']
+    for relative in _tree(str(export_dir / 'include')):
+        assert filecmp.cmp(str(export_dir / 'include' / relative), os.path.join(test_ws_export, relative),
+                           shallow=False), relative
+    definitions = sorted(os.path.relpath(os.path.join(d, n), str(export_dir / 'share'))
+                         for d, _, names in os.walk(str(export_dir / 'share')) for n in names)
+    assert definitions == ['geometry_msgs/msg/Point.msg', 'geometry_msgs/package.xml',
+                           'mros_test/msg/PersonalData.msg', 'mros_test/package.xml', 'mros_test/srv/LookupPerson.srv']
+    assert filecmp.cmp(str(export_dir / 'share' / 'geometry_msgs' / 'msg' / 'Point.msg'),
+                       '/usr/share/geometry_msgs/msg/Point.msg', shallow=False)

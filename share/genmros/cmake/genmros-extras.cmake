@@ -6,7 +6,8 @@
 #   _generate_module_mros                    once per package, after them
 # The headers go to ${CATKIN_DEVEL_PREFIX}/${genmros_INSTALL_DIR}/<pkg>/<Type>.h
 # and, when MROS_EXPORT_DIR is set (CMake variable or environment), also to
-# ${MROS_EXPORT_DIR}/include/<pkg>/<Type>.h, with the .msg/.srv files and the
+# ${MROS_EXPORT_DIR}/include/<pkg>/<Type>.h, with the headers of every type
+# they contain (installed packages' too), and the .msg/.srv files and the
 # package.xml under ${MROS_EXPORT_DIR}/share/<pkg>/ (what mros_import_messages()
 # reads to write a firmware's aggregates).
 
@@ -81,19 +82,17 @@ macro(_genmros_add_command ARG_PKG ARG_FILE ARG_IFLAGS ARG_FILE_DEPS ARG_GEN_OUT
     list(APPEND _genmros_outputs "${ARG_GEN_OUTPUT_DIR}/${_genmros_name}")
   endforeach()
 
-  set(_genmros_export_commands "")
+  set(_genmros_export_args "")
   if(MROS_EXPORT_DIR)
-    # A second genmros run rather than a copy: genmros writes atomically, and
-    # packages built in parallel share the export dir's support header.
-    set(_genmros_export_dir "${MROS_EXPORT_DIR}/include/${ARG_PKG}")
-    set(_genmros_definition "${MROS_EXPORT_DIR}/share/${ARG_PKG}/${ARG_KIND}/${_genmros_file_name}")
-    set(_genmros_export_commands
-      COMMAND "${GENMROS_BIN}" "${ARG_FILE}" ${ARG_IFLAGS} -p "${ARG_PKG}" -o "${_genmros_export_dir}"
-      COMMAND "${CMAKE_COMMAND}" -E copy_if_different "${ARG_FILE}" "${_genmros_definition}")
+    # The same genmros run fills the export dir: this file's headers, those
+    # of every type they contain (std_msgs/Header too, so the export needs no
+    # ROS installed beside it), and their definitions under share/. genmros
+    # writes atomically, so packages built in parallel can share the dir.
+    set(_genmros_export_args --export-dir "${MROS_EXPORT_DIR}")
     foreach(_genmros_name ${_genmros_names})
-      list(APPEND _genmros_outputs "${_genmros_export_dir}/${_genmros_name}")
+      list(APPEND _genmros_outputs "${MROS_EXPORT_DIR}/include/${ARG_PKG}/${_genmros_name}")
     endforeach()
-    list(APPEND _genmros_outputs "${_genmros_definition}")
+    list(APPEND _genmros_outputs "${MROS_EXPORT_DIR}/share/${ARG_PKG}/${ARG_KIND}/${_genmros_file_name}")
   endif()
 
   # genmros leaves a header with unchanged content untouched; the touch tells
@@ -101,7 +100,7 @@ macro(_genmros_add_command ARG_PKG ARG_FILE ARG_IFLAGS ARG_FILE_DEPS ARG_GEN_OUT
   # generator at all.
   add_custom_command(OUTPUT ${_genmros_outputs}
     COMMAND "${GENMROS_BIN}" "${ARG_FILE}" ${ARG_IFLAGS} -p "${ARG_PKG}" -o "${ARG_GEN_OUTPUT_DIR}"
-    ${_genmros_export_commands}
+      ${_genmros_export_args}
     COMMAND "${CMAKE_COMMAND}" -E touch_nocreate ${_genmros_outputs}
     DEPENDS "${GENMROS_BIN}" "${ARG_FILE}" ${ARG_FILE_DEPS}
     COMMENT "Generating mROS headers from ${ARG_PKG}/${_genmros_file_name}"
