@@ -20,7 +20,8 @@ from colcon_mros.model import ModelBuilder
 from colcon_mros.output import remove_stale, write_files
 from colcon_mros.parse import SpecLoader
 from colcon_mros.render import DEFAULT_VARIABLE_SIZE_BUDGET, Renderer
-from colcon_mros.workspace import installed_packages, msg_search_path, workspace_packages
+from colcon_mros.workspace import (installed_packages, msg_search_path, type_name_of,
+                                   workspace_packages)
 
 
 class ExportResult:
@@ -66,7 +67,7 @@ class Selection:
         for files, target in ((package.message_files(), self.messages),
                               (package.service_files(), self.services)):
             for path in files:
-                if os.path.basename(path)[:-4] == type_name:
+                if type_name_of(path) == type_name:
                     target.append((package_name, path))
                     return
         raise GenmrosError("unknown type '%s' (package %s has no %s.msg or %s.srv)"
@@ -104,7 +105,7 @@ def export(output_dir, prefixes, workspace=None, package_names=(), type_names=()
     services = [builder.service(loader.load_service_file(path, package))
                 for package, path in selection.services]
     for service in services:
-        roots.extend(service.request.dependencies + service.response.dependencies)
+        roots.extend(service.dependencies)
     messages = builder.closure(roots)
     _check_type_ids(messages)
 

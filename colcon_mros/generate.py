@@ -14,7 +14,7 @@ write its aggregates.
 import os
 
 from colcon_mros.errors import GenmrosError
-from colcon_mros.model import SUPPORT_HEADER, ModelBuilder
+from colcon_mros.model import ModelBuilder
 from colcon_mros.output import write_files
 from colcon_mros.parse import SpecLoader
 from colcon_mros.render import Renderer
@@ -25,24 +25,26 @@ def _read(path):
         return stream.read()
 
 
-def _definition_files(package, path):
-    """{share-relative path: text} of one definition file and its package.xml."""
+def _add_definition(definitions, package, path):
+    """Add one definition file, and its package's package.xml once, to
+    {share-relative path: text}."""
     kind_dir = os.path.dirname(path)
-    files = {'%s/%s/%s' % (package, os.path.basename(kind_dir), os.path.basename(path)): _read(path)}
+    definitions['%s/%s/%s' % (package, os.path.basename(kind_dir), os.path.basename(path))] = _read(path)
     manifest = os.path.join(os.path.dirname(kind_dir), 'package.xml')
-    if os.path.isfile(manifest):
-        files['%s/package.xml' % package] = _read(manifest)
-    return files
+    key = '%s/package.xml' % package
+    if key not in definitions and os.path.isfile(manifest):
+        definitions[key] = _read(manifest)
 
 
-def _export_files(renderer, builder, headers, package, path, dependencies):
+def _export_files(renderer, builder, headers, support, package, path, dependencies):
     """What an export dir takes from one definition file: {relative path: text}."""
     files = {'include/' + relative: text for relative, text in headers.items()}
-    files['include/' + SUPPORT_HEADER] = renderer.support_header()[SUPPORT_HEADER]
-    definitions = _definition_files(package, path)
+    files.update(('include/' + relative, text) for relative, text in support.items())
+    definitions = {}
+    _add_definition(definitions, package, path)
     for message in builder.closure(dependencies):
         files.update(('include/' + relative, text) for relative, text in renderer.message(message).items())
-        definitions.update(_definition_files(message.package, message.source))
+        _add_definition(definitions, message.package, message.source)
     files.update(('share/' + relative, text) for relative, text in definitions.items())
     return files
 
@@ -53,22 +55,21 @@ def generate_file(path, package, output_dir, search_path, template_dir=None, exp
     builder = ModelBuilder(loader)
     renderer = Renderer(template_dir)
     if path.endswith('.msg'):
-        message = builder.message(loader.load_message_file(path, package).full_name)
-        headers = renderer.message(message)
-        dependencies = message.dependencies
+        generated = builder.message(loader.load_message_file(path, package).full_name)
+        headers = renderer.message(generated)
     elif path.endswith('.srv'):
-        service = builder.service(loader.load_service_file(path, package))
-        headers = renderer.service(service)
-        dependencies = service.request.dependencies + service.response.dependencies
+        generated = builder.service(loader.load_service_file(path, package))
+        headers = renderer.service(generated)
     else:
         raise GenmrosError('expected a .msg or .srv file', path)
+    support = renderer.support_header()
     # Rendered in full before anything is written: a bad file changes nothing.
-    export_files = (_export_files(renderer, builder, headers, package, path, dependencies)
+    export_files = (_export_files(renderer, builder, headers, support, package, path,
+                                  generated.dependencies)
                     if export_dir else {})
     package_files = {os.path.basename(relative): text for relative, text in headers.items()}
     include_root = os.path.dirname(os.path.abspath(output_dir))
-    written = (write_files(output_dir, package_files) +
-               write_files(include_root, renderer.support_header()))
+    written = write_files(output_dir, package_files) + write_files(include_root, support)
     if export_dir:
         written += write_files(export_dir, export_files)
     return written

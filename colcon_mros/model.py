@@ -256,6 +256,7 @@ class Service(NamedType):
         self.md5sum = gentools.compute_md5(context, spec)
         self.request = request
         self.response = response
+        self.dependencies = request.dependencies + response.dependencies
 
 
 class ModelBuilder:

@@ -30,14 +30,15 @@ class Package:
 
     def type_names(self):
         """Names of every type the package defines, services' halves included."""
-        names = {_stem(path) for path in self.message_files()}
+        names = {type_name_of(path) for path in self.message_files()}
         for path in self.service_files():
-            stem = _stem(path)
+            stem = type_name_of(path)
             names.update((stem, stem + 'Request', stem + 'Response'))
         return names
 
 
-def _stem(path):
+def type_name_of(path):
+    """The type a definition file declares: Point for .../msg/Point.msg."""
     return os.path.splitext(os.path.basename(path))[0]
 
 
