@@ -7,6 +7,7 @@ from colcon_mros import __version__
 from colcon_mros.errors import GenmrosError
 from colcon_mros.export import EXPORT_PARTS, export
 from colcon_mros.generate import generate_file
+from colcon_mros.make_fragment import make_fragment_path
 from colcon_mros.render import DEFAULT_VARIABLE_SIZE_BUDGET
 from colcon_mros.workspace import default_prefixes, parse_include_flags
 
@@ -18,10 +19,15 @@ Generate mROS message headers from ROS 1 .msg and .srv files.
       generator mode, with gencpp's arguments: the headers of one file
       (catkin runs it for every message of every package).
 
-  genmros export [--workspace WS] [--package PKG ...] [--type PKG/TYPE ...] -o DIR
+  genmros export [--workspace WS ...] [--package PKG ...] [--type PKG/TYPE ...] -o DIR
       the headers of the selected types and every type they contain, plus the
       per-firmware aggregates message_headers.h, message_class_specialization.h
-      and msg_max_size.h. Without --package or --type: every type in WS.
+      and msg_max_size.h for the selected types. Without --package or --type:
+      every type in WS.
+
+  genmros make-fragment
+      prints the path of genmros.mk, the fragment an mROS v1 app's Makefile
+      includes to generate its headers.
 '''
 
 
@@ -48,8 +54,9 @@ def _export_parser():
     parser = argparse.ArgumentParser(
         prog='genmros export',
         description='Export the mROS headers of a workspace for a firmware build.')
-    parser.add_argument('--workspace', metavar='WS',
-                        help='catkin/colcon workspace (its src/ is searched for packages)')
+    parser.add_argument('--workspace', dest='workspaces', action='append', default=[], metavar='WS',
+                        help='catkin/colcon workspace or source tree, searched for packages '
+                             '(repeatable)')
     parser.add_argument('--package', dest='packages', action='append', default=[],
                         metavar='PKG', help='export every type of PKG (repeatable)')
     parser.add_argument('--type', dest='types', action='append', default=[],
@@ -66,6 +73,9 @@ def _export_parser():
     parser.add_argument('--only', choices=EXPORT_PARTS[1:],
                         help='write only the headers, or only the per-firmware aggregates')
     parser.add_argument('-e', dest='template_dir', help='template directory to use instead of ours')
+    parser.add_argument('--depfile', metavar='FILE',
+                        help='also write FILE, a make rule naming every .msg/.srv file the '
+                             'headers come from')
     return parser
 
 
@@ -75,11 +85,13 @@ def main(argv=None):
         if argv[:1] == ['export']:
             options = _export_parser().parse_args(argv[1:])
             result = export(options.output_dir, options.prefixes or default_prefixes(),
-                            options.workspace, options.packages, options.types,
+                            options.workspaces, options.packages, options.types,
                             options.variable_size_budget, options.template_dir,
-                            options.only or 'all')
+                            options.only or 'all', options.depfile)
             print('genmros: exported %d message and %d service types to %s'
                   % (len(result.messages), len(result.services), options.output_dir))
+        elif argv == ['make-fragment']:
+            print(make_fragment_path())
         else:
             options = _generator_parser().parse_args(argv)
             generate_file(options.file, options.package, options.output_dir,

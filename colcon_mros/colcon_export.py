@@ -113,7 +113,7 @@ def export_workspace(args, export_dir):
         raise GenmrosError('the built packages define no messages or services; nothing to '
                            'export', export_dir)
 
-    result = export(os.path.join(export_dir, 'include'), prefixes, workspace,
+    result = export(os.path.join(export_dir, 'include'), prefixes, [workspace],
                     package_names=sorted(names), only='headers')
     exported = {message.package for message in result.messages}
     exported.update(service.package for service in result.services)

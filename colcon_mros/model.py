@@ -55,9 +55,8 @@ CPP_KEYWORDS = frozenset('''
     NULL
 '''.split())
 RESERVED_MEMBERS = frozenset([
-    'serializedLength', 'serialize', 'deserialize', 'serializeTo',
-    'deserializeFrom', 'dataSize', 'memCopy', 'Ptr', 'ConstPtr',
-    'MROS_TYPE_ID', 'MROS_MIN_SERIALIZED_SIZE',
+    'serializedLength', 'serialize', 'deserialize', 'dataSize', 'memCopy',
+    'Ptr', 'ConstPtr', 'MROS_TYPE_ID', 'MROS_MIN_SERIALIZED_SIZE',
 ])
 
 # Type IDs live in [FIRST_TYPE_ID, 2**31): clear of the small hand-numbered
@@ -119,12 +118,37 @@ def cpp_string_literal_lines(text):
     return pieces or ['""']
 
 
+def _cpp_integer_literal(cpp_type, value):
+    """value as a C++98 constant expression of cpp_type.
+
+    C++98 has no long long literals (and -pedantic warns about them), so a
+    64-bit value beyond 32 bits is built from two 32-bit halves. No literal
+    exceeds its type: the minimum of a signed type is written as -MAX - 1.
+    """
+    unsigned = cpp_type.startswith('u')
+    if cpp_type.endswith('64_t'):
+        magnitude = abs(value)
+        if magnitude < (1 << 31):
+            body = 'static_cast<%s>(%d%s)' % (cpp_type, magnitude, 'u' if unsigned else '')
+        elif value == -(1 << 63):
+            return '(-%s - 1)' % _cpp_integer_literal(cpp_type, (1 << 63) - 1)
+        else:
+            body = '(static_cast<uint64_t>(0x%08xu) << 32 | 0x%08xu)' % (
+                magnitude >> 32, magnitude & 0xffffffff)
+            if not unsigned:
+                body = 'static_cast<int64_t>%s' % body
+        return '(-%s)' % body if value < 0 else body
+    if cpp_type == 'int32_t' and value == -(1 << 31):
+        return '(-2147483647 - 1)'
+    return '%du' % value if unsigned else '%d' % value
+
+
 def cpp_constant_literal(ros_type, value):
-    """A C++ expression for a constant of ros_type holding value."""
+    """A C++98 expression for a constant of ros_type holding value."""
     if ros_type == 'string':
         return ' '.join(cpp_string_literal_lines(value))
     if ros_type == 'bool':
-        return 'true' if value else 'false'
+        return '1' if value else '0'
     if ros_type in ('float32', 'float64'):
         cpp_type = BUILTIN_TYPES[ros_type][0]
         if math.isnan(value):
@@ -133,30 +157,28 @@ def cpp_constant_literal(ros_type, value):
             sign = '-' if value < 0 else ''
             return '%sstd::numeric_limits<%s>::infinity()' % (sign, cpp_type)
         text = repr(float(value))
-        return text if ('.' in text or 'e' in text) else text + '.0'
-    # Integers: spelled so that no literal exceeds its type, the minimum of
-    # int64 included (the literal 9223372036854775808 does not exist).
-    cpp_type = BUILTIN_TYPES[ros_type][0]
-    if ros_type == 'int64' and value == -(1 << 63):
-        return '(-INT64_C(9223372036854775807) - 1)'
-    if ros_type in ('int64', 'uint64'):
-        macro = 'UINT64_C' if ros_type == 'uint64' else 'INT64_C'
-        return '%s(%d)' % (macro, value)
-    if ros_type == 'int32' and value == -(1 << 31):
-        return '(-2147483647 - 1)'
-    return '%du' % value if cpp_type.startswith('u') else '%d' % value
+        text = text if ('.' in text or 'e' in text) else text + '.0'
+        return text + 'f' if cpp_type == 'float' else text
+    return _cpp_integer_literal(BUILTIN_TYPES[ros_type][0], value)
 
 
 class Constant:
-    """A constant of a message: a static member of its C++ type."""
+    """A constant of a message: a static member of its C++ type.
+
+    Integers are initialized in the class, so they are constant expressions
+    (array bounds, case labels); floating-point values are defined outside it,
+    as C++98 requires; a string is a char array, which costs no constructor
+    at start-up and no heap.
+    """
 
     def __init__(self, genmsg_constant, line):
         self.name = genmsg_constant.name
         self.ros_type = genmsg_constant.type
         self.cpp_name = cpp_identifier(self.name)
-        self.cpp_type = 'std::string' if self.ros_type == 'string' else BUILTIN_TYPES[self.ros_type][0]
-        self.cpp_literal = cpp_constant_literal(self.ros_type, genmsg_constant.val)
         self.is_string = self.ros_type == 'string'
+        self.is_integer = not self.is_string and self.ros_type not in ('float32', 'float64')
+        self.cpp_type = 'char' if self.is_string else BUILTIN_TYPES[self.ros_type][0]
+        self.cpp_literal = cpp_constant_literal(self.ros_type, genmsg_constant.val)
         self.line = line
 
 
@@ -180,7 +202,7 @@ class Field:
             self.fixed_size = None
             self.min_size = ARRAY_COUNT_SIZE
         else:
-            self.cpp_type = 'std::array<%s, %d>' % (element_cpp, array_length)
+            self.cpp_type = 'mros::array<%s, %d>' % (element_cpp, array_length)
             self.fixed_size = None if element_fixed is None else element_fixed * array_length
             self.min_size = element_min * array_length
 
@@ -192,7 +214,9 @@ class NamedType:
         self.full_name = full_name
         self.package, self.name = full_name.split('/', 1)
         self.cpp_name = '%s::%s' % (self.package, self.name)
-        self.header_guard = '%s_%s_%s_H' % (guard_prefix, self.package.upper(), self.name.upper())
+        # The package's length keeps a_b/C and a/b_C apart; the case is kept.
+        self.header_guard = '%s_%d_%s_%s_H' % (guard_prefix, len(self.package), self.package,
+                                               self.name)
 
 
 class Message(NamedType):

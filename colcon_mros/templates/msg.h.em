@@ -12,112 +12,96 @@
 @[for include in msg.includes]@
 #include <@(include)>
 @[end for]@
-
-namespace @(msg.package) {
 @[if msg.constants]@
 
-namespace mros_constants {
+namespace mros {
+namespace constants {
+namespace @(msg.package) {
+
 // The constants of @(msg.full_name). A class template lets this header
-// define them without breaking the one-definition rule in C++11.
-template <class Unused = void>
+// define them without breaking the one-definition rule.
+template <class _unused = void>
 struct @(msg.name) {
 @[for c in msg.constants]@
-@[if c.is_string]@
-  static const std::string @(c.cpp_name);
+@[if c.is_integer]@
+  static const @(c.cpp_type) @(c.cpp_name) = @(c.cpp_literal);
+@[elif c.is_string]@
+  static const char @(c.cpp_name)[];
 @[else]@
-  static constexpr @(c.cpp_type) @(c.cpp_name) = @(c.cpp_literal);
+  static const @(c.cpp_type) @(c.cpp_name);
 @[end if]@
 @[end for]@
 };
 @[for c in msg.constants]@
-@[if c.is_string]@
-template <class Unused>
-const std::string @(msg.name)<Unused>::@(c.cpp_name) = @(c.cpp_literal);
+@[if c.is_integer]@
+template <class _unused>
+const @(c.cpp_type) @(msg.name)<_unused>::@(c.cpp_name);
+@[elif c.is_string]@
+template <class _unused>
+const char @(msg.name)<_unused>::@(c.cpp_name)[] = @(c.cpp_literal);
 @[else]@
-template <class Unused>
-constexpr @(c.cpp_type) @(msg.name)<Unused>::@(c.cpp_name);
+template <class _unused>
+const @(c.cpp_type) @(msg.name)<_unused>::@(c.cpp_name) = @(c.cpp_literal);
 @[end if]@
 @[end for]@
-}  // namespace mros_constants
+
+}  // namespace @(msg.package)
+}  // namespace constants
+}  // namespace mros
 @[end if]@
 
-struct @(msg.name)@[if msg.constants] : mros_constants::@(msg.name)<>@[end if] {
+namespace @(msg.package) {
+
+struct @(msg.name) : mros::Message<@(msg.name)>@[if msg.constants], mros::constants::@(msg.package)::@(msg.name)<>@[end if] {
   typedef @(msg.name)* Ptr;
   typedef const @(msg.name)* ConstPtr;
 
-  enum : int32_t { MROS_TYPE_ID = @(msg.type_id) };
+  enum { MROS_TYPE_ID = @(msg.type_id) };
   // Smallest possible wire image; bounds how many elements a count can claim.
-  enum : uint32_t { MROS_MIN_SERIALIZED_SIZE = @(msg.min_size)u };
+  enum { MROS_MIN_SERIALIZED_SIZE = @(msg.min_size) };
 
+  // Every field starts at zero (or empty), as in roscpp.
+  @(msg.name)()
+      : mros::Message<@(msg.name)>()
 @[for f in msg.fields]@
-  @(f.cpp_type) @(f.cpp_name){};  // @(f.ros_type) @(f.name)
+      , @(f.cpp_name)()
 @[end for]@
+  {}
+@[if msg.fields]@
 
-  // Safe interface: sizes are checked, nothing is read or written out of bounds.
-
-  // Bytes of the ROS 1 wire image of this message.
-  uint32_t serializedLength() const {
-    uint32_t length = 0;
-@[for f in msg.fields]@
-    length += mros::wire::serializedLength(@(f.cpp_name));
-@[end for]@
-    return length;
-  }
-
-  // Writes the wire image; returns its size, or -1 if capacity is too small.
-  int32_t serialize(uint8_t* buffer, uint32_t capacity) const {
-    return mros::wire::serialize(*this, buffer, capacity);
-  }
-
-  // Reads a wire image of at most size bytes; returns the bytes consumed, or
-  // -1 if the input is truncated or malformed.
-  int32_t deserialize(const uint8_t* buffer, uint32_t size) {
-    return mros::wire::deserialize(*this, buffer, size);
-  }
-
-  // mROS v1 interface, as the mROS communication library calls it.
-
-  int dataSize() const { return static_cast<int>(serializedLength()); }
-
-  // Writes the wire image at cursor, which the caller sized with dataSize(),
-  // and advances cursor past it.
-  void memCopy(char*& cursor) const {
-    mros::wire::Writer out(reinterpret_cast<uint8_t*>(cursor));
-    serializeTo(out);
-    cursor = reinterpret_cast<char*>(out.pos);
-  }
-
-  // Reads a wire image at cursor and advances cursor past it. The v1 call
-  // carries no size, so it trusts the buffer; prefer deserialize(buf, size).
-  void deserialize(char*& cursor) {
-    mros::wire::Reader in(reinterpret_cast<const uint8_t*>(cursor), UINT32_MAX);
-    deserializeFrom(in);
-    cursor = reinterpret_cast<char*>(const_cast<uint8_t*>(in.pos));
-  }
-
-  // Field-by-field encoding, shared by both interfaces and by messages that
-  // contain this one.
-  void serializeTo(mros::wire::Writer& out) const {
-@[if not msg.fields]@
-    static_cast<void>(out);
 @[end if]@
 @[for f in msg.fields]@
-    out.write(@(f.cpp_name));
+  @(f.cpp_type) @(f.cpp_name);  // @(f.ros_type) @(f.name)
 @[end for]@
-  }
-
-  bool deserializeFrom(mros::wire::Reader& in) {
-@[if not msg.fields]@
-    static_cast<void>(in);
-@[end if]@
-@[for f in msg.fields]@
-    if (!in.read(@(f.cpp_name))) return false;
-@[end for]@
-    return true;
-  }
 };
 
 }  // namespace @(msg.package)
+
+namespace mros {
+namespace wire {
+
+// The fields of @(msg.full_name) in wire order.
+template <>
+struct Fields<@(msg.cpp_name)> {
+@[if msg.fields]@
+  template <class _message, class _visitor>
+  static bool visit(_message& message, _visitor& visitor) {
+    return true
+@[for f in msg.fields]@
+        && visitor(message.@(f.cpp_name))
+@[end for]@
+        ;
+  }
+@[else]@
+  template <class _message, class _visitor>
+  static bool visit(_message&, _visitor&) {
+    return true;
+  }
+@[end if]@
+};
+
+}  // namespace wire
+}  // namespace mros
 
 namespace message_traits {
 
@@ -152,7 +136,7 @@ struct Definition<@(msg.cpp_name)*> {
 
 namespace subtask_methods {
 
-// Called by the mROS subscriber task with a received TCPROS frame.
+// Called by the mROS subscriber task with a frame to deliver.
 template <>
 struct CallCallbackFuncs<@(msg.cpp_name)::MROS_TYPE_ID> {
   static void call(void (*callback)(void*), char* frame) {

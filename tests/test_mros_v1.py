@@ -1,0 +1,218 @@
+"""genmros headers as a drop-in for the mROS v1 library and its apps (issue 7).
+
+mROS v1 apps build with make at -std=gnu++98 for ARM boards; the headers must
+compile there and in every later standard, deliver frames the way the v1
+library hands them over, and come from genmros through the make fragment.
+The library itself is stood in for by tests/fixtures/mros_v1, which behaves
+as mROS-base/mROS's ros.cpp and topic code do (see its comments).
+"""
+
+import filecmp
+import glob
+import hashlib
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+import pytest
+
+from conftest import REPO, TEST_WS, run_genmros
+
+FIXTURES = os.path.join(REPO, 'tests', 'fixtures')
+APP_FIXTURE = os.path.join(FIXTURES, 'mros_v1_app')
+MAKE_FRAGMENT = os.path.join(REPO, 'cmake', 'genmros.mk')
+STRICT_FLAGS = ['-Wall', '-Wextra', '-Wshadow', '-pedantic', '-Werror', '-fno-exceptions', '-fno-rtti']
+LANGUAGE_MODES = ['gnu++98', 'c++11', 'c++14', 'c++17']
+# The CPUs of mROS boards: GR-PEACH's Cortex-A9 (its Makefile's line) and
+# two Cortex-M cores.
+TARGETS = {
+    'host': ['g++'],
+    'cortex-m0': ['arm-none-eabi-g++', '-mcpu=cortex-m0', '-mthumb'],
+    'cortex-m4': ['arm-none-eabi-g++', '-mcpu=cortex-m4', '-mthumb', '-mfloat-abi=hard',
+                  '-mfpu=fpv4-sp-d16'],
+    'cortex-a9': ['arm-none-eabi-g++', '-mcpu=cortex-a9', '-marm', '-mfpu=vfpv3',
+                  '-mfloat-abi=hard', '-mno-unaligned-access'],
+}
+# genmros run from this checkout, the way make runs a command.
+GENMROS_COMMAND = 'env PYTHONPATH=%s %s -m colcon_mros' % (REPO, sys.executable)
+
+
+def _every_header_translation_unit(include_root, path):
+    """A translation unit that includes every header under include_root and
+    instantiates the whole interface of every message type."""
+    headers = sorted(os.path.relpath(p, include_root)
+                     for p in glob.glob(os.path.join(include_root, '**', '*.h'), recursive=True))
+    types = []
+    for header in headers:
+        with open(os.path.join(include_root, header)) as stream:
+            types.extend(re.findall(r'struct Fields<(\S+)>', stream.read()))
+    lines = ['#include <%s>' % h for h in headers if h != 'message_class_specialization.h']
+    lines += ['',
+              'template <class T> int exercise(uint8_t* buffer, uint32_t size) {',
+              '  T message;',
+              '  char* cursor = reinterpret_cast<char*>(buffer);',
+              '  int total = message.dataSize() + message.serialize(buffer, size) +',
+              '              message.deserialize(buffer, size);',
+              '  message.memCopy(cursor);',
+              '  message.deserialize(cursor);',
+              '  subtask_methods::CallCallbackFuncs<T::MROS_TYPE_ID>::call(0, cursor);',
+              '  return total + static_cast<int>(message.serializedLength());',
+              '}',
+              '',
+              'int exerciseAll(uint8_t* buffer, uint32_t size) {',
+              '  int total = 0;']
+    lines += ['  total += exercise<%s>(buffer, size);' % name for name in types]
+    lines += ['  return total + (getMD5Sum(0) != 0);', '}', '']
+    with open(path, 'w') as stream:
+        stream.write('\n'.join(lines))
+    return len(types)
+
+
+@pytest.fixture(scope='module')
+def every_header_sources(debian_export, test_ws_export, tmp_path_factory):
+    directory = tmp_path_factory.mktemp('every_header')
+    sources = []
+    for name, root in (('debian', debian_export), ('test_ws', test_ws_export)):
+        source = str(directory / ('%s.cpp' % name))
+        assert _every_header_translation_unit(root, source) > (150 if name == 'debian' else 14)
+        sources.append((source, root))
+    return sources
+
+
+@pytest.mark.parametrize('target', sorted(TARGETS))
+@pytest.mark.parametrize('mode', LANGUAGE_MODES)
+def test_every_header_compiles_without_warnings(every_header_sources, target, mode):
+    for source, include_root in every_header_sources:
+        command = TARGETS[target] + ['-std=' + mode] + STRICT_FLAGS + [
+            '-fsyntax-only', '-I', include_root, source]
+        result = subprocess.run(command, capture_output=True, text=True)
+        assert result.returncode == 0, result.stderr[-4000:]
+        # libstdc++'s ABI notes on ARM are notes; a warning would have failed above.
+        assert 'warning:' not in result.stderr, result.stderr[-4000:]
+
+
+def _snapshot(directory):
+    return {os.path.relpath(p, directory): open(p, 'rb').read()
+            for p in glob.glob(os.path.join(directory, '**', '*'), recursive=True) if os.path.isfile(p)}
+
+
+@pytest.fixture
+def app_dir(tmp_path):
+    """The v1-style app, copied so its Makefile finds the library stand-in."""
+    app = tmp_path / 'app'
+    shutil.copytree(APP_FIXTURE, str(app))
+    os.makedirs(str(app / 'include'))
+    makefile = app / 'Makefile'
+    makefile.write_text(makefile.read_text().replace('../mros_v1', os.path.join(FIXTURES, 'mros_v1'))
+                        .replace('../../../test_ws/src', os.path.join(TEST_WS, 'src')))
+    return app
+
+
+def _make(app, *arguments):
+    return subprocess.run(['make', '-C', str(app), 'GENMROS=' + GENMROS_COMMAND,
+                           'GENMROS_MK=' + MAKE_FRAGMENT] + list(arguments),
+                          capture_output=True, text=True)
+
+
+def _person_md5():
+    # ROS' MD5 text: the declarations without comments.
+    return hashlib.md5(b'string first_name\nstring last_name\nuint16 age\nint32 score').hexdigest()
+
+
+@pytest.mark.parametrize('sanitizers', [[], ['-fsanitize=address,undefined', '-fno-sanitize-recover=all']],
+                         ids=['plain', 'sanitized'])
+def test_app_delivers_on_board_and_outside_frames(app_dir, sanitizers):
+    made = _make(app_dir, 'EXTRA_CXXFLAGS=' + ' '.join(sanitizers))
+    assert made.returncode == 0, made.stdout[-3000:] + made.stderr[-3000:]
+    run = subprocess.run([str(app_dir / 'app')], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr[-3000:]
+    with open(os.path.join(TEST_WS, 'src', 'mros_test', 'msg', 'PersonalData.msg')) as stream:
+        definition_length = len(stream.read())
+    # Every on-board publication is heard, though the length word before each
+    # body is 0 or stale; the outside frame cut short is not delivered.
+    assert run.stdout.splitlines() == [
+        'advertise mros_test/PersonalData %s %d' % (_person_md5(), definition_length),
+        'heard Phil Woods 83 1', 'sent equal',
+        'heard Charlie Parker 83 2', 'sent equal',
+        'heard Charles Christopher Parker Junior 83 3', 'sent equal',
+        'heard Al Cohn 83 4', 'sent equal',
+        'heard nested Zoot -5 2',
+    ]
+
+
+def test_make_regenerates_headers_when_a_definition_changes(app_dir, tmp_path):
+    workspace = tmp_path / 'ws'
+    shutil.copytree(os.path.join(TEST_WS, 'src'), str(workspace / 'src'))
+    paths = 'MROS_MSG_PATHS=%s' % (workspace / 'src')
+    made = _make(app_dir, paths)
+    assert made.returncode == 0, made.stderr[-3000:]
+    assert 'genmros: exported 13 message' in made.stdout
+    header = app_dir / 'include' / 'mros_test' / 'PersonalData.h'
+    assert 'int32_t score;' in header.read_text()
+
+    again = _make(app_dir, paths)
+    assert 'genmros: exported' not in again.stdout and "'app' is up to date" in again.stdout
+
+    definition = workspace / 'src' / 'mros_test' / 'msg' / 'PersonalData.msg'
+    definition.write_text(definition.read_text() + 'float64 height\n')
+    changed = _make(app_dir, paths)
+    assert changed.returncode == 0, changed.stderr[-3000:]
+    assert 'double height;' in header.read_text()
+    assert 'g++' in changed.stdout  # the app was rebuilt against the new header
+
+
+def test_make_refuses_bad_input_and_leaves_the_include_dir(app_dir):
+    made = _make(app_dir)
+    assert made.returncode == 0, made.stderr[-3000:]
+    before = _snapshot(str(app_dir / 'include'))
+
+    unknown = _make(app_dir, 'MROS_MSG_TYPES=no_such_pkg/Thing')
+    assert unknown.returncode != 0
+    errors = [line for line in unknown.stderr.splitlines() if line.startswith('genmros: error:')]
+    assert errors == ["genmros: error: unknown package 'no_such_pkg' for type 'no_such_pkg/Thing' "
+                      '(not in the workspace or the installed ROS packages)']
+    assert _snapshot(str(app_dir / 'include')) == before
+
+    missing = _make(app_dir, 'GENMROS=/nonexistent/genmros', 'MROS_MSG_TYPES=mros_test/Empty')
+    assert missing.returncode != 0
+    assert "'/nonexistent/genmros' not found: install colcon-mros or set GENMROS" in missing.stderr
+    assert _snapshot(str(app_dir / 'include')) == before
+
+
+def test_genmros_names_its_make_fragment():
+    path = run_genmros('make-fragment').stdout.strip()
+    assert os.path.isabs(path) and filecmp.cmp(path, MAKE_FRAGMENT, shallow=False)
+
+
+def test_aggregates_cover_the_named_types_and_headers_their_closure(tmp_path):
+    run_genmros('export', '--workspace', TEST_WS, '--type', 'mros_test/NestedTypes', '-o', str(tmp_path),
+                '--underlay', '/usr')
+    assert os.path.isfile(str(tmp_path / 'geometry_msgs' / 'Pose.h'))
+    with open(str(tmp_path / 'message_class_specialization.h')) as stream:
+        instantiations = [line for line in stream if line.startswith('template ')]
+    assert instantiations == [
+        'template ros::Subscriber ros::NodeHandle::subscribe(std::string, int, '
+        'void (*)(mros_test::NestedTypes*));\n',
+        'template ros::Publisher ros::NodeHandle::advertise<mros_test::NestedTypes>(std::string, int);\n',
+        'template void ros::Publisher::publish(mros_test::NestedTypes&);\n']
+    with open(str(tmp_path / 'message_headers.h')) as stream:
+        cases = re.findall(r'case (\S+)::MROS_TYPE_ID', stream.read())
+    assert cases == ['mros_test::NestedTypes', 'mros_test::NestedTypes']  # callCallback, getMD5Sum
+
+
+def test_string_constants_cost_no_constructor_and_no_heap(test_ws_export, tmp_path):
+    source = tmp_path / 'constants.cpp'
+    source.write_text('#include <mros_test/Constants.h>\n'
+                      'const char* greeting() { return mros_test::Constants::GREETING; }\n')
+    objects = tmp_path / 'constants.o'
+    command = TARGETS['cortex-m4'] + ['-std=gnu++98', '-Os'] + STRICT_FLAGS + [
+        '-c', '-I', test_ws_export, '-o', str(objects), str(source)]
+    subprocess.run(command, check=True)
+    symbols = subprocess.run(['arm-none-eabi-nm', '-C', str(objects)], capture_output=True, text=True,
+                             check=True).stdout
+    assert 'GREETING' in symbols
+    # No static constructor, no guard variable, no call into the allocator.
+    for sign in ('_GLOBAL__sub_I', 'guard variable', 'operator new', 'malloc'):
+        assert sign not in symbols, symbols
