@@ -9,6 +9,7 @@ from colcon_mros.export import EXPORT_PARTS, export
 from colcon_mros.generate import generate_file
 from colcon_mros.make_fragment import make_fragment_path
 from colcon_mros.render import DEFAULT_VARIABLE_SIZE_BUDGET
+from colcon_mros.storage import STORAGE_KINDS
 from colcon_mros.workspace import default_prefixes, parse_include_flags
 
 DESCRIPTION = '''\
@@ -73,6 +74,15 @@ def _export_parser():
     parser.add_argument('--only', choices=EXPORT_PARTS[1:],
                         help='write only the headers, or only the per-firmware aggregates')
     parser.add_argument('-e', dest='template_dir', help='template directory to use instead of ours')
+    parser.add_argument('--storage', choices=STORAGE_KINDS, default='heap',
+                        help='strings and variable arrays as std::string/std::vector (heap, '
+                             'default) or held in the message with maxima from options files '
+                             '(bounded: no heap)')
+    parser.add_argument('--options', dest='option_files', action='append', default=[],
+                        metavar='FILE',
+                        help="bounds for --storage bounded: lines 'pkg/Type.field max_size:N "
+                             "max_count:N' or '* ...' (repeatable; each package's "
+                             'msg/genmros.options is read too)')
     parser.add_argument('--depfile', metavar='FILE',
                         help='also write FILE, a make rule naming every .msg/.srv file the '
                              'headers come from')
@@ -87,7 +97,8 @@ def main(argv=None):
             result = export(options.output_dir, options.prefixes or default_prefixes(),
                             options.workspaces, options.packages, options.types,
                             options.variable_size_budget, options.template_dir,
-                            options.only or 'all', options.depfile)
+                            options.only or 'all', options.depfile, options.storage,
+                            options.option_files)
             print('genmros: exported %d message and %d service types to %s'
                   % (len(result.messages), len(result.services), options.output_dir))
         elif argv == ['make-fragment']:

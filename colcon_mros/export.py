@@ -20,6 +20,7 @@ from colcon_mros.model import ModelBuilder
 from colcon_mros.output import remove_stale, write_files
 from colcon_mros.parse import SpecLoader
 from colcon_mros.render import DEFAULT_VARIABLE_SIZE_BUDGET, Renderer
+from colcon_mros.storage import storage_for
 from colcon_mros.workspace import (installed_packages, msg_search_path, type_name_of,
                                    workspace_packages)
 
@@ -99,7 +100,7 @@ def _depfile_text(target, definitions):
 
 def export(output_dir, prefixes, workspaces=(), package_names=(), type_names=(),
            variable_budget=DEFAULT_VARIABLE_SIZE_BUDGET, template_dir=None, only='all',
-           depfile=None):
+           depfile=None, storage_kind='heap', option_files=()):
     packages = installed_packages(prefixes)
     local = {}
     for workspace in workspaces:
@@ -109,8 +110,11 @@ def export(output_dir, prefixes, workspaces=(), package_names=(), type_names=(),
         raise GenmrosError('nothing to export: give --workspace, --package or --type')
     selection = Selection(packages, local.keys(), package_names, type_names)
 
-    loader = SpecLoader(msg_search_path(packages))
-    builder = ModelBuilder(loader)
+    search_path = msg_search_path(packages)
+    storage = storage_for(storage_kind, option_files, search_path)
+    loader = SpecLoader(search_path)
+    storage.check(loader)
+    builder = ModelBuilder(loader, storage)
     renderer = Renderer(template_dir)
     roots = [loader.load_message_file(path, package).full_name
              for package, path in selection.messages]

@@ -14,6 +14,7 @@ from genmsg import gentools
 from genmsg.msgs import is_valid_msg_field_name, parse_type
 
 from colcon_mros.errors import GenmrosError
+from colcon_mros.storage import HeapStorage
 
 SUPPORT_HEADER = 'mros_message_support.h'
 
@@ -38,6 +39,8 @@ BUILTIN_TYPES = {
 }
 
 STRING_MIN_SIZE = 4
+# The int32_t results of serialize() and deserialize() bound every message.
+MAX_MESSAGE_SIZE = (1 << 31) - 1
 ARRAY_COUNT_SIZE = 4
 
 # Names a field cannot take in C++: the language's keywords (and NULL, a macro
@@ -182,29 +185,56 @@ class Constant:
         self.line = line
 
 
+class ElementType:
+    """What a field's element type is in C++ and on the wire."""
+
+    def __init__(self, cpp_type, min_size, max_size, unbounded_reason=None):
+        self.cpp_type = cpp_type
+        self.min_size = min_size
+        self.max_size = max_size  # None: no maximum
+        self.unbounded_reason = unbounded_reason
+
+
+def _array_max_size(element, count, counted):
+    if element.max_size is None:
+        return None
+    return (ARRAY_COUNT_SIZE if counted else 0) + element.max_size * count
+
+
 class Field:
     """A field of a message: its C++ declaration and its size on the wire."""
 
-    def __init__(self, name, ros_type, element, line):
+    def __init__(self, name, ros_type, element, bounds, line):
         self.name = name
         self.ros_type = ros_type
         self.cpp_name = cpp_identifier(name)
         self.line = line
         base_type, is_array, array_length = parse_type(ros_type)
-        element_cpp, element_fixed, element_min = element
         self.element_type = base_type
         if not is_array:
-            self.cpp_type = element_cpp
-            self.fixed_size = element_fixed
-            self.min_size = element_min
-        elif array_length is None:
-            self.cpp_type = 'std::vector<%s>' % element_cpp
-            self.fixed_size = None
+            self.cpp_type = element.cpp_type
+            self.min_size = element.min_size
+            self.max_size = element.max_size
+        elif array_length is not None:
+            self.cpp_type = 'mros::array<%s, %d>' % (element.cpp_type, array_length)
+            self.min_size = element.min_size * array_length
+            self.max_size = _array_max_size(element, array_length, counted=False)
+        elif bounds.max_count is not None:
+            self.cpp_type = 'mros::bounded_vector<%s, %d>' % (element.cpp_type, bounds.max_count)
             self.min_size = ARRAY_COUNT_SIZE
+            self.max_size = _array_max_size(element, bounds.max_count, counted=True)
         else:
-            self.cpp_type = 'mros::array<%s, %d>' % (element_cpp, array_length)
-            self.fixed_size = None if element_fixed is None else element_fixed * array_length
-            self.min_size = element_min * array_length
+            self.cpp_type = 'std::vector<%s>' % element.cpp_type
+            self.min_size = ARRAY_COUNT_SIZE
+            self.max_size = None
+        # Where the size has no maximum, as a path to the field that has none:
+        # 'header.frame_id (string)'.
+        self.unbounded_reason = None
+        if self.max_size is None and element.unbounded_reason is not None and (
+                not is_array or array_length is not None):
+            self.unbounded_reason = '%s%s.%s' % (name, '[]' if is_array else '', element.unbounded_reason)
+        elif self.max_size is None:
+            self.unbounded_reason = '%s (%s)' % (name, ros_type)
 
 
 class NamedType:
@@ -222,7 +252,7 @@ class NamedType:
 class Message(NamedType):
     """One message type (or one half of a service) ready for rendering."""
 
-    def __init__(self, full_name, spec, context, declarations, element_of):
+    def __init__(self, full_name, spec, context, declarations, element_of, storage):
         super().__init__(full_name, 'MROS_MSG')
         self.source = declarations.path
         self.origin = origin(self.package, self.source)
@@ -231,13 +261,23 @@ class Message(NamedType):
         self.type_id = type_id(full_name)
         self.constants = [Constant(constant, line) for constant, line
                           in zip(spec.constants, declarations.constant_lines)]
-        self.fields = [Field(name, ros_type, element_of(ros_type), line) for name, ros_type, line
-                       in zip(spec.names, spec.types, declarations.field_lines)]
+        self.fields = []
+        for name, ros_type, line in zip(spec.names, spec.types, declarations.field_lines):
+            bounds = storage.field_bounds(full_name, name, ros_type, self.source, line)
+            self.fields.append(Field(name, ros_type, element_of(ros_type, bounds), bounds, line))
         self.dependencies = sorted({f.element_type for f in self.fields if '/' in f.element_type})
         self.includes = ['%s.h' % dependency for dependency in self.dependencies]
         self.min_size = sum(f.min_size for f in self.fields)
-        sizes = [f.fixed_size for f in self.fields]
-        self.fixed_size = None if None in sizes else sum(sizes)
+        unbounded = [f for f in self.fields if f.max_size is None]
+        # The largest wire image, where one exists: fixed-size types, and every
+        # type in bounded storage.
+        self.max_size = None if unbounded else sum(f.max_size for f in self.fields)
+        self.is_fixed_size = self.max_size == self.min_size
+        self.unbounded_reason = unbounded[0].unbounded_reason if unbounded else None
+        if self.max_size is not None and self.max_size > MAX_MESSAGE_SIZE:
+            raise GenmrosError('%s can take %d bytes on the wire, more than the %d a message can '
+                               'have; lower its bounds' % (full_name, self.max_size, MAX_MESSAGE_SIZE),
+                               self.source)
         self._check_names()
 
     # The identity is computed when a template asks for it: a header needs
@@ -286,8 +326,9 @@ class Service(NamedType):
 class ModelBuilder:
     """Turns specs loaded by a :class:`colcon_mros.parse.SpecLoader` into models."""
 
-    def __init__(self, loader):
+    def __init__(self, loader, storage=None):
         self.loader = loader
+        self.storage = storage or HeapStorage()
         self._messages = {}
 
     def message(self, full_name):
@@ -296,7 +337,7 @@ class ModelBuilder:
             spec = self.loader.context.get_registered(full_name)
             self._messages[full_name] = Message(
                 full_name, spec, self.loader.context,
-                self.loader.declarations(full_name), self._element)
+                self.loader.declarations(full_name), self._element, self.storage)
         return self._messages[full_name]
 
     def service(self, spec):
@@ -322,14 +363,19 @@ class ModelBuilder:
             visit(full_name)
         return ordered
 
-    def _element(self, ros_type):
-        """(C++ type, fixed wire size or None, minimal wire size) of an array element type."""
+    def _element(self, ros_type, bounds):
+        """The :class:`ElementType` of a field's type, arrays aside."""
         base_type = parse_type(ros_type)[0]
+        if base_type == 'string':
+            if bounds.max_size is None:
+                return ElementType('std::string', STRING_MIN_SIZE, None, None)
+            return ElementType('mros::bounded_string<%d>' % bounds.max_size, STRING_MIN_SIZE,
+                               STRING_MIN_SIZE + bounds.max_size)
         if base_type in BUILTIN_TYPES:
             cpp_type, size = BUILTIN_TYPES[base_type]
-            return cpp_type, size, STRING_MIN_SIZE if size is None else size
+            return ElementType(cpp_type, size, size)
         nested = self.message(base_type)
-        return nested.cpp_name, nested.fixed_size, nested.min_size
+        return ElementType(nested.cpp_name, nested.min_size, nested.max_size, nested.unbounded_reason)
 
 
 def _bytes(count):
@@ -341,12 +387,16 @@ class MaxSizeEntry:
 
     def __init__(self, message, variable_budget):
         self.full_name = message.full_name
-        if message.fixed_size is None:
+        if message.max_size is None:
             self.size = max(variable_budget, message.min_size)
-            self.description = 'variable, at least %s' % _bytes(message.min_size)
+            self.description = 'no maximum, %s has no bound; counted as %s' % (
+                message.unbounded_reason, _bytes(self.size))
+        elif message.is_fixed_size:
+            self.size = message.max_size
+            self.description = 'exactly %s' % _bytes(message.max_size)
         else:
-            self.size = message.fixed_size
-            self.description = _bytes(message.fixed_size)
+            self.size = message.max_size
+            self.description = 'at most %s' % _bytes(message.max_size)
 
 
 class MaxSize:
@@ -356,3 +406,4 @@ class MaxSize:
         self.variable_budget = variable_budget
         self.entries = [MaxSizeEntry(message, variable_budget) for message in messages]
         self.max_size = max([entry.size for entry in self.entries] or [0])
+        self.has_unbounded = any(message.max_size is None for message in messages)

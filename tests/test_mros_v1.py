@@ -121,11 +121,18 @@ def _person_md5():
     return hashlib.md5(b'string first_name\nstring last_name\nuint16 age\nint32 score').hexdigest()
 
 
+STORAGE_FLAGS = {'heap': '', 'bounded': '--storage bounded --options bounds.options'}
+
+
+@pytest.mark.parametrize('storage', sorted(STORAGE_FLAGS))
 @pytest.mark.parametrize('sanitizers', [[], ['-fsanitize=address,undefined', '-fno-sanitize-recover=all']],
                          ids=['plain', 'sanitized'])
-def test_app_delivers_on_board_and_outside_frames(app_dir, sanitizers):
-    made = _make(app_dir, 'EXTRA_CXXFLAGS=' + ' '.join(sanitizers))
+def test_app_delivers_on_board_and_outside_frames(app_dir, sanitizers, storage):
+    made = _make(app_dir, 'EXTRA_CXXFLAGS=' + ' '.join(sanitizers), 'MROS_MSG_FLAGS=' + STORAGE_FLAGS[storage])
     assert made.returncode == 0, made.stdout[-3000:] + made.stderr[-3000:]
+    header = (app_dir / 'include' / 'mros_test' / 'PersonalData.h').read_text()
+    assert ('mros::bounded_string<24> first_name;' if storage == 'bounded'
+            else 'std::string first_name;') in header
     run = subprocess.run([str(app_dir / 'app')], capture_output=True, text=True)
     assert run.returncode == 0, run.stderr[-3000:]
     with open(os.path.join(TEST_WS, 'src', 'mros_test', 'msg', 'PersonalData.msg')) as stream:
