@@ -548,9 +548,10 @@ template <class T> struct Codec {
 // body has not been written (it is 0 or stale: the library writes it only
 // for outside nodes). memCopy notes where it put each body of type T and
 // how long it was; delivery believes the length word only for other frames,
-// which the library received from outside with that word. Either way no
-// byte past a known size is read. kSlots bodies per type can wait for
-// on-board delivery at once; the library's topic queues are shorter.
+// which the library received from outside with that word (into blocks of
+// its outer pool, never one of the publishers' blocks). Either way no byte
+// past a known size is read. kSlots blocks per type are remembered; the
+// library's topic queues are shorter.
 template <class T> class OnBoardFrames {
  public:
   // One slot per block: a block the pool hands out again takes its old slot.
