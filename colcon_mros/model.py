@@ -59,7 +59,7 @@ CPP_KEYWORDS = frozenset('''
 '''.split())
 RESERVED_MEMBERS = frozenset([
     'serializedLength', 'serialize', 'deserialize', 'dataSize', 'memCopy',
-    'Ptr', 'ConstPtr', 'MROS_TYPE_ID', 'MROS_MIN_SERIALIZED_SIZE',
+    'Ptr', 'ConstPtr', 'MROS_TYPE_ID', 'MROS_MIN_SERIALIZED_SIZE', 'MROS_MAX_SERIALIZED_SIZE',
 ])
 
 # Type IDs live in [FIRST_TYPE_ID, 2**31): clear of the small hand-numbered
@@ -276,8 +276,7 @@ class Message(NamedType):
         self.unbounded_reason = unbounded[0].unbounded_reason if unbounded else None
         if self.max_size is not None and self.max_size > MAX_MESSAGE_SIZE:
             raise GenmrosError('%s can take %d bytes on the wire, more than the %d a message can '
-                               'have; lower its bounds' % (full_name, self.max_size, MAX_MESSAGE_SIZE),
-                               self.source)
+                               'have' % (full_name, self.max_size, MAX_MESSAGE_SIZE), self.source)
         self._check_names()
 
     # The identity is computed when a template asks for it: a header needs
