@@ -8,7 +8,9 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 types=(--type sensor_msgs/Image --type geometry_msgs/PoseStamped --type sensor_msgs/JointState --type std_msgs/String)
-/usr/bin/python3 -m colcon_mros export --underlay /usr -o "$work/include" "${types[@]}" >/dev/null
+# genmros from this checkout, wherever the script is run from.
+PYTHONPATH="$here/../.." /usr/bin/python3 -m colcon_mros export --underlay /usr -o "$work/include" "${types[@]}" \
+  >/dev/null
 flags=(-std=c++11 -O2 -Wall -Wextra -pedantic)
 libraries=(-lroscpp_serialization -lrostime -lcpp_common)
 g++ "${flags[@]}" -Werror -c -o "$work/main.o" "$here/main.cpp" -I"$here"
