@@ -92,7 +92,8 @@ def fill_functions(type_set):
                 continue
             if field.array_len is None:
                 lines.append('  %s.resize(r.length());' % member)
-            lines.append('  for (auto& e : %s) { %s }' % (member, _fill_element('e', base_type)))
+            lines.append('  for (size_t i = 0; i < %s.size(); ++i) { %s }'
+                         % (member, _fill_element('%s[i]' % member, base_type)))
         lines.append('}')
         lines.append('')
     return '\n'.join(lines)
@@ -192,6 +193,19 @@ def mros_side(type_set):
     return _side(type_set, 'mros_side', [], MROS_TEMPLATES, parses=True)
 
 
+def target_side(type_set):
+    """Translation unit for the target CPUs (C++98 and later): fills genmros'
+    classes and runs the checks of targets/target_check.h on them, through
+    checkType(type index, seed, mode, report)."""
+    lines = _includes(type_set) + [
+        '#include "target_check.h"', '#include "harness_types.inc"', fill_functions(type_set),
+        'void checkType(int type, uint32_t seed, int mode, target::Report& report) {',
+        _dispatch(type_set, lambda n: 'target::checkInstance<%s>(fill_%s<%s>, kTypes[type], seed, mode, report); return;'
+                  % (cpp_name(n), mangle(n), cpp_name(n))),
+        '}', '']
+    return '\n'.join(lines)
+
+
 def type_table(type_set):
     """Names of the types and services, indexed as the dispatch switches are."""
     return '\n'.join(
@@ -199,7 +213,7 @@ def type_table(type_set):
         ['  "%s",' % name for name in type_set.messages] + ['};',
          'static const int kTypeCount = %d;' % len(type_set.messages),
          'static const char* const kServices[] = {'] +
-        ['  "%s",' % name for name in type_set.services] + ['  nullptr', '};',
+        ['  "%s",' % name for name in type_set.services] + ['  0', '};',
          'static const int kServiceCount = %d;' % len(type_set.services), ''])
 
 
@@ -225,11 +239,13 @@ def _run(command):
         raise AssertionError('%s\nfailed:\n%s' % (' '.join(command), result.stderr[-6000:]))
 
 
-def write_sources(directory, type_set, with_roscpp=True):
+def write_sources(directory, type_set, with_roscpp=True, for_targets=False):
     """Write the generated translation units; returns their paths."""
     sources = {'mros_side.cpp': mros_side(type_set), 'harness_types.inc': type_table(type_set)}
     if with_roscpp:
         sources['roscpp_side.cpp'] = roscpp_side(type_set)
+    if for_targets:
+        sources['target_side.cpp'] = target_side(type_set)
     paths = {}
     for name, text in sources.items():
         paths[name] = os.path.join(directory, name)

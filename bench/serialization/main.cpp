@@ -1,28 +1,30 @@
-// Serialization speed of genmros' headers against roscpp's, measured side by
-// side in one run. Usage: bench_serialization [SECONDS_PER_MEASUREMENT]
-#include <chrono>
+// One measurement of one side of the serialization benchmark, in a process
+// of its own. Usage: bench_SIDE INSTANCE encode|decode SECONDS
+// Prints the wire size and the median nanoseconds per call. table.py runs
+// the sides in interleaved rounds and prints the table; `bench_SIDE list`
+// names the instances (tab, then 1 for a large payload).
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 #include "instances.h"
+#include "measure.h"
 
 int main(int argc, char** argv) {
-  const double seconds = argc > 1 ? std::atof(argv[1]) : 0.5;
-  std::printf("| %-32s | %8s | %14s | %14s | %6s | %14s | %14s | %6s |\n", "message", "bytes", "roscpp enc/s",
-              "genmros enc/s", "ratio", "roscpp dec/s", "genmros dec/s", "ratio");
-  std::printf("|%s|---------:|---------------:|---------------:|-------:|---------------:|---------------:|-------:|\n",
-              "----------------------------------");
-  for (int instance = 0; instance < kInstanceCount; ++instance) {
-    const Rates roscpp = roscpp_side::measure(instance, seconds);
-    const Rates mros = mros_side::measure(instance, seconds);
-    if (roscpp.bytes != mros.bytes) {
-      std::printf("sizes differ for %s: %zu vs %zu\n", kInstanceNames[instance], roscpp.bytes, mros.bytes);
-      return 1;
+  if (argc == 2 && std::strcmp(argv[1], "list") == 0) {
+    for (int instance = 0; instance < kInstanceCount; ++instance) {
+      std::printf("%s\t%d\n", kInstanceNames[instance], kLargePayload[instance] ? 1 : 0);
     }
-    std::printf("| %-32s | %8zu | %14.0f | %14.0f | %5.2fx | %14.0f | %14.0f | %5.2fx |\n", kInstanceNames[instance],
-                mros.bytes, roscpp.encodes_per_second, mros.encodes_per_second,
-                mros.encodes_per_second / roscpp.encodes_per_second, roscpp.decodes_per_second,
-                mros.decodes_per_second, mros.decodes_per_second / roscpp.decodes_per_second);
+    return 0;
   }
+  if (argc != 4) {
+    std::fprintf(stderr, "usage: %s INSTANCE encode|decode SECONDS\n", argv[0]);
+    return 2;
+  }
+  const int instance = std::atoi(argv[1]);
+  const Operation operation = std::strcmp(argv[2], "encode") == 0 ? kEncode : kDecode;
+  if (instance < 0 || instance >= kInstanceCount) return 2;
+  const double nanoseconds = bench_side::nanoseconds(instance, operation, std::atof(argv[3]));
+  std::printf("%zu %.3f\n", bench_side::wireSize(instance), nanoseconds);
   return 0;
 }

@@ -1,7 +1,7 @@
-// genmros' half of the serialization benchmark.
-#include <chrono>
-#include <type_traits>
-#include <vector>
+// genmros' side of the serialization benchmark (heap storage; built against
+// a bounded export, the bounded side; with BENCH_BARE_MEMCPY, the memcpy
+// floor of the same wire images).
+#include <cstring>
 
 #include <geometry_msgs/PoseStamped.h>
 #include <sensor_msgs/Image.h>
@@ -9,8 +9,9 @@
 #include <std_msgs/String.h>
 
 #include "instances.h"
+#include "measure.h"
 
-namespace mros_side {
+namespace bench_side {
 
 template <class M> uint32_t encodedSize(const M& message) { return message.serializedLength(); }
 
@@ -22,6 +23,6 @@ template <class M> void decode(M& message, const uint8_t* buffer, uint32_t size)
   message.deserialize(buffer, size);
 }
 
-#include "measure.inc"
+#include "message_side.inc"
 
-}  // namespace mros_side
+}  // namespace bench_side

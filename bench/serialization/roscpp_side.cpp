@@ -1,7 +1,5 @@
-// roscpp's half of the serialization benchmark.
-#include <chrono>
-#include <type_traits>
-#include <vector>
+// roscpp's side of the serialization benchmark.
+#include <cstring>
 
 #include <geometry_msgs/PoseStamped.h>
 #include <ros/serialization.h>
@@ -10,8 +8,9 @@
 #include <std_msgs/String.h>
 
 #include "instances.h"
+#include "measure.h"
 
-namespace roscpp_side {
+namespace bench_side {
 
 template <class M> uint32_t encodedSize(const M& message) {
   return ros::serialization::serializationLength(message);
@@ -28,6 +27,6 @@ template <class M> void decode(M& message, const uint8_t* buffer, uint32_t size)
   ros::serialization::deserialize(stream, message);
 }
 
-#include "measure.inc"
+#include "message_side.inc"
 
-}  // namespace roscpp_side
+}  // namespace bench_side

@@ -1,19 +1,30 @@
 #!/usr/bin/env bash
-# Serialization benchmark: genmros' headers against roscpp's, -O2, one run.
-# Also reports the code size each side compiles to. Run by hand.
+# Serialization benchmark: genmros' headers against roscpp's and against a
+# bare memcpy, -O2, each measurement in a process of its own (table.py).
+# Also reports the code size each side compiles to. Run by hand:
+#   bench/serialization/run.sh [--rounds N] [--seconds S]
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-/usr/bin/python3 -m colcon_mros export --underlay /usr -o "$work/include" \
-  --type sensor_msgs/Image --type geometry_msgs/PoseStamped --type sensor_msgs/JointState --type std_msgs/String \
+types=(--type sensor_msgs/Image --type geometry_msgs/PoseStamped --type sensor_msgs/JointState --type std_msgs/String)
+# genmros from this checkout, wherever the script is run from.
+PYTHONPATH="$here/../.." /usr/bin/python3 -m colcon_mros export --underlay /usr -o "$work/include" "${types[@]}" \
   >/dev/null
 flags=(-std=c++11 -O2 -Wall -Wextra -pedantic)
+libraries=(-lroscpp_serialization -lrostime -lcpp_common)
+g++ "${flags[@]}" -Werror -c -o "$work/main.o" "$here/main.cpp" -I"$here"
 g++ "${flags[@]}" -c -o "$work/roscpp_side.o" "$here/roscpp_side.cpp" -I"$here"
 g++ "${flags[@]}" -Werror -c -o "$work/mros_side.o" "$here/mros_side.cpp" -I"$work/include" -I"$here"
-g++ "${flags[@]}" -Werror -c -o "$work/main.o" "$here/main.cpp" -I"$here"
-g++ -o "$work/bench" "$work"/*.o -lroscpp_serialization -lrostime -lcpp_common
-"$work/bench" "${1:-0.5}"
+g++ "${flags[@]}" -Werror -DBENCH_BARE_MEMCPY -c -o "$work/memcpy_side.o" "$here/mros_side.cpp" \
+  -I"$work/include" -I"$here"
+# Bounded storage (issue 9 item 2) goes here: an export with --storage bounded
+# and options that fit the instances, mros_side.cpp compiled against it and
+# linked as "$work/bench_bounded"; table.py fills its column when it exists.
+g++ -o "$work/bench_roscpp" "$work/main.o" "$work/roscpp_side.o" "${libraries[@]}"
+g++ -o "$work/bench_genmros" "$work/main.o" "$work/mros_side.o"
+g++ -o "$work/bench_memcpy" "$work/main.o" "$work/memcpy_side.o"
+/usr/bin/python3 "$here/table.py" "$work" "$@"
 echo
 echo "code size (text bytes) of the four types' encode/decode, -O2:"
 size "$work/roscpp_side.o" "$work/mros_side.o" | awk 'NR == 1 || /side/ {print "  " $1 "\t" $6}'

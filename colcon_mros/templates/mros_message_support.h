@@ -400,7 +400,26 @@ template <> struct Codec<Duration> : StampCodec<Duration, int32_t> {};
 
 // std::string::assign cannot fail (it allocates); bounded_string's refuses
 // more than its bound.
+#if __cplusplus >= 201103L
+// A text longer than the string's capacity (a fresh message's string) is
+// constructed and moved in: one allocation, without assign()'s in-place
+// replace. Out of line, so the common short-string path stays small enough
+// to be inlined.
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+inline void constructText(std::string& value, const char* text, uint32_t size) {
+  value = std::string(text, size);
+}
+#endif
+
 inline bool assignText(std::string& value, const char* text, uint32_t size) {
+#if __cplusplus >= 201103L
+  if (size > value.capacity()) {
+    constructText(value, text, size);
+    return true;
+  }
+#endif
   value.assign(text, size);
   return true;
 }
@@ -416,7 +435,10 @@ template <class Text> struct TextCodec {
   static void write(Writer& out, const Text& value) {
     const uint32_t size = static_cast<uint32_t>(value.size());
     out.putUnsigned(size, 4);
-    out.putBytes(value.data(), size);
+    // data() is never null (unlike an empty vector's first element), so the
+    // bytes are copied without putBytes' test for an empty run.
+    memcpy(out.pos, value.data(), size);
+    out.pos += size;
   }
   static bool read(Reader& in, Text& value) {
     uint32_t size;
@@ -490,6 +512,31 @@ template <class T, size_t N> bool resizeTo(bounded_vector<T, N>& value, uint32_t
   return value.resize(count);
 }
 
+// The elements of a variable array: resized, then read in place...
+template <class Sequence> bool readElements(Reader& in, Sequence& value, uint32_t count) {
+  return resizeTo(value, count) &&
+         ElementRun<typename Sequence::value_type>::read(in, firstOf(value), count);
+}
+
+// ...but bytes into a std::vector are copied once (resize would zero-fill
+// them first): images and point clouds decode at the speed of a memcpy.
+template <class Byte> bool assignBytes(Reader& in, std::vector<Byte>& value, uint32_t count) {
+  if (in.remaining < count) {
+    return false;
+  }
+  const Byte* first = reinterpret_cast<const Byte*>(in.pos);
+  value.assign(first, first + count);
+  in.pos += count;
+  in.remaining -= count;
+  return true;
+}
+inline bool readElements(Reader& in, std::vector<uint8_t>& value, uint32_t count) {
+  return assignBytes(in, value, count);
+}
+inline bool readElements(Reader& in, std::vector<int8_t>& value, uint32_t count) {
+  return assignBytes(in, value, count);
+}
+
 // T[]: uint32 element count, then the elements.
 template <class Sequence, class T> struct SequenceCodec {
   static const uint32_t kMinSize = 4;
@@ -503,11 +550,8 @@ template <class Sequence, class T> struct SequenceCodec {
   }
   static bool read(Reader& in, Sequence& value) {
     uint32_t count;
-    if (!in.getCount(count) || !in.plausibleCount(count, Codec<T>::kMinSize) ||
-        !resizeTo(value, count)) {
-      return false;
-    }
-    return ElementRun<T>::read(in, firstOf(value), count);
+    return in.getCount(count) && in.plausibleCount(count, Codec<T>::kMinSize) &&
+           readElements(in, value, count);
   }
 };
 
@@ -600,7 +644,8 @@ template <class T> class OnBoardFrames {
 // The bodies of the interface every message shares.
 template <class T> int32_t serialize(const T& message, uint8_t* buffer, uint32_t capacity) {
   const uint32_t length = Codec<T>::length(message);
-  if (length > capacity || length > kMaxMessageSize) {
+  const uint32_t limit = capacity < kMaxMessageSize ? capacity : kMaxMessageSize;
+  if (length > limit) {
     return -1;
   }
   Writer out(buffer);

@@ -2,15 +2,24 @@
 //
 // The same seed gives the same sequence in every translation unit, so a
 // roscpp message and a genmros message filled from one seed hold the same
-// values. Modes choose what the peer under comparison can represent.
+// values, on any byte order (the target CPU tests draw them on big-endian
+// CPUs too). Modes choose what the peer under comparison can represent.
+// C++98 and later, as the message headers.
 #ifndef GENMROS_TEST_HARNESS_RANDOM_H
 #define GENMROS_TEST_HARNESS_RANDOM_H
 
-#include <cstdint>
+#include <stdint.h>
+
 #include <cstring>
 #include <string>
 
 namespace harness {
+
+template <size_t kBytes> struct UnsignedOfSize;
+template <> struct UnsignedOfSize<1> { typedef uint8_t type; };
+template <> struct UnsignedOfSize<2> { typedef uint16_t type; };
+template <> struct UnsignedOfSize<4> { typedef uint32_t type; };
+template <> struct UnsignedOfSize<8> { typedef uint64_t type; };
 
 enum Mode {
   kBinary = 0,   // any bytes in strings, any bit patterns in floats, long arrays
@@ -20,7 +29,8 @@ enum Mode {
 
 class Random {
  public:
-  Random(uint64_t seed, int mode) : state_(seed * 0x9E3779B97F4A7C15ull + 0x2545F4914F6CDD1Dull), mode_(mode) {}
+  Random(uint64_t seed, int mode)
+      : state_(seed * 0x9E3779B97F4A7C15ull + 0x2545F4914F6CDD1Dull), mode_(mode), budget_(1200) {}
 
   uint64_t next() {
     state_ ^= state_ >> 12;
@@ -29,25 +39,26 @@ class Random {
     return state_ * 0x2545F4914F6CDD1Dull;
   }
 
-  // Integers: mostly uniform bits, often an extreme of the type.
+  // Integers: mostly uniform bits, often an extreme of the type. Built as
+  // unsigned numbers, so every byte order draws the same values.
   template <class T> void value(T& out) {
+    typedef typename UnsignedOfSize<sizeof(T)>::type Unsigned;
     const uint64_t pick = next() % 8;
     const uint64_t bits = next();
-    T candidate;
+    const Unsigned all_ones = static_cast<Unsigned>(~static_cast<Unsigned>(0));
+    Unsigned candidate;
     if (pick == 0) {
-      std::memset(&candidate, 0, sizeof candidate);
+      candidate = 0;
     } else if (pick == 1) {
-      std::memset(&candidate, 0xFF, sizeof candidate);
+      candidate = all_ones;
     } else if (pick == 2) {
-      std::memset(&candidate, 0xFF, sizeof candidate);
-      reinterpret_cast<uint8_t*>(&candidate)[sizeof candidate - 1] = 0x7F;
+      candidate = static_cast<Unsigned>(all_ones >> 1);  // largest signed value
     } else if (pick == 3) {
-      std::memset(&candidate, 0, sizeof candidate);
-      reinterpret_cast<uint8_t*>(&candidate)[sizeof candidate - 1] = 0x80;
+      candidate = static_cast<Unsigned>(static_cast<Unsigned>(1) << (8 * sizeof(T) - 1));  // smallest
     } else {
-      std::memcpy(&candidate, &bits, sizeof candidate);
+      candidate = static_cast<Unsigned>(bits);
     }
-    out = candidate;
+    std::memcpy(&out, &candidate, sizeof out);
   }
 
   void value(float& out) { floating<float, uint32_t>(out); }
@@ -116,7 +127,7 @@ class Random {
 
   uint64_t state_;
   int mode_;
-  size_t budget_ = 1200;
+  size_t budget_;
 };
 
 }  // namespace harness
