@@ -76,6 +76,13 @@ CPUS = {
     's390x': Cpu('s390x-linux-gnu-g++', ['-O1'], 'c++11', ['qemu-s390x'], instances=60,
                  modes=[BINARY, TEXT, COMPACT], link=['-static']),
 }
+# Bounded storage on the smallest core, at mROS v1's language mode, and on
+# the big-endian CPU: compact instances only, which fit the bounds.
+BOUNDED_CPUS = {
+    'cortex-m0': CPUS['cortex-m0'],
+    's390x': Cpu('s390x-linux-gnu-g++', ['-O1'], 'gnu++98', ['qemu-s390x'], instances=60, modes=[COMPACT],
+                 link=['-static']),
+}
 # -Wno-psabi: GCC's note that std::vector iterators pass differently since GCC 7.1 (ARM).
 FIRMWARE_FLAGS = ['-fno-exceptions', '-fno-rtti', '-Wno-psabi']
 RUN_SECONDS = 120
@@ -115,13 +122,19 @@ def target_sources(tmp_path_factory):
     search_path = _search_path()
     messages = ['%s/%s' % (package, os.path.basename(path)[:-4]) for package, path in _test_ws_definitions('msg')]
     type_set = cpp_harness.TypeSet(search_path, messages + DEBIAN_SET, list(_test_ws_definitions('srv')))
-    export = str(root / 'genmros')
-    arguments = ['export', '--workspace', TEST_WS, '-o', export, '--underlay', '/usr']
+    arguments = ['export', '--workspace', TEST_WS, '--underlay', '/usr']
     for package in TEST_WS_PACKAGES:
         arguments += ['--package', package]
     for name in DEBIAN_SET:
         arguments += ['--type', name]
-    run_genmros(*arguments)
+    exports = {'heap': str(root / 'genmros')}
+    run_genmros(*arguments, '-o', exports['heap'])
+    # Bounded storage with the bounds of compact instances (at most 4 elements
+    # and 4 bytes), which they reach.
+    exports['bounded'] = str(root / 'bounded')
+    bounds = root / 'compact.options'
+    bounds.write_text('* max_size:4 max_count:4\n')
+    run_genmros(*arguments, '-o', exports['bounded'], '--storage', 'bounded', '--options', str(bounds))
     gencpp = _gencpp_headers(search_path, str(root / 'gencpp'))
     directory = str(root / 'sources')
     os.makedirs(directory)
@@ -133,7 +146,7 @@ def target_sources(tmp_path_factory):
     ]
     expected = cpp_harness.link_program(objects, os.path.join(directory, 'expected_bytes'),
                                         libraries=cpp_harness.ROSCPP_LIBRARIES)
-    return type_set, export, sources, expected
+    return type_set, exports, sources, expected
 
 
 def test_type_set_covers_the_issue(target_sources):
@@ -186,11 +199,12 @@ def _first_difference(expected, actual):
     return 'roscpp gave %d cases, the target %d' % (len(expected), len(actual))
 
 
-@pytest.mark.parametrize('name', sorted(CPUS))
-def test_wire_images_equal_roscpp_on_the_cpu(target_sources, name, tmp_path):
-    type_set, export, sources, expected_program = target_sources
-    cpu = CPUS[name]
-    program = _build(cpu, sources, export, str(tmp_path))
+@pytest.mark.parametrize('name, storage', [(name, 'heap') for name in sorted(CPUS)] + [
+    (name, 'bounded') for name in sorted(BOUNDED_CPUS)])
+def test_wire_images_equal_roscpp_on_the_cpu(target_sources, name, storage, tmp_path):
+    type_set, exports, sources, expected_program = target_sources
+    cpu = CPUS[name] if storage == 'heap' else BOUNDED_CPUS[name]
+    program = _build(cpu, sources, exports[storage], str(tmp_path))
     run = subprocess.run(cpu.run + [program], capture_output=True, text=True, timeout=RUN_SECONDS)
     report = run.stdout.splitlines()
     assert run.returncode == 0, '\n'.join([line for line in report if not line.startswith('case ')][-40:]

@@ -18,13 +18,16 @@ g++ "${flags[@]}" -c -o "$work/roscpp_side.o" "$here/roscpp_side.cpp" -I"$here"
 g++ "${flags[@]}" -Werror -c -o "$work/mros_side.o" "$here/mros_side.cpp" -I"$work/include" -I"$here"
 g++ "${flags[@]}" -Werror -DBENCH_BARE_MEMCPY -c -o "$work/memcpy_side.o" "$here/mros_side.cpp" \
   -I"$work/include" -I"$here"
-# Bounded storage (issue 9 item 2) goes here: an export with --storage bounded
-# and options that fit the instances, mros_side.cpp compiled against it and
-# linked as "$work/bench_bounded"; table.py fills its column when it exists.
+# Bounded storage: the same instances in heap-free messages, with bounds that
+# just fit them (bounds.options).
+PYTHONPATH="$here/../.." /usr/bin/python3 -m colcon_mros export --underlay /usr -o "$work/bounded" "${types[@]}" \
+  --storage bounded --options "$here/bounds.options" >/dev/null
+g++ "${flags[@]}" -Werror -c -o "$work/bounded_side.o" "$here/mros_side.cpp" -I"$work/bounded" -I"$here"
 g++ -o "$work/bench_roscpp" "$work/main.o" "$work/roscpp_side.o" "${libraries[@]}"
 g++ -o "$work/bench_genmros" "$work/main.o" "$work/mros_side.o"
 g++ -o "$work/bench_memcpy" "$work/main.o" "$work/memcpy_side.o"
+g++ -o "$work/bench_bounded" "$work/main.o" "$work/bounded_side.o"
 /usr/bin/python3 "$here/table.py" "$work" "$@"
 echo
 echo "code size (text bytes) of the four types' encode/decode, -O2:"
-size "$work/roscpp_side.o" "$work/mros_side.o" | awk 'NR == 1 || /side/ {print "  " $1 "\t" $6}'
+size "$work/roscpp_side.o" "$work/mros_side.o" "$work/bounded_side.o" | awk 'NR == 1 || /side/ {print "  " $1 "\t" $6}'

@@ -73,7 +73,6 @@ def main():
             return '%.1f' % statistics.median(r[side] for r in rounds) if side in sides else '-'
         cells = [name, operation, str(size), median_ns('roscpp'), median_ns('genmros'),
                  ratio_cell(rounds, 'roscpp', 'genmros'),
-                 # Bounded storage (issue 9 item 2): its column fills once run.sh builds bench_bounded.
                  median_ns('bounded'),
                  ratio_cell(rounds, 'roscpp', 'bounded') if 'bounded' in sides else '-',
                  median_ns('memcpy'),

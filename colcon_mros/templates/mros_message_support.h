@@ -118,6 +118,10 @@ template <size_t N> class bounded_string {
     assign(text);
     return *this;
   }
+  bounded_string& operator=(const std::string& text) {
+    assign(text);
+    return *this;
+  }
 
   bool assign(const char* text) { return assign(text, strlen(text)); }
   bool assign(const char* text, size_type count) {
@@ -175,6 +179,13 @@ template <class T, size_t N> class bounded_vector {
   bool resize(size_type count) {
     if (count > N) return false;
     for (size_type i = size_; i < count; ++i) elements_[i] = T();
+    size_ = count;
+    return true;
+  }
+  // The decoder's resize: the elements it is about to overwrite keep
+  // whatever they held, so a long array is not filled twice.
+  bool resize_for_overwrite(size_type count) {
+    if (count > N) return false;
     size_ = count;
     return true;
   }
@@ -509,7 +520,7 @@ template <class T> bool resizeTo(std::vector<T>& value, uint32_t count) {
   return true;
 }
 template <class T, size_t N> bool resizeTo(bounded_vector<T, N>& value, uint32_t count) {
-  return value.resize(count);
+  return value.resize_for_overwrite(count);
 }
 
 // The elements of a variable array: resized, then read in place...

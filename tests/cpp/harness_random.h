@@ -92,17 +92,20 @@ class Random {
     return count;
   }
 
-  void text(std::string& out) {
+  // Any string type with assignment from std::string: std::string, or
+  // genmros' bounded_string (compact mode stays within 4 bytes).
+  template <class Text> void text(Text& out) {
     const size_t size = length();
-    out.clear();
+    std::string drawn;
     for (size_t i = 0; i < size; ++i) {
       if (mode_ == kText) {
         static const char* const pieces[] = {"a", "Z", "0", " ", "\xc3\xa9", "\xe2\x82\xac", "\n", "\""};
-        out += pieces[next() % 8];
+        drawn += pieces[next() % 8];
       } else {
-        out += static_cast<char>(next() & 0xFF);
+        drawn += static_cast<char>(next() & 0xFF);
       }
     }
+    out = drawn;
   }
 
  private:
