@@ -74,7 +74,7 @@ template <class T, size_t N> struct array {
   typedef const T* const_iterator;
   typedef size_t size_type;
 
-  T elems[N];
+  T elems[N == 0 ? 1 : N];  // T[0] is legal in .msg files, not in C++
 
   static size_type size() { return N; }
   static size_type max_size() { return N; }
