@@ -268,11 +268,24 @@ struct Writer {
 
 // Checked input cursor: every read first checks the bytes that remain, so a
 // truncated or hostile buffer fails instead of being read past its end.
+//
+// Allocation bound: the std::vector fields of one message, at every depth
+// together, allocate at most kAllocationBase + kAllocationPerByte * size
+// bytes of elements for an input of size bytes (64 KiB + 32 bytes per input
+// byte), however the counts on the wire nest. A count needing more fails
+// deserialize (-1). Strings take at most the input's own bytes.
 struct Reader {
+  static const uint32_t kAllocationBase = 65536;
+  static const uint32_t kAllocationPerByte = 32;
+
   const uint8_t* pos;
   uint32_t remaining;
+  uint64_t allocation_budget;
 
-  Reader(const uint8_t* buffer, uint32_t size) : pos(buffer), remaining(size) {}
+  Reader(const uint8_t* buffer, uint32_t size)
+      : pos(buffer),
+        remaining(size),
+        allocation_budget(kAllocationBase + static_cast<uint64_t>(kAllocationPerByte) * size) {}
 
   bool getUnsigned(uint64_t& value, unsigned width) {
     if (remaining < width) {
@@ -313,17 +326,22 @@ struct Reader {
   }
 
   // A count read from the wire is believed only if the bytes left could hold
-  // that many elements of min_element_size bytes each, so a 4-byte count can
-  // never make the receiver allocate more than the input describes. Elements
-  // that serialize to nothing (empty messages) are capped at
-  // kMaxZeroSizeElements instead.
-  static const uint32_t kMaxZeroSizeElements = 65536;
-
+  // that many elements of min_element_size bytes each. Elements that
+  // serialize to nothing (empty messages) are bounded by the allocation
+  // budget alone.
   bool plausibleCount(uint32_t count, uint32_t min_element_size) const {
-    if (min_element_size == 0) {
-      return count <= kMaxZeroSizeElements;
+    return min_element_size == 0 || count <= remaining / min_element_size;
+  }
+
+  // Takes count elements of element_size bytes from the message's allocation
+  // budget; false when they do not fit.
+  bool claimAllocation(uint32_t count, size_t element_size) {
+    const uint64_t bytes = static_cast<uint64_t>(count) * element_size;
+    if (bytes > allocation_budget) {
+      return false;
     }
-    return count <= remaining / min_element_size;
+    allocation_budget -= bytes;
+    return true;
   }
 
   template <class T> bool operator()(T& value) { return Codec<T>::read(*this, value); }
@@ -480,13 +498,16 @@ template <class T, size_t N> const T* firstOf(const bounded_vector<T, N>& value)
   return value.data();
 }
 
-// std::vector::resize cannot fail (it allocates); bounded_vector's refuses
-// more than its bound.
-template <class T> bool resizeTo(std::vector<T>& value, uint32_t count) {
+// std::vector::resize allocates, within the message's allocation budget;
+// bounded_vector's allocates nothing and refuses more than its bound.
+template <class T> bool resizeTo(std::vector<T>& value, uint32_t count, Reader& in) {
+  if (!in.claimAllocation(count, sizeof(T))) {
+    return false;
+  }
   value.resize(count);
   return true;
 }
-template <class T, size_t N> bool resizeTo(bounded_vector<T, N>& value, uint32_t count) {
+template <class T, size_t N> bool resizeTo(bounded_vector<T, N>& value, uint32_t count, Reader&) {
   return value.resize(count);
 }
 
@@ -504,7 +525,7 @@ template <class Sequence, class T> struct SequenceCodec {
   static bool read(Reader& in, Sequence& value) {
     uint32_t count;
     if (!in.getCount(count) || !in.plausibleCount(count, Codec<T>::kMinSize) ||
-        !resizeTo(value, count)) {
+        !resizeTo(value, count, in)) {
       return false;
     }
     return ElementRun<T>::read(in, firstOf(value), count);
