@@ -269,23 +269,25 @@ struct Writer {
 // Checked input cursor: every read first checks the bytes that remain, so a
 // truncated or hostile buffer fails instead of being read past its end.
 //
-// Allocation bound: the std::vector fields of one message, at every depth
-// together, allocate at most kAllocationBase + kAllocationPerByte * size
-// bytes of elements for an input of size bytes (64 KiB + 32 bytes per input
-// byte), however the counts on the wire nest. A count needing more fails
-// deserialize (-1). Strings take at most the input's own bytes.
+// Allocation bound: a count is believed only if the bytes left could hold
+// that many elements, so elements that take at least 1/32 of their memory
+// in wire bytes cost at most 32 bytes of memory per input byte. Elements
+// that take less (empty messages, above all) draw the rest of their memory
+// from kAllocationBudget, one budget for the whole message, shared by the
+// std::vector fields at every depth. So deserialize(buf, size) allocates at
+// most 64 KiB + 32 * size bytes of elements (strings take at most their own
+// bytes), and whether a message decodes never depends on what follows it
+// in the buffer.
 struct Reader {
-  static const uint32_t kAllocationBase = 65536;
-  static const uint32_t kAllocationPerByte = 32;
+  static const uint32_t kAllocationBudget = 65536;
+  static const uint32_t kMemoryPerWireByte = 32;
 
   const uint8_t* pos;
   uint32_t remaining;
-  uint64_t allocation_budget;
+  uint32_t allocation_budget;
 
   Reader(const uint8_t* buffer, uint32_t size)
-      : pos(buffer),
-        remaining(size),
-        allocation_budget(kAllocationBase + static_cast<uint64_t>(kAllocationPerByte) * size) {}
+      : pos(buffer), remaining(size), allocation_budget(kAllocationBudget) {}
 
   bool getUnsigned(uint64_t& value, unsigned width) {
     if (remaining < width) {
@@ -333,14 +335,18 @@ struct Reader {
     return min_element_size == 0 || count <= remaining / min_element_size;
   }
 
-  // Takes count elements of element_size bytes from the message's allocation
-  // budget; false when they do not fit.
-  bool claimAllocation(uint32_t count, size_t element_size) {
-    const uint64_t bytes = static_cast<uint64_t>(count) * element_size;
+  // Takes the memory of count elements beyond what their wire bytes pay for
+  // from the message's allocation budget; false when it does not fit.
+  bool claimAllocation(uint32_t count, size_t element_size, uint32_t min_element_size) {
+    const uint64_t paid = static_cast<uint64_t>(kMemoryPerWireByte) * min_element_size;
+    if (element_size <= paid) {
+      return true;
+    }
+    const uint64_t bytes = static_cast<uint64_t>(count) * (element_size - paid);
     if (bytes > allocation_budget) {
       return false;
     }
-    allocation_budget -= bytes;
+    allocation_budget -= static_cast<uint32_t>(bytes);
     return true;
   }
 
@@ -501,7 +507,7 @@ template <class T, size_t N> const T* firstOf(const bounded_vector<T, N>& value)
 // std::vector::resize allocates, within the message's allocation budget;
 // bounded_vector's allocates nothing and refuses more than its bound.
 template <class T> bool resizeTo(std::vector<T>& value, uint32_t count, Reader& in) {
-  if (!in.claimAllocation(count, sizeof(T))) {
+  if (!in.claimAllocation(count, sizeof(T), Codec<T>::kMinSize)) {
     return false;
   }
   value.resize(count);
