@@ -80,6 +80,11 @@ ACCEPTED = [
     ('type-named-like-support-types', {'msg/Codec.msg': 'int32 a\n', 'msg/Reader.msg': 'Codec c\n',
                                        'msg/Message.msg': 'Reader r\nCodec[] cs\n'}),
     ('type-named-like-c-type', {'msg/FILE.msg': 'int32 fd\n'}),
+    ('types-named-like-support-namespaces', {'msg/constants.msg': 'int32 A=1\nint32 a\n',
+                                             'msg/mros_constants.msg': 'int32 B=2\nconstants c\nwire w\n',
+                                             'msg/wire.msg': 'int32 C=3\n'}),
+    ('types-differing-in-case', {'msg/Thing.msg': 'int32 a\n', 'msg/THING.msg': 'string b\n'}),
+    ('guard-of-package-and-type-underscores', {'msg/b_C.msg': 'int32 from_hostile_ok\n'}),
     ('service-with-hostile-fields', {'srv/Ask.srv': 'string length\nint32 EOF\n---\nstring in\nint32 class\n'}),
 ] + _type_per_line('MacroField', [
     'int32 EOF', 'int32 errno', 'int32 ERANGE', 'int32 EXIT_SUCCESS', 'int32 INT32_MAX',
@@ -298,11 +303,16 @@ def _accepted_files():
     return files
 
 
+# hostile_ok_b/C and hostile_ok/b_C: one guard if the package's length were not in it.
+GUARD_TWIN = {'package.xml': package_xml('hostile_ok_b'), 'msg/C.msg': 'string from_hostile_ok_b\n'}
+
+
 @pytest.fixture(scope='module')
 def accepted_export(tmp_path_factory):
     root = tmp_path_factory.mktemp('hostile_ok')
     package = root / 'ws' / 'src' / 'hostile_ok'
     _write(str(package), _accepted_files())
+    _write(str(root / 'ws' / 'src' / 'hostile_ok_b'), GUARD_TWIN)
     output = str(root / 'out')
     run_genmros('export', '--workspace', str(root / 'ws'), '-o', output, '--underlay', '/usr')
     return str(root), str(package), output
@@ -343,6 +353,19 @@ def test_accepted_headers_compile_together_and_alone(accepted_export, tmp_path):
         _run(['g++', '-std=' + mode, '-fsyntax-only', '-I' + output, str(together)] + STRICT)
     for mode in ('gnu++98', 'c++17'):
         _run(['g++', '-std=' + mode, '-fsyntax-only', '-I' + output] + STRICT + alone)
+
+
+def test_header_guards_are_unique(accepted_export, tmp_path):
+    _, _, output = accepted_export
+    source = tmp_path / 'guards.cpp'
+    source.write_text('#include <hostile_ok/b_C.h>\n#include <hostile_ok_b/C.h>\n#include <hostile_ok/Thing.h>\n'
+                      '#include <hostile_ok/THING.h>\n'
+                      'int main() { hostile_ok::b_C a; hostile_ok_b::C b; hostile_ok::Thing c; hostile_ok::THING d;\n'
+                      '  a.from_hostile_ok = 1; b.from_hostile_ok_b = "x"; c.a = 2; d.b = "y";\n'
+                      '  return a.serializedLength() + b.serializedLength() + c.serializedLength()\n'
+                      '      + d.serializedLength() == 4 + 5 + 4 + 5 ? 0 : 1; }\n')
+    _run(['g++', '-std=gnu++98', '-o', str(tmp_path / 'guards'), str(source), '-I' + output] + STRICT)
+    _run([str(tmp_path / 'guards')])
 
 
 def test_accepted_messages_round_trip_under_asan(accepted_export, tmp_path):
