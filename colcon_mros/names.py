@@ -90,41 +90,38 @@ def check_member_name(name, kind, path, line):
                            'starting with a letter)' % (name, kind), path, line)
 
 
-def _type_name_problem(package, name):
+_NOT_ASCII = "ASCII letters, digits and '_', starting with a letter"
+_TYPE_NAME_RULES = [
+    ('a C++ keyword', CPP_KEYWORDS),
+    ('a macro of the C/C++ standard headers', MACROS),
+    ('a name the generated headers use', UNQUALIFIED_NAMES | RESERVED_MEMBERS),
+]
+_PACKAGE_NAME_RULES = [
+    ('a C++ keyword', CPP_KEYWORDS),
+    ('a macro of the C/C++ standard headers', MACROS),
+    ('a name the generated headers use', SUPPORT_NAMESPACES | SUPPORT_HEADER_NAMES),
+    ('a name the C/C++ standard headers declare in the global namespace', GLOBAL_NAMES),
+]
+
+
+def _problem(name, rules):
     if not is_ascii_identifier(name):
-        return "ASCII letters, digits and '_', starting with a letter"
-    if name in CPP_KEYWORDS:
-        return 'a C++ keyword'
-    if name in MACROS:
-        return 'a macro of the C/C++ standard headers'
-    if name in UNQUALIFIED_NAMES or name in RESERVED_MEMBERS:
-        return 'a name the generated headers use'
-    if name == package:
-        return 'the name of its package, whose namespace it would hide'
-    return None
-
-
-def _package_name_problem(package):
-    if not is_ascii_identifier(package):
-        return "ASCII letters, digits and '_', starting with a letter"
-    if package in CPP_KEYWORDS:
-        return 'a C++ keyword'
-    if package in MACROS:
-        return 'a macro of the C/C++ standard headers'
-    if package in SUPPORT_NAMESPACES or package in SUPPORT_HEADER_NAMES:
-        return 'a name the generated headers use'
-    if package in GLOBAL_NAMES:
-        return 'a name the C/C++ standard headers declare in the global namespace'
+        return _NOT_ASCII
+    for reason, names in rules:
+        if name in names:
+            return reason
     return None
 
 
 def check_type_name(package, name, path, line=None):
     """Refuse a package or type name that cannot be a C++ namespace or struct."""
-    problem = _package_name_problem(package)
+    problem = _problem(package, _PACKAGE_NAME_RULES)
     if problem:
         raise GenmrosError("package name '%s' cannot be a C++ namespace: %s" % (package, problem),
                            path, line)
-    problem = _type_name_problem(package, name)
+    problem = _problem(name, _TYPE_NAME_RULES)
+    if not problem and name == package:
+        problem = 'the name of its package, whose namespace it would hide'
     if problem:
         raise GenmrosError("type name '%s/%s' cannot be a C++ type: %s" % (package, name, problem),
                            path, line)

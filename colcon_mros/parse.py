@@ -149,7 +149,7 @@ class SpecLoader:
         # Packages known to exist although they may have no msg directory
         # (only srv/): a missing type there is not a missing package.
         self._packages = set(search_path)
-        self._type_names = {}
+        self._files_of_package = {}
         self.identities = Identities(self.context)
         needed = MAX_NESTING_DEPTH * _FRAMES_PER_LEVEL + 1000
         if sys.getrecursionlimit() < needed:
@@ -203,10 +203,10 @@ class SpecLoader:
             located = _locate_syntax_error(halves, path)
             raise located or GenmrosError(str(error), path)
 
-    def _package_type_names(self, package, path):
-        """The headers of every definition file of package, by file: its msg
-        directories and the srv directories beside them and beside path."""
-        if package not in self._type_names:
+    def _package_files(self, package, path):
+        """Every definition file of package: in its msg directories, the srv
+        directories beside them, and the directory of path."""
+        if package not in self._files_of_package:
             directories = list(self.search_path.get(package, []))
             directories += [os.path.join(os.path.dirname(d), 'srv') for d in directories]
             directories.append(os.path.dirname(os.path.abspath(path)))
@@ -215,8 +215,8 @@ class SpecLoader:
                 if os.path.isdir(directory):
                     files.update(os.path.join(directory, name) for name in os.listdir(directory)
                                  if name.endswith(('.msg', '.srv')))
-            self._type_names[package] = sorted(files)
-        return self._type_names[package]
+            self._files_of_package[package] = sorted(files)
+        return self._files_of_package[package]
 
     def _check_file_names(self, path, package):
         name = os.path.basename(path)[:-len('.msg')]
@@ -224,7 +224,7 @@ class SpecLoader:
         if path.endswith('.srv'):
             for half in ('Request', 'Response'):
                 check_type_name(package, name + half, path)
-        check_unique_headers(package, path, self._package_type_names(package, path))
+        check_unique_headers(package, path, self._package_files(package, path))
 
     def _find_message_file(self, package, name, path=None, line=None):
         if package not in self.search_path and package in self._packages:
@@ -245,9 +245,6 @@ class SpecLoader:
         declarations = self._declarations[spec.full_name]
         _check_member_names(spec, declarations)
         _check_integer_constants(spec, declarations)
-        if len(self._in_progress) >= MAX_NESTING_DEPTH:
-            raise GenmrosError('types nest more than %d levels deep here' % MAX_NESTING_DEPTH,
-                               declarations.path)
         self._in_progress.append(spec.full_name)
         own_types = None
         for index, field_type in enumerate(spec.types):
@@ -260,7 +257,7 @@ class SpecLoader:
             if is_builtin(dependency):
                 continue
             if own_types is None:
-                own_types = {type_name for path in self._package_type_names(spec.package, declarations.path)
+                own_types = {type_name for path in self._package_files(spec.package, declarations.path)
                              for type_name in headers_of(path)}
             check_type_named_like_package(spec.package, own_types, dependency.split('/')[0],
                                           declarations.path, line)
@@ -268,6 +265,9 @@ class SpecLoader:
                 raise GenmrosError(
                     "type '%s' contains itself through field '%s'"
                     % (dependency, spec.names[index]), declarations.path, line)
+            if len(self._in_progress) >= MAX_NESTING_DEPTH:
+                raise GenmrosError("field '%s' nests types more than %d levels deep"
+                                   % (spec.names[index], MAX_NESTING_DEPTH), declarations.path, line)
             if not self.context.is_registered(dependency):
                 package, name = dependency.split('/', 1)
                 dependency_path = self._find_message_file(package, name, declarations.path, line)

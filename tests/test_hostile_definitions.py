@@ -499,7 +499,8 @@ def test_nesting_beyond_the_limit_is_refused(tmp_path):
     _write(package, _chain(1002))
     result = run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', str(tmp_path / 'out'),
                          '--underlay', '/usr', check=False)
-    _assert_one_line_error(result, 'types nest more than 1000 levels deep here')
+    _assert_one_line_error(result, os.path.join(package, 'msg', 'D999.msg') + ':2:',
+                           "field 'next' nests types more than 1000 levels deep")
     assert not os.path.exists(str(tmp_path / 'out'))
 
 

@@ -19,7 +19,7 @@ import time
 import pytest
 
 from conftest import REPO, run_genmros
-from test_bad_input import _write
+from test_bad_input import _snapshot, _write
 from test_hostile_definitions import package_xml
 
 TYPES = 40
@@ -77,13 +77,7 @@ def _sources(version):
 
 
 def _contents(root):
-    state = {}
-    for directory, _, names in os.walk(root):
-        for name in names:
-            path = os.path.join(directory, name)
-            with open(path, 'rb') as stream:
-                state[os.path.relpath(path, root)] = stream.read()
-    return state
+    return {relative: content for relative, (content, _) in _snapshot(root).items()}
 
 
 def _temporaries(root):
