@@ -90,7 +90,7 @@ def check_member_name(name, kind, path, line):
                            'starting with a letter)' % (name, kind), path, line)
 
 
-_NOT_ASCII = "ASCII letters, digits and '_', starting with a letter"
+_NOT_ASCII = "not an ASCII identifier (letters, digits and '_', starting with a letter)"
 _TYPE_NAME_RULES = [
     ('a C++ keyword', CPP_KEYWORDS),
     ('a macro of the C/C++ standard headers', MACROS),

@@ -105,6 +105,8 @@ ACCEPTED = [
 REFUSED = [
     ('package-keyword', 'class', {'msg/A.msg': 'int32 a\n'}, 'msg/A.msg', ':',
      "package name 'class' cannot be a C++ namespace: a C++ keyword"),
+    ('package-with-dash', 'my-pkg', {'msg/A.msg': 'int32 a\n'}, 'msg/A.msg', ':',
+     "package name 'my-pkg' cannot be a C++ namespace: not an ASCII identifier"),
     ('package-mros', 'mros', {'msg/Time.msg': 'uint32 sec\nuint32 nsec\n'}, 'msg/Time.msg', ':',
      "package name 'mros' cannot be a C++ namespace: a name the generated headers use"),
     ('package-std', 'std', {'msg/A.msg': 'int32 a\n'}, 'msg/A.msg', ':', "package name 'std'"),
@@ -136,7 +138,7 @@ REFUSED = [
     ('type-like-its-package', 'hostile_bad', {'msg/hostile_bad.msg': 'int32 a\n'}, 'msg/hostile_bad.msg', ':',
      'the name of its package'),
     ('type-non-ascii', 'hostile_bad', {'msg/a\u00b2.msg': 'int32 a\n'}, 'msg/a\u00b2.msg', ':',
-     "type name 'hostile_bad/a\u00b2' cannot be a C++ type: ASCII letters"),
+     "type name 'hostile_bad/a\u00b2' cannot be a C++ type: not an ASCII identifier"),
     ('type-like-used-package', 'hostile_bad', {'msg/std_msgs.msg': 'int32 a\n',
                                               'msg/User.msg': 'int32 a\nstd_msgs/Header header\n'},
      'msg/User.msg', ':2:', "type 'hostile_bad/std_msgs' is named like package 'std_msgs'"),
@@ -467,6 +469,17 @@ def test_refused_definition(good_export, tmp_path, package_name, files, target, 
                          '-o', os.path.join(output, package_name), *includes, check=False)
     _assert_one_line_error(result, location, problem)
     assert _snapshot(output) == before
+
+
+def test_non_ascii_package_in_generator_mode(tmp_path):
+    """catkin_pkg already refuses such a package.xml in a workspace; catkin's
+    generator mode takes the name from -p."""
+    source = tmp_path / 'A.msg'
+    source.write_text('int32 a\n')
+    result = run_genmros(str(source), '-p', 'paquete_\u00f1', '-o', str(tmp_path / 'out' / 'x'), check=False)
+    _assert_one_line_error(result, str(source) + ':',
+                           "package name 'paquete_\u00f1' cannot be a C++ namespace: not an ASCII identifier")
+    assert not (tmp_path / 'out').exists()
 
 
 def _chain(depth):
