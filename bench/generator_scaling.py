@@ -117,8 +117,8 @@ def main(argv=None):
             if theirs is None:
                 print('| %s | %s | n/a | - |' % (label, _format(ours, options.limit)))
                 continue
-            both = ours[0] is not None and theirs[0] is not None
-            ratio = '%.2f' % (ours[0] / theirs[0]) if both else '-'
+            comparable = None not in (ours[0], theirs[0]) and 'traceback' not in (ours[1], theirs[1])
+            ratio = '%.2f' % (ours[0] / theirs[0]) if comparable else '-'
             print('| %s | %s | %s | %s |' % (label, _format(ours, options.limit),
                                             _format(theirs, options.limit), ratio))
     return 0
