@@ -9,15 +9,16 @@ aggregates, which cover the selected types only, under the output directory::
     OUT/message_headers.h, OUT/message_class_specialization.h, OUT/msg_max_size.h
 
 Everything is rendered before anything is written, so a bad definition
-leaves OUT as it was. Headers left over from types that no longer exist in a
-package the run exported are removed.
+leaves OUT as it was, and OUT is switched to the new export in one step
+(:func:`colcon_mros.output.write_tree`). Headers left over from types that
+no longer exist in a package the run exported are removed.
 """
 
 import os
 
 from colcon_mros.errors import GenmrosError
 from colcon_mros.model import ModelBuilder
-from colcon_mros.output import remove_stale, write_files
+from colcon_mros.output import is_generated, write_files, write_tree
 from colcon_mros.parse import SpecLoader
 from colcon_mros.render import DEFAULT_VARIABLE_SIZE_BUDGET, Renderer
 from colcon_mros.storage import storage_for
@@ -139,14 +140,18 @@ def export(output_dir, prefixes, workspaces=(), package_names=(), type_names=(),
     if only != 'headers':
         files.update(renderer.aggregates(firmware_messages, variable_budget))
 
-    changed = write_files(output_dir, files)
-    removed = []
+    # Headers left over from types that no longer exist in an exported package.
+    keep = {}
     if writes_headers:
-        exported_packages = {message.package for message in messages}
-        exported_packages.update(service.package for service in services)
-        for name in sorted(exported_packages):
-            keep = {'%s.h' % type_name for type_name in packages[name].type_names()}
-            removed.extend(remove_stale(os.path.join(output_dir, name), keep))
+        for name in {m.package for m in messages} | {s.package for s in services}:
+            keep[name] = {'%s.h' % type_name for type_name in packages[name].type_names()}
+
+    def stale(relative):
+        package, _, header = relative.partition('/')
+        return (package in keep and header.endswith('.h') and header not in keep[package]
+                and is_generated(os.path.join(output_dir, relative)))
+
+    changed, removed = write_tree(output_dir, files, stale)
     if depfile:
         definitions = sorted({os.path.abspath(m.source) for m in messages} |
                              {os.path.abspath(s.source) for s in services})

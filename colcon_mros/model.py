@@ -10,10 +10,10 @@ import math
 import os
 import zlib
 
-from genmsg import gentools
 from genmsg.msgs import is_valid_msg_field_name, parse_type
 
 from colcon_mros.errors import GenmrosError
+from colcon_mros.names import member_identifier
 from colcon_mros.storage import HeapStorage
 
 SUPPORT_HEADER = 'mros_message_support.h'
@@ -43,35 +43,14 @@ STRING_MIN_SIZE = 4
 MAX_MESSAGE_SIZE = (1 << 31) - 1
 ARRAY_COUNT_SIZE = 4
 
-# Names a field cannot take in C++: the language's keywords (and NULL, a macro
-# everywhere), and the members every generated message has. Such a field gets
-# a trailing underscore.
-CPP_KEYWORDS = frozenset('''
-    alignas alignof and and_eq asm auto bitand bitor bool break case catch char
-    char16_t char32_t class compl const constexpr const_cast continue decltype
-    default delete do double dynamic_cast else enum explicit export extern false
-    float for friend goto if inline int long mutable namespace new noexcept not
-    not_eq nullptr operator or or_eq private protected public register
-    reinterpret_cast return short signed sizeof static static_assert static_cast
-    struct switch template this thread_local throw true try typedef typeid
-    typename union unsigned using virtual void volatile wchar_t while xor xor_eq
-    NULL
-'''.split())
-RESERVED_MEMBERS = frozenset([
-    'serializedLength', 'serialize', 'deserialize', 'dataSize', 'memCopy',
-    'Ptr', 'ConstPtr', 'MROS_TYPE_ID', 'MROS_MIN_SERIALIZED_SIZE', 'MROS_MAX_SERIALIZED_SIZE',
-])
-
 # Type IDs live in [FIRST_TYPE_ID, 2**31): clear of the small hand-numbered
 # IDs of the earlier mROS headers, and positive in a 32-bit int.
 FIRST_TYPE_ID = 1 << 16
 
 
-def cpp_identifier(name):
+def cpp_identifier(name, type_name=None):
     """The C++ spelling of a ROS field or constant name."""
-    if name in CPP_KEYWORDS or name in RESERVED_MEMBERS:
-        return name + '_'
-    return name
+    return member_identifier(name, type_name)
 
 
 def type_id(full_name):
@@ -252,12 +231,11 @@ class NamedType:
 class Message(NamedType):
     """One message type (or one half of a service) ready for rendering."""
 
-    def __init__(self, full_name, spec, context, declarations, element_of, storage):
+    def __init__(self, full_name, spec, identities, declarations, element_of, storage):
         super().__init__(full_name, 'MROS_MSG')
         self.source = declarations.path
         self.origin = origin(self.package, self.source)
-        self._spec = spec
-        self._context = context
+        self._identities = identities
         self.type_id = type_id(full_name)
         self.constants = [Constant(constant, line) for constant, line
                           in zip(spec.constants, declarations.constant_lines)]
@@ -274,21 +252,25 @@ class Message(NamedType):
         self.max_size = None if unbounded else sum(f.max_size for f in self.fields)
         self.is_fixed_size = self.max_size == self.min_size
         self.unbounded_reason = unbounded[0].unbounded_reason if unbounded else None
+        for member in self.fields + self.constants:
+            member.cpp_name = cpp_identifier(member.name, self.name)
+        if self.min_size > MAX_MESSAGE_SIZE:
+            raise GenmrosError('%s takes at least %d bytes on the wire, more than the %d a message '
+                               'can have' % (full_name, self.min_size, MAX_MESSAGE_SIZE), self.source)
         if self.max_size is not None and self.max_size > MAX_MESSAGE_SIZE:
             raise GenmrosError('%s can take %d bytes on the wire, more than the %d a message can '
                                'have' % (full_name, self.max_size, MAX_MESSAGE_SIZE), self.source)
         self._check_names()
 
     # The identity is computed when a template asks for it: a header needs
-    # only its own, while the model is built for every type it contains (for
-    # sizes), and genmsg's MD5 recursion is costly for deeply nested types.
+    # only its own, while the model is built for every type it contains.
     @functools.cached_property
     def md5sum(self):
-        return gentools.compute_md5(self._context, self._spec)
+        return self._identities.md5_of(self.full_name)
 
     @functools.cached_property
     def definition(self):
-        return gencpp_definition_text(gentools.compute_full_text(self._context, self._spec))
+        return gencpp_definition_text(self._identities.full_text(self.full_name))
 
     @functools.cached_property
     def definition_lines(self):
@@ -312,11 +294,11 @@ class Message(NamedType):
 class Service(NamedType):
     """A service: its request and response messages and the service's own identity."""
 
-    def __init__(self, full_name, spec, context, request, response):
+    def __init__(self, full_name, spec, identities, request, response):
         super().__init__(full_name, 'MROS_SRV')
         self.source = request.source
         self.origin = request.origin
-        self.md5sum = gentools.compute_md5(context, spec)
+        self.md5sum = identities.service_md5(spec)
         self.request = request
         self.response = response
         self.dependencies = request.dependencies + response.dependencies
@@ -335,12 +317,12 @@ class ModelBuilder:
         if full_name not in self._messages:
             spec = self.loader.context.get_registered(full_name)
             self._messages[full_name] = Message(
-                full_name, spec, self.loader.context,
+                full_name, spec, self.loader.identities,
                 self.loader.declarations(full_name), self._element, self.storage)
         return self._messages[full_name]
 
     def service(self, spec):
-        return Service(spec.full_name, spec, self.loader.context,
+        return Service(spec.full_name, spec, self.loader.identities,
                        self.message(spec.request.full_name),
                        self.message(spec.response.full_name))
 

@@ -3,21 +3,36 @@
 genmsg is the parser: it reads the declarations, resolves types, and later
 computes MD5 sums and definition texts from the same context. genmsg's own
 errors name neither the file nor the line, so this module finds the line of a
-syntax error by handing genmsg growing prefixes of the file, and loads
-dependencies itself, one field at a time, so a missing or recursive type is
-reported at the field that names it.
+syntax error by handing genmsg the file's declarations one line at a time
+(linear in the file's length), and loads dependencies itself, one field at a
+time, so a missing or recursive type is reported at the field that names it.
+It also refuses what genmsg accepts but C++ cannot take (see
+:mod:`colcon_mros.names`) and integer constants beyond their type, which
+genmsg checks in floating point.
 """
 
 import os
+import sys
 
 from genmsg import InvalidMsgSpec, MsgNotFound
 from genmsg import msg_loader
-from genmsg.msgs import bare_msg_type, is_builtin
+from genmsg.msgs import bare_msg_type, is_builtin, parse_type
 from genmsg.names import is_legal_resource_base_name
 
 from colcon_mros.errors import GenmrosError
+from colcon_mros.identity import Identities
+from colcon_mros.names import (check_member_name, check_type_name, check_type_named_like_package,
+                               check_unique_headers, headers_of)
 
 SERVICE_SEPARATOR = '---'
+
+# Types nest at most this deep (gencpp manages 250). The loader and the
+# model recurse once per level, so Python's recursion limit is raised to fit.
+MAX_NESTING_DEPTH = 1000
+_FRAMES_PER_LEVEL = 8
+# The safe interface reports sizes as int32_t: no message has more bytes,
+# and no fixed array more elements (even of empty messages).
+MAX_ARRAY_LENGTH = (1 << 31) - 1
 
 
 class Declarations:
@@ -29,11 +44,11 @@ class Declarations:
     maps to the line that declared it.
     """
 
-    def __init__(self, path, lines, first_line):
+    def __init__(self, path, numbered_lines):
         self.path = path
         self.constant_lines = []
         self.field_lines = []
-        for number, line in enumerate(lines, first_line):
+        for number, line in numbered_lines:
             declaration = line.split('#')[0].strip()
             if not declaration:
                 continue
@@ -43,13 +58,22 @@ class Declarations:
                 self.field_lines.append(number)
 
 
+def _numbered_lines(text):
+    return list(enumerate(text.split('\n'), 1))
+
+
 def _service_halves(text):
-    """Split a .srv text the way genmsg does: (request lines, response lines, response first line)."""
-    lines = text.split('\n')
-    for index, line in enumerate(lines):
+    """Split a .srv text the way genmsg does: the numbered lines of the request
+    and of the response. Every line starting with '---' is left out; the
+    first one starts the response."""
+    halves = ([], [])
+    half = 0
+    for number, line in _numbered_lines(text):
         if line.startswith(SERVICE_SEPARATOR):
-            return lines[:index], lines[index + 1:], index + 2
-    return lines, [], len(lines) + 1
+            half = 1
+        else:
+            halves[half].append((number, line))
+    return halves
 
 
 def _read_text(path):
@@ -65,24 +89,49 @@ def _read_text(path):
         raise GenmrosError('not UTF-8 text', path, line)
 
 
-def _describe_genmsg_error(error, line_text):
-    """genmsg's message, reworded where genmsg's wording does not point at the problem."""
-    message = str(error)
-    if message.startswith('Duplicate field names'):
-        words = line_text.split('#')[0].split()
-        return "duplicate field name '%s'" % (words[-1] if words else '')
-    return message
-
-
-def _locate_syntax_error(text, parse, path):
-    """Re-parse growing prefixes of text to find the line genmsg rejects."""
-    lines = text.split('\n')
-    for count in range(1, len(lines) + 1):
-        try:
-            parse(msg_loader.MsgContext.create_default(), '\n'.join(lines[:count]))
-        except (InvalidMsgSpec, ValueError) as error:
-            return GenmrosError(_describe_genmsg_error(error, lines[count - 1]), path, count)
+def _locate_syntax_error(halves, path):
+    """The first line genmsg rejects, found by parsing each line on its own
+    (a declaration is one line; only a repeated field name needs the others)."""
+    context = msg_loader.MsgContext.create_default()
+    for numbered_lines in halves:
+        seen = set()
+        for number, line in numbered_lines:
+            try:
+                spec = msg_loader.load_msg_from_string(context, line, 'genmros/Line')
+            except (InvalidMsgSpec, ValueError) as error:
+                return GenmrosError(str(error), path, number)
+            for name in spec.names:
+                if name in seen:
+                    return GenmrosError("duplicate field name '%s'" % name, path, number)
+                seen.add(name)
     return None
+
+
+def _check_integer_constants(spec, declarations):
+    """genmsg compares integer constants with their bounds in floating point,
+    so 2**63 passes as an int64 and 2**64 as a uint64: check them exactly."""
+    for constant, line in zip(spec.constants, declarations.constant_lines):
+        bits = _INTEGER_BITS.get(constant.type)
+        if bits is None:
+            continue
+        if constant.type.startswith('u') or constant.type == 'char':
+            lower, upper = 0, (1 << bits) - 1
+        else:
+            lower, upper = -(1 << (bits - 1)), (1 << (bits - 1)) - 1
+        if not lower <= constant.val <= upper:
+            raise GenmrosError('cannot coerce [%s] to %s (out of bounds)' % (constant.val, constant.type),
+                               declarations.path, line)
+
+
+_INTEGER_BITS = {'int8': 8, 'uint8': 8, 'byte': 8, 'char': 8, 'int16': 16, 'uint16': 16,
+                 'int32': 32, 'uint32': 32, 'int64': 64, 'uint64': 64}
+
+
+def _check_member_names(spec, declarations):
+    for name, line in zip(spec.names, declarations.field_lines):
+        check_member_name(name, 'field', declarations.path, line)
+    for constant, line in zip(spec.constants, declarations.constant_lines):
+        check_member_name(constant.name, 'constant', declarations.path, line)
 
 
 class SpecLoader:
@@ -97,6 +146,14 @@ class SpecLoader:
         self.search_path = search_path
         self._declarations = {}
         self._in_progress = []
+        # Packages known to exist although they may have no msg directory
+        # (only srv/): a missing type there is not a missing package.
+        self._packages = set(search_path)
+        self._files_of_package = {}
+        self.identities = Identities(self.context)
+        needed = MAX_NESTING_DEPTH * _FRAMES_PER_LEVEL + 1000
+        if sys.getrecursionlimit() < needed:
+            sys.setrecursionlimit(needed)
 
     def declarations(self, full_name):
         """The :class:`Declarations` of a loaded message (or service half)."""
@@ -106,26 +163,29 @@ class SpecLoader:
         full_name = '%s/%s' % (package, _type_name_from_path(path, '.msg'))
         if self.context.is_registered(full_name):
             return self.context.get_registered(full_name)
+        self._check_file_names(path, package)
         text = _read_text(path)
+        numbered_lines = _numbered_lines(text)
         spec = self._parse(
-            text, path,
+            text, path, [numbered_lines],
             lambda context, source: msg_loader.load_msg_from_string(context, source, full_name))
         self.context.set_file(full_name, path)
-        self._declarations[full_name] = Declarations(path, text.split('\n'), 1)
+        self._declarations[full_name] = Declarations(path, numbered_lines)
         self._load_dependencies(spec)
         return spec
 
     def load_service_file(self, path, package):
         full_name = '%s/%s' % (package, _type_name_from_path(path, '.srv'))
+        self._packages.add(package)
+        self._check_file_names(path, package)
         text = _read_text(path)
+        halves = _service_halves(text)
         spec = self._parse(
-            text, path,
+            text, path, halves,
             lambda context, source: msg_loader.load_srv_from_string(context, source, full_name))
-        request_lines, response_lines, response_first_line = _service_halves(text)
-        for half, lines, first_line in ((spec.request, request_lines, 1),
-                                        (spec.response, response_lines, response_first_line)):
+        for half, numbered_lines in zip((spec.request, spec.response), halves):
             self.context.set_file(half.full_name, path)
-            self._declarations[half.full_name] = Declarations(path, lines, first_line)
+            self._declarations[half.full_name] = Declarations(path, numbered_lines)
             self._load_dependencies(half)
         return spec
 
@@ -136,14 +196,40 @@ class SpecLoader:
         package, name = full_name.split('/', 1)
         return self.load_message_file(self._find_message_file(package, name), package)
 
-    def _parse(self, text, path, parse):
+    def _parse(self, text, path, halves, parse):
         try:
             return parse(self.context, text)
         except (InvalidMsgSpec, ValueError) as error:
-            located = _locate_syntax_error(text, parse, path)
+            located = _locate_syntax_error(halves, path)
             raise located or GenmrosError(str(error), path)
 
+    def _package_files(self, package, path):
+        """Every definition file of package: in its msg directories, the srv
+        directories beside them, and the directory of path."""
+        if package not in self._files_of_package:
+            directories = list(self.search_path.get(package, []))
+            directories += [os.path.join(os.path.dirname(d), 'srv') for d in directories]
+            directories.append(os.path.dirname(os.path.abspath(path)))
+            files = set()
+            for directory in directories:
+                if os.path.isdir(directory):
+                    files.update(os.path.join(directory, name) for name in os.listdir(directory)
+                                 if name.endswith(('.msg', '.srv')))
+            self._files_of_package[package] = sorted(files)
+        return self._files_of_package[package]
+
+    def _check_file_names(self, path, package):
+        name = os.path.basename(path)[:-len('.msg')]
+        check_type_name(package, name, path)
+        if path.endswith('.srv'):
+            for half in ('Request', 'Response'):
+                check_type_name(package, name + half, path)
+        check_unique_headers(package, path, self._package_files(package, path))
+
     def _find_message_file(self, package, name, path=None, line=None):
+        if package not in self.search_path and package in self._packages:
+            raise GenmrosError("unknown type '%s/%s' (package %s has no msg directory)"
+                               % (package, name, package), path, line)
         if package not in self.search_path:
             raise GenmrosError(
                 "unknown package '%s' for type '%s/%s' (not in the workspace or the "
@@ -157,16 +243,31 @@ class SpecLoader:
 
     def _load_dependencies(self, spec):
         declarations = self._declarations[spec.full_name]
+        _check_member_names(spec, declarations)
+        _check_integer_constants(spec, declarations)
         self._in_progress.append(spec.full_name)
+        own_types = None
         for index, field_type in enumerate(spec.types):
+            line = declarations.field_lines[index]
+            array_length = parse_type(field_type)[2]
+            if array_length is not None and array_length > MAX_ARRAY_LENGTH:
+                raise GenmrosError('%s: more elements than the %d a message can have'
+                                   % (field_type, MAX_ARRAY_LENGTH), declarations.path, line)
             dependency = bare_msg_type(field_type)
             if is_builtin(dependency):
                 continue
-            line = declarations.field_lines[index]
+            if own_types is None:
+                own_types = {type_name for path in self._package_files(spec.package, declarations.path)
+                             for type_name in headers_of(path)}
+            check_type_named_like_package(spec.package, own_types, dependency.split('/')[0],
+                                          declarations.path, line)
             if dependency in self._in_progress:
                 raise GenmrosError(
                     "type '%s' contains itself through field '%s'"
                     % (dependency, spec.names[index]), declarations.path, line)
+            if len(self._in_progress) >= MAX_NESTING_DEPTH:
+                raise GenmrosError("field '%s' nests types more than %d levels deep"
+                                   % (spec.names[index], MAX_NESTING_DEPTH), declarations.path, line)
             if not self.context.is_registered(dependency):
                 package, name = dependency.split('/', 1)
                 dependency_path = self._find_message_file(package, name, declarations.path, line)

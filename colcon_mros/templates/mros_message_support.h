@@ -74,7 +74,7 @@ template <class T, size_t N> struct array {
   typedef const T* const_iterator;
   typedef size_t size_type;
 
-  T elems[N];
+  T elems[N == 0 ? 1 : N];  // T[0] is legal in .msg files, not in C++
 
   static size_type size() { return N; }
   static size_type max_size() { return N; }
@@ -279,11 +279,26 @@ struct Writer {
 
 // Checked input cursor: every read first checks the bytes that remain, so a
 // truncated or hostile buffer fails instead of being read past its end.
+//
+// Allocation bound: a count is believed only if the bytes left could hold
+// that many elements, so elements that take at least 1/32 of their memory
+// in wire bytes cost at most 32 bytes of memory per input byte. Elements
+// that take less (empty messages, above all) draw the rest of their memory
+// from kAllocationBudget, one budget for the whole message, shared by the
+// std::vector fields at every depth. So deserialize(buf, size) allocates at
+// most 64 KiB + 32 * size bytes of elements (strings take at most their own
+// bytes), and whether a message decodes never depends on what follows it
+// in the buffer.
 struct Reader {
+  static const uint32_t kAllocationBudget = 65536;
+  static const uint32_t kMemoryPerWireByte = 32;
+
   const uint8_t* pos;
   uint32_t remaining;
+  uint32_t allocation_budget;
 
-  Reader(const uint8_t* buffer, uint32_t size) : pos(buffer), remaining(size) {}
+  Reader(const uint8_t* buffer, uint32_t size)
+      : pos(buffer), remaining(size), allocation_budget(kAllocationBudget) {}
 
   bool getUnsigned(uint64_t& value, unsigned width) {
     if (remaining < width) {
@@ -324,17 +339,26 @@ struct Reader {
   }
 
   // A count read from the wire is believed only if the bytes left could hold
-  // that many elements of min_element_size bytes each, so a 4-byte count can
-  // never make the receiver allocate more than the input describes. Elements
-  // that serialize to nothing (empty messages) are capped at
-  // kMaxZeroSizeElements instead.
-  static const uint32_t kMaxZeroSizeElements = 65536;
-
+  // that many elements of min_element_size bytes each. Elements that
+  // serialize to nothing (empty messages) are bounded by the allocation
+  // budget alone.
   bool plausibleCount(uint32_t count, uint32_t min_element_size) const {
-    if (min_element_size == 0) {
-      return count <= kMaxZeroSizeElements;
+    return min_element_size == 0 || count <= remaining / min_element_size;
+  }
+
+  // Takes the memory of count elements beyond what their wire bytes pay for
+  // from the message's allocation budget; false when it does not fit.
+  bool claimAllocation(uint32_t count, size_t element_size, uint32_t min_element_size) {
+    const uint64_t paid = static_cast<uint64_t>(kMemoryPerWireByte) * min_element_size;
+    if (element_size <= paid) {
+      return true;
     }
-    return count <= remaining / min_element_size;
+    const uint64_t bytes = static_cast<uint64_t>(count) * (element_size - paid);
+    if (bytes > allocation_budget) {
+      return false;
+    }
+    allocation_budget -= static_cast<uint32_t>(bytes);
+    return true;
   }
 
   template <class T> bool operator()(T& value) { return Codec<T>::read(*this, value); }
@@ -513,24 +537,28 @@ template <class T, size_t N> const T* firstOf(const bounded_vector<T, N>& value)
   return value.data();
 }
 
-// std::vector::resize cannot fail (it allocates); bounded_vector's refuses
-// more than its bound.
-template <class T> bool resizeTo(std::vector<T>& value, uint32_t count) {
+// std::vector::resize allocates, within the message's allocation budget;
+// bounded_vector's allocates nothing and refuses more than its bound.
+template <class T> bool resizeTo(std::vector<T>& value, uint32_t count, Reader& in) {
+  if (!in.claimAllocation(count, sizeof(T), Codec<T>::kMinSize)) {
+    return false;
+  }
   value.resize(count);
   return true;
 }
-template <class T, size_t N> bool resizeTo(bounded_vector<T, N>& value, uint32_t count) {
+template <class T, size_t N> bool resizeTo(bounded_vector<T, N>& value, uint32_t count, Reader&) {
   return value.resize_for_overwrite(count);
 }
 
 // The elements of a variable array: resized, then read in place...
 template <class Sequence> bool readElements(Reader& in, Sequence& value, uint32_t count) {
-  return resizeTo(value, count) &&
+  return resizeTo(value, count, in) &&
          ElementRun<typename Sequence::value_type>::read(in, firstOf(value), count);
 }
 
 // ...but bytes into a std::vector are copied once (resize would zero-fill
 // them first): images and point clouds decode at the speed of a memcpy.
+// A byte costs no more memory than its wire byte, so it claims no budget.
 template <class Byte> bool assignBytes(Reader& in, std::vector<Byte>& value, uint32_t count) {
   if (in.remaining < count) {
     return false;
