@@ -252,16 +252,17 @@ struct Writer {
 
   explicit Writer(uint8_t* buffer) : pos(buffer) {}
 
-  // Writes the low width bytes of value, least significant first.
-  void putUnsigned(uint64_t value, unsigned width) {
+  // Writes an unsigned word, least significant byte first. One function
+  // per width: a 32-bit CPU never does 64-bit arithmetic for a 32-bit word.
+  template <class Word> void putWord(Word value) {
     if (kHostIsLittleEndian) {
-      memcpy(pos, &value, width);
+      memcpy(pos, &value, sizeof(Word));
     } else {
-      for (unsigned i = 0; i < width; ++i) {
+      for (size_t i = 0; i < sizeof(Word); ++i) {
         pos[i] = static_cast<uint8_t>(value >> (8 * i));
       }
     }
-    pos += width;
+    pos += sizeof(Word);
   }
 
   void putBytes(const void* bytes, uint32_t count) {
@@ -300,31 +301,24 @@ struct Reader {
   Reader(const uint8_t* buffer, uint32_t size)
       : pos(buffer), remaining(size), allocation_budget(kAllocationBudget) {}
 
-  bool getUnsigned(uint64_t& value, unsigned width) {
-    if (remaining < width) {
+  template <class Word> bool getWord(Word& value) {
+    if (remaining < sizeof(Word)) {
       return false;
     }
-    value = 0;
     if (kHostIsLittleEndian) {
-      memcpy(&value, pos, width);
+      memcpy(&value, pos, sizeof(Word));
     } else {
-      for (unsigned i = 0; i < width; ++i) {
-        value |= static_cast<uint64_t>(pos[i]) << (8 * i);
+      value = 0;
+      for (size_t i = 0; i < sizeof(Word); ++i) {
+        value = static_cast<Word>(value | static_cast<Word>(static_cast<Word>(pos[i]) << (8 * i)));
       }
     }
-    pos += width;
-    remaining -= width;
+    pos += sizeof(Word);
+    remaining -= static_cast<uint32_t>(sizeof(Word));
     return true;
   }
 
-  bool getCount(uint32_t& count) {
-    uint64_t raw;
-    if (!getUnsigned(raw, 4)) {
-      return false;
-    }
-    count = static_cast<uint32_t>(raw);
-    return true;
-  }
+  bool getCount(uint32_t& count) { return getWord(count); }
 
   bool getBytes(void* bytes, uint32_t count) {
     if (remaining < count) {
@@ -364,18 +358,23 @@ struct Reader {
   template <class T> bool operator()(T& value) { return Codec<T>::read(*this, value); }
 };
 
+template <size_t kBytes> struct UnsignedWord;
+template <> struct UnsignedWord<1> { typedef uint8_t type; };
+template <> struct UnsignedWord<2> { typedef uint16_t type; };
+template <> struct UnsignedWord<4> { typedef uint32_t type; };
+template <> struct UnsignedWord<8> { typedef uint64_t type; };
+
 // Integers of every width. kPlain marks types whose in-memory little-endian
 // image is their wire image, which enables block copies of arrays.
 template <class T> struct IntegerCodec {
+  typedef typename UnsignedWord<sizeof(T)>::type Word;
   static const uint32_t kMinSize = sizeof(T);
   static const bool kPlain = true;
   static uint32_t length(const T&) { return sizeof(T); }
-  static void write(Writer& out, const T& value) {
-    out.putUnsigned(static_cast<uint64_t>(value), sizeof(T));
-  }
+  static void write(Writer& out, const T& value) { out.putWord(static_cast<Word>(value)); }
   static bool read(Reader& in, T& value) {
-    uint64_t raw;
-    if (!in.getUnsigned(raw, sizeof(T))) {
+    Word raw;
+    if (!in.getWord(raw)) {
       return false;
     }
     value = static_cast<T>(raw);
@@ -400,14 +399,13 @@ template <class T, class Bits> struct FloatCodec {
   static void write(Writer& out, const T& value) {
     Bits bits;
     memcpy(&bits, &value, sizeof(T));
-    out.putUnsigned(bits, sizeof(T));
+    out.putWord(bits);
   }
   static bool read(Reader& in, T& value) {
-    uint64_t raw;
-    if (!in.getUnsigned(raw, sizeof(T))) {
+    Bits bits;
+    if (!in.getWord(bits)) {
       return false;
     }
-    const Bits bits = static_cast<Bits>(raw);
     memcpy(&value, &bits, sizeof(T));
     return true;
   }
@@ -469,7 +467,7 @@ template <class Text> struct TextCodec {
   static uint32_t length(const Text& value) { return 4 + static_cast<uint32_t>(value.size()); }
   static void write(Writer& out, const Text& value) {
     const uint32_t size = static_cast<uint32_t>(value.size());
-    out.putUnsigned(size, 4);
+    out.putWord(size);
     // data() is never null (unlike an empty vector's first element), so the
     // bytes are copied without putBytes' test for an empty run.
     memcpy(out.pos, value.data(), size);
@@ -584,7 +582,7 @@ template <class Sequence, class T> struct SequenceCodec {
     return 4 + ElementRun<T>::length(firstOf(value), value.size());
   }
   static void write(Writer& out, const Sequence& value) {
-    out.putUnsigned(static_cast<uint32_t>(value.size()), 4);
+    out.putWord(static_cast<uint32_t>(value.size()));
     ElementRun<T>::write(out, firstOf(value), value.size());
   }
   static bool read(Reader& in, Sequence& value) {
@@ -633,29 +631,26 @@ template <class T> struct Codec {
 // how long it was; delivery believes the length word only for other frames,
 // which the library received from outside with that word (into blocks of
 // its outer pool, never one of the publishers' blocks). Either way no byte
-// past a known size is read. kSlots blocks per type are remembered; the
-// library's topic queues are shorter.
+// past a known size is read. The last kSlots bodies of each type are
+// remembered: more than the blocks a topic's queue holds.
 template <class T> class OnBoardFrames {
  public:
-  // One slot per block: a block the pool hands out again takes its old slot.
   // Size first, then the address: a reader that finds the address reads the
   // size that belongs to it.
   static void note(const char* body, uint32_t size) {
     Slots& slots = table();
-    unsigned slot = 0;
-    while (slot < kSlots && slots.bodies[slot] != body) ++slot;
-    if (slot == kSlots) {
-      slot = slots.next % kSlots;
-      slots.next = slot + 1;
-      slots.bodies[slot] = 0;
-    }
+    const unsigned slot = slots.next;
+    slots.next = (slot + 1) % kSlots;
+    slots.bodies[slot] = 0;
     slots.sizes[slot] = size;
     slots.bodies[slot] = body;
   }
 
+  // The newest note of body: a block the pool hands out again is noted again.
   static bool find(const char* body, uint32_t& size) {
     const Slots& slots = table();
-    for (unsigned slot = 0; slot < kSlots; ++slot) {
+    for (unsigned age = 1; age <= kSlots; ++age) {
+      const unsigned slot = (slots.next + kSlots - age) % kSlots;
       if (slots.bodies[slot] == body) {
         size = slots.sizes[slot];
         return true;
@@ -665,7 +660,7 @@ template <class T> class OnBoardFrames {
   }
 
  private:
-  static const unsigned kSlots = 8;
+  static const unsigned kSlots = 4;
   struct Slots {
     const char* volatile bodies[kSlots];
     volatile uint32_t sizes[kSlots];

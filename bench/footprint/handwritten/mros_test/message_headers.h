@@ -1,0 +1,18 @@
+// Hand-written per-app aggregate (mROS v1 style) for the footprint benchmark.
+#include "mros_test/PersonalData.h"
+
+static void callCallback(int id, void (*fp)(void*), char* rbuf) {
+  switch (id) {
+    case PERSONALDATA_MSG_ID:
+      subtask_methods::CallCallbackFuncs<PERSONALDATA_MSG_ID>().call(fp, rbuf);
+      break;
+  }
+}
+
+static const char* getMD5Sum(int id) {
+  switch (id) {
+    case PERSONALDATA_MSG_ID:
+      return message_traits::MD5Sum<PERSONALDATA_MSG_ID>().value();
+  }
+  return 0;
+}

@@ -1,0 +1,120 @@
+#!/usr/bin/env bash
+# Footprint benchmark: text+data+bss that message types cost a firmware on
+# each mROS CPU, -Os -fno-exceptions -fno-rtti -std=gnu++98, --gc-sections.
+# Each row is one firmware (start-up, newlib, the API layer in the shape of
+# mROS v1's ros.cpp, and one task that publishes and subscribes one type),
+# minus the same firmware without any message type (baseline.cpp).
+#   issue 7: genmros' headers against hand-written v1-style ones (handwritten/)
+#   issue 9: heap against bounded storage, and the RAM a firmware's buffers take
+# Run by hand: bench/footprint/run.sh
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+repo="$here/../.."
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+
+declare -A cpus=(
+  [cortex-m0]="-mcpu=cortex-m0 -mthumb"
+  [cortex-m4]="-mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16"
+  [cortex-a9]="-mcpu=cortex-a9 -marm -mfpu=vfpv3 -mfloat-abi=hard -mno-unaligned-access"
+)
+cflags=(-Os -ffunction-sections -fdata-sections)
+common=("${cflags[@]}" -fno-exceptions -fno-rtti)
+link=(--specs=nosys.specs -Wl,--gc-sections)
+
+genmros() { PYTHONPATH="$repo" /usr/bin/python3 -m colcon_mros "$@" >/dev/null; }
+# include dir of genmros' export of one type: heap or bounded storage
+export_type() {  # name type storage
+  local flags=()
+  [ "$3" = bounded ] && flags=(--storage bounded --options "$here/bounds.options")
+  genmros export --workspace "$repo/test_ws" --workspace "$here/msgs" --underlay /usr --type "$2" \
+    -o "$work/$1" "${flags[@]}"
+  echo "$work/$1"
+}
+
+elf_size() {  # elf -> "text data bss"
+  arm-none-eabi-size "$1" | awk 'NR == 2 {print $1, $2, $3}'
+}
+
+build() {  # cpu output include_dir type header -> elf
+  local cpu=$1 out=$2 include=$3 type=$4 header=$5
+  # shellcheck disable=SC2086
+  arm-none-eabi-gcc ${cpus[$cpu]} "${cflags[@]}" -std=c99 -c "$here/library.c" -o "$out.library.o"
+  arm-none-eabi-gcc ${cpus[$cpu]} "${cflags[@]}" -std=c99 -c "$here/sink.c" -o "$out.sink.o"
+  if [ "$type" = none ]; then
+    arm-none-eabi-g++ ${cpus[$cpu]} "${common[@]}" -std=gnu++98 -I"$here" "$here/baseline.cpp" \
+      "$out.library.o" "$out.sink.o" "${link[@]}" -o "$out.elf"
+  else
+    arm-none-eabi-g++ ${cpus[$cpu]} "${common[@]}" -std=gnu++98 -Wno-psabi -I"$include" -I"$here" \
+      -DBENCH_TYPE="$type" -DBENCH_HEADER="<$header>" "$here/api_layer.cpp" "$here/task.cpp" \
+      "$out.library.o" "$out.sink.o" "${link[@]}" -o "$out.elf"
+  fi
+  echo "$out.elf"
+}
+
+# name  ROS type  C++ type  header
+types=(
+  "personal mros_test/PersonalData mros_test::PersonalData mros_test/PersonalData.h"
+  "usertype bench_msgs/UserTypeTest bench_msgs::UserTypeTest bench_msgs/UserTypeTest.h"
+  "joint sensor_msgs/JointState sensor_msgs::JointState sensor_msgs/JointState.h"
+  "odometry nav_msgs/Odometry nav_msgs::Odometry nav_msgs/Odometry.h"
+)
+declare -A handwritten=([personal]="$here/handwritten/mros_test" [usertype]="$here/handwritten/bench_msgs")
+
+declare -A include
+for entry in "${types[@]}"; do
+  read -r name ros_type _ _ <<<"$entry"
+  include[$name.heap]=$(export_type "$name.heap" "$ros_type" heap)
+  include[$name.bounded]=$(export_type "$name.bounded" "$ros_type" bounded)
+done
+
+cost() {  # elf baseline_elf -> total bytes over the baseline
+  read -r t d b <<<"$(elf_size "$1")"
+  read -r bt bd bb <<<"$(elf_size "$2")"
+  echo "$((t - bt)) $((d - bd)) $((b - bb))"
+}
+
+echo "Bytes a message type adds to a firmware (text+data+bss over the baseline firmware without one):"
+echo
+echo "| CPU | type | hand-written v1 | genmros heap | genmros / hand-written | genmros bounded |"
+echo "|---|---|---:|---:|---:|---:|"
+for cpu in cortex-m0 cortex-m4 cortex-a9; do
+  base=$(build "$cpu" "$work/$cpu.baseline" "" none "")
+  for entry in "${types[@]}"; do
+    read -r name _ cpp_type header <<<"$entry"
+    read -r ht hd hb <<<"$(cost "$(build "$cpu" "$work/$cpu.$name.heap" "${include[$name.heap]}" "$cpp_type" "$header")" "$base")"
+    read -r bt bd bb <<<"$(cost "$(build "$cpu" "$work/$cpu.$name.bounded" "${include[$name.bounded]}" "$cpp_type" "$header")" "$base")"
+    heap=$((ht + hd + hb)); bounded=$((bt + bd + bb))
+    if [ -n "${handwritten[$name]:-}" ]; then
+      read -r wt wd wb <<<"$(cost "$(build "$cpu" "$work/$cpu.$name.hand" "${handwritten[$name]}" "$cpp_type" "$header")" "$base")"
+      hand=$((wt + wd + wb))
+      ratio=$(awk -v a="$heap" -v b="$hand" 'BEGIN {printf "%.2fx", a / b}')
+    else
+      hand="-"; ratio="-"
+    fi
+    echo "| $cpu | $cpp_type | $hand | $heap | $ratio | $bounded |"
+  done
+done
+
+echo
+echo "RAM for a firmware's buffers (bytes): the publish block (PUB_MSG_MAX_SIZE + 4) and one message object."
+echo "Heap storage also takes what its strings and arrays hold from the heap, at run time."
+echo
+echo "| type | heap: PUB_MSG_MAX_SIZE | heap: sizeof message | bounded: PUB_MSG_MAX_SIZE | bounded: sizeof message |"
+echo "|---|---:|---:|---:|---:|"
+for entry in "${types[@]}"; do
+  read -r name _ cpp_type header <<<"$entry"
+  row="| $cpp_type"
+  for storage in heap bounded; do
+    probe="$work/$name.$storage.probe.cpp"
+    printf '#include <%s>\n#include <msg_max_size.h>\nunsigned max_size = PUB_MSG_MAX_SIZE;\nunsigned object_size = sizeof(%s);\n' \
+      "$header" "$cpp_type" > "$probe"
+    arm-none-eabi-g++ ${cpus[cortex-m4]} -std=gnu++98 -Wno-psabi -c -I"${include[$name.$storage]}" "$probe" -o "$probe.o"
+    read -r max object <<<"$(arm-none-eabi-objdump -s -j .data "$probe.o" | awk '/^ 0000/ {print $2, $3}')"
+    le() { echo $((16#${1:6:2}${1:4:2}${1:2:2}${1:0:2})); }
+    row="$row | $(le "$max") | $(le "$object")"
+  done
+  echo "$row |"
+done
+echo
+echo "(bounded storage with bench/footprint/bounds.options; heap PUB_MSG_MAX_SIZE counts a type without a maximum as the 1024-byte budget)"
