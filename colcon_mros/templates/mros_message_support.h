@@ -631,8 +631,13 @@ template <class T> struct Codec {
 // how long it was; delivery believes the length word only for other frames,
 // which the library received from outside with that word (into blocks of
 // its outer pool, never one of the publishers' blocks). Either way no byte
-// past a known size is read. The last kSlots bodies of each type are
-// remembered: more than the blocks a topic's queue holds.
+// past a known size is read. The last MROS_ONBOARD_FRAME_SLOTS bodies of
+// each type are remembered (4 unless the firmware defines it, a power of
+// two): at least the blocks of that type waiting for the subscriber task,
+// which its topics' queue sizes bound.
+#ifndef MROS_ONBOARD_FRAME_SLOTS
+#define MROS_ONBOARD_FRAME_SLOTS 4
+#endif
 template <class T> class OnBoardFrames {
  public:
   // Size first, then the address: a reader that finds the address reads the
@@ -660,7 +665,7 @@ template <class T> class OnBoardFrames {
   }
 
  private:
-  static const unsigned kSlots = 4;
+  static const unsigned kSlots = MROS_ONBOARD_FRAME_SLOTS;
   struct Slots {
     const char* volatile bodies[kSlots];
     volatile uint32_t sizes[kSlots];
