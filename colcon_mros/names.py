@@ -127,6 +127,16 @@ def check_type_name(package, name, path, line=None):
                            path, line)
 
 
+# Members of a service's struct: a service cannot be named like one.
+SERVICE_MEMBERS = frozenset(['Request', 'Response', 'request', 'response'])
+
+
+def check_service_name(package, name, path):
+    if name in SERVICE_MEMBERS:
+        raise GenmrosError("service name '%s/%s' cannot be a C++ type: a name the service header "
+                           'uses' % (package, name), path)
+
+
 def check_type_named_like_package(package, type_names, dependency_package, path, line):
     """Refuse a field of a type from a package that one of its own package's
     types is named after: inside namespace package, that type would hide the

@@ -172,12 +172,11 @@ def _exchange(first, second):
     raise OSError(code, os.strerror(code), second)
 
 
-def _mirror(root, tree, files, drop):
-    """Fill tree with root's files (hard links, or copies where a link fails),
-    except those replaced by files or dropped."""
-    kept = []
+def _mirror(root, tree, skip):
+    """Fill tree with root's files (hard links, or copies where a link fails)
+    and directories, except the files skip(relative path) selects."""
     for relative in _existing_files(root):
-        if relative in files or drop(relative):
+        if skip(relative):
             continue
         source = os.path.join(root, relative)
         target = os.path.join(tree, relative)
@@ -189,13 +188,11 @@ def _mirror(root, tree, files, drop):
                 os.link(source, target)
             except OSError:
                 shutil.copy2(source, target)
-        kept.append(relative)
     for directory, subdirectories, _ in os.walk(root):
         for name in subdirectories:
-            target = os.path.join(tree, os.path.relpath(os.path.join(directory, name), root))
             if not os.path.islink(os.path.join(directory, name)):
-                os.makedirs(target, exist_ok=True)
-    return kept
+                os.makedirs(os.path.join(tree, os.path.relpath(os.path.join(directory, name), root)),
+                            exist_ok=True)
 
 
 def write_tree(root, files, drop=lambda relative: False):
@@ -219,22 +216,23 @@ def write_tree(root, files, drop=lambda relative: False):
     if not os.access(parent, os.W_OK | os.X_OK):
         # No room beside root (its parent is not ours): switch file by file.
         return _write_in_place(root, files, changed, removed)
-    tree = tempfile.mkdtemp(prefix=_temporary_prefix('.' + name), suffix='.tmp', dir=parent)
+    try:
+        tree = tempfile.mkdtemp(prefix=_temporary_prefix('.' + name), suffix='.tmp', dir=parent)
+    except OSError as error:
+        raise _write_error(error, root)
     try:
         if os.path.isdir(root):
             os.chmod(tree, os.stat(root).st_mode & 0o7777)
-            _mirror(root, tree, set(changed), drop)
+            replaced = set(changed) | set(removed)
+            _mirror(root, tree, lambda relative: relative in replaced)
         else:
             os.chmod(tree, 0o755)
-        for relative in sorted(files):
+        for relative in changed:
             target = os.path.join(tree, relative)
             os.makedirs(os.path.dirname(target), exist_ok=True)
-            if relative in changed:
-                with open(target, 'w', encoding='utf-8') as stream:
-                    stream.write(files[relative])
-                os.chmod(target, 0o644)
-            elif not os.path.lexists(target):
-                os.link(os.path.join(root, relative), target)
+            with open(target, 'w', encoding='utf-8') as stream:
+                stream.write(files[relative])
+            os.chmod(target, 0o644)
         if not os.path.isdir(root):
             os.rename(tree, root)
         elif not _exchange(tree, root):
@@ -249,6 +247,9 @@ def write_tree(root, files, drop=lambda relative: False):
 
 def _write_in_place(root, files, changed, removed):
     written = write_files(root, {r: files[r] for r in changed})
-    for relative in removed:
-        os.unlink(os.path.join(root, relative))
+    try:
+        for relative in removed:
+            os.unlink(os.path.join(root, relative))
+    except OSError as error:
+        raise _write_error(error, root)
     return written, [os.path.join(root, r) for r in removed]

@@ -21,8 +21,8 @@ from genmsg.names import is_legal_resource_base_name
 
 from colcon_mros.errors import GenmrosError
 from colcon_mros.identity import Identities
-from colcon_mros.names import (check_member_name, check_type_name, check_type_named_like_package,
-                               check_unique_headers, headers_of)
+from colcon_mros.names import (check_member_name, check_service_name, check_type_name,
+                               check_type_named_like_package, check_unique_headers, headers_of)
 
 SERVICE_SEPARATOR = '---'
 
@@ -222,6 +222,7 @@ class SpecLoader:
         name = os.path.basename(path)[:-len('.msg')]
         check_type_name(package, name, path)
         if path.endswith('.srv'):
+            check_service_name(package, name, path)
             for half in ('Request', 'Response'):
                 check_type_name(package, name + half, path)
         check_unique_headers(package, path, self._package_files(package, path))
