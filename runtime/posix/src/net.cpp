@@ -8,7 +8,9 @@
 #include <netdb.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
+#include <new>
 #include <poll.h>
+#include <pthread.h>
 #include <sys/socket.h>
 #include <sys/time.h>
 #include <unistd.h>
@@ -139,9 +141,33 @@ bool sendAll(int fd, const void* data, size_t size) {
   return true;
 }
 
-bool receiveAll(int fd, void* data, size_t size) {
+Deadline::Deadline(int milliseconds)
+    : limited_(milliseconds >= 0),
+      end_(std::chrono::steady_clock::now() + std::chrono::milliseconds(std::max(milliseconds, 0))) {}
+
+int Deadline::remainingMs() const {
+  if (!limited_) {
+    return -1;
+  }
+  const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+      end_ - std::chrono::steady_clock::now()).count();
+  return left > 0 ? static_cast<int>(left) : 0;
+}
+
+bool receiveAll(int fd, void* data, size_t size, const Deadline& deadline) {
   char* cursor = static_cast<char*>(data);
   while (size > 0) {
+    const int wait_ms = deadline.remainingMs();
+    if (wait_ms >= 0) {
+      pollfd readable = {fd, POLLIN, 0};
+      const int ready = wait_ms == 0 ? 0 : poll(&readable, 1, wait_ms);
+      if (ready < 0 && errno == EINTR) {
+        continue;
+      }
+      if (ready <= 0) {
+        return false;
+      }
+    }
     const ssize_t received = recv(fd, cursor, size, 0);
     if (received < 0 && errno == EINTR) {
       continue;
@@ -151,6 +177,38 @@ bool receiveAll(int fd, void* data, size_t size) {
     }
     cursor += received;
     size -= static_cast<size_t>(received);
+  }
+  return true;
+}
+
+namespace {
+
+void* runWork(void* work) {
+  std::function<void()>* owned = static_cast<std::function<void()>*>(work);
+  (*owned)();
+  delete owned;
+  return nullptr;
+}
+
+}  // namespace
+
+bool startThread(std::function<void()> work, size_t stack_bytes) {
+  std::function<void()>* owned = new (std::nothrow) std::function<void()>(std::move(work));
+  if (owned == nullptr) {
+    return false;
+  }
+  pthread_attr_t attributes;
+  pthread_attr_init(&attributes);
+  pthread_attr_setdetachstate(&attributes, PTHREAD_CREATE_DETACHED);
+  if (stack_bytes != 0) {
+    pthread_attr_setstacksize(&attributes, stack_bytes);
+  }
+  pthread_t thread;
+  const int result = pthread_create(&thread, &attributes, runWork, owned);
+  pthread_attr_destroy(&attributes);
+  if (result != 0) {
+    delete owned;
+    return false;
   }
   return true;
 }

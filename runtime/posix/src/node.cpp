@@ -24,6 +24,14 @@ using xmlrpc::Value;
 
 const int kHandshakeTimeoutMs = 5000;
 const int kMasterRetryDelayMs = 500;
+// Connections served at once on each port: slave API calls, and TCPROS
+// subscribers (each holds its connection's thread while subscribed). More
+// are refused at once, so no peer can make the node hold more threads.
+const int kMaxSlaveCalls = 32;
+const int kMaxSubscriberConnections = 64;
+// A slave call or handshake needs little stack; a small one keeps the
+// address space of many connections small.
+const size_t kConnectionStackBytes = 256 * 1024;
 
 }  // namespace
 
@@ -51,8 +59,9 @@ bool Node::start() {
     return false;
   }
   slave_uri_ = "http://" + settings_.host + ":" + std::to_string(slave_port) + "/";
-  std::thread(&Node::acceptLoop, this, slave_fd, &Node::serveSlaveCall).detach();
-  std::thread(&Node::acceptLoop, this, tcpros_fd, &Node::serveTcpros).detach();
+  std::thread(&Node::acceptLoop, this, slave_fd, &Node::serveSlaveCall, kMaxSlaveCalls).detach();
+  std::thread(&Node::acceptLoop, this, tcpros_fd, &Node::serveTcpros, kMaxSubscriberConnections)
+      .detach();
   std::thread(&Node::waitForSignals, this).detach();
   ROS_INFO("node %s started: slave API %s, TCPROS port %u, master %s", settings_.name.c_str(),
            slave_uri_.c_str(), tcpros_port_, settings_.master_uri.c_str());
@@ -130,14 +139,29 @@ void Node::shutdownAndExit(const std::string& reason) {
   }
 }
 
-void Node::acceptLoop(int listen_fd, Server serve) {
+void Node::acceptLoop(int listen_fd, Server serve, int max_connections) {
+  std::atomic<int> active(0);
+  bool refusing = false;
   for (;;) {
     const int fd = accept4(listen_fd, nullptr, nullptr, SOCK_CLOEXEC);
     if (fd < 0) {  // out of descriptors, say: try again later
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
       continue;
     }
-    std::thread(serve, this, fd).detach();
+    const bool admitted = active.fetch_add(1) < max_connections &&
+                          net::startThread([this, serve, fd, &active] {
+                            (this->*serve)(fd);
+                            active.fetch_sub(1);
+                          }, kConnectionStackBytes);
+    if (!admitted) {
+      active.fetch_sub(1);
+      close(fd);
+      if (!refusing) {
+        ROS_WARN("refusing connections: %d served at once, or no thread to serve one",
+                 max_connections);
+      }
+    }
+    refusing = !admitted;
   }
 }
 
@@ -180,7 +204,7 @@ void Node::serveTcpros(int fd) {
   net::setTimeouts(fd, kHandshakeTimeoutMs);
   tcpros::Header request;
   std::string error;
-  if (!tcpros::readHeader(fd, request, error)) {
+  if (!tcpros::readHeader(fd, request, error, net::Deadline::after(kHandshakeTimeoutMs))) {
     ROS_WARN("dropped a TCPROS connection: %s", error.c_str());
     close(fd);
     return;

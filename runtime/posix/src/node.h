@@ -40,7 +40,9 @@ class Node {
  private:
   typedef void (Node::*Server)(int fd);
 
-  void acceptLoop(int listen_fd, Server serve);
+  // Serves each connection on a thread of its own, at most max_connections
+  // at once; the others are closed at once.
+  void acceptLoop(int listen_fd, Server serve, int max_connections);
   void waitForSignals();
   void callMaster(const std::string& method, const std::vector<xmlrpc::Value>& params,
                   xmlrpc::Value& value);

@@ -6,7 +6,6 @@
 // refused handshake or a malformed frame closes the link for good.
 #include <chrono>
 #include <sys/socket.h>
-#include <thread>
 #include <unistd.h>
 
 #include "links.h"
@@ -20,7 +19,11 @@ namespace posix {
 namespace {
 const int kHandshakeTimeoutMs = 5000;
 const int kFirstRetryDelayMs = 100;
-const int kMaxRetryDelayMs = 2000;
+// A publisher that stays unreachable is tried less and less often.
+const int kMaxRetryDelayMs = 10000;
+// Publishers of one topic the node connects to (one thread each); anyone
+// may call publisherUpdate, so a longer list must not make it hold more.
+const size_t kMaxPublishersPerTopic = 32;
 }  // namespace
 
 class PublisherLink {
@@ -92,7 +95,13 @@ Subscription::Subscription(NodeContext& node, const std::string& topic, const To
                            Deliverer deliverer, void (*callback)(void*))
     : node_(node), topic_(topic), type_(type), deliverer_(deliverer), callback_(callback) {}
 
-void Subscription::updatePublishers(const std::vector<std::string>& uris) {
+void Subscription::updatePublishers(const std::vector<std::string>& all_uris) {
+  std::vector<std::string> uris(all_uris);
+  if (uris.size() > kMaxPublishersPerTopic) {
+    ROS_WARN("%s: %zu publishers listed; connecting to the first %zu", topic_.c_str(), uris.size(),
+             kMaxPublishersPerTopic);
+    uris.resize(kMaxPublishersPerTopic);
+  }
   std::lock_guard<std::mutex> lock(mutex_);
   listed_ = uris;
   for (auto& entry : links_) {
@@ -110,8 +119,12 @@ void Subscription::updatePublishers(const std::vector<std::string>& uris) {
       continue;
     }
     const auto link = std::make_shared<PublisherLink>(uri, node_.next_connection_id++);
+    if (!net::startThread([this, link] { run(link); })) {
+      ROS_WARN("%s: no thread for publisher %s; it is tried again with the next update",
+               topic_.c_str(), uri.c_str());
+      continue;
+    }
     links_[uri] = link;
-    std::thread(&Subscription::run, this, link).detach();
   }
 }
 
@@ -188,7 +201,8 @@ bool Subscription::receive(PublisherLink& link, int fd) {
                                   {"tcp_nodelay", "1"}};
   tcpros::Header reply;
   std::string error;
-  if (!tcpros::writeHeader(fd, request) || !tcpros::readHeader(fd, reply, error)) {
+  if (!tcpros::writeHeader(fd, request) ||
+      !tcpros::readHeader(fd, reply, error, net::Deadline::after(kHandshakeTimeoutMs))) {
     ROS_ERROR("%s: bad connection header from publisher %s: %s", topic, uri, error.c_str());
     return false;
   }

@@ -20,9 +20,9 @@ uint32_t getLength(const uint8_t* bytes) {
          static_cast<uint32_t>(bytes[2]) << 16 | static_cast<uint32_t>(bytes[3]) << 24;
 }
 
-bool readLength(int fd, uint32_t& length) {
+bool readLength(int fd, uint32_t& length, const net::Deadline& deadline) {
   uint8_t bytes[4];
-  if (!net::receiveAll(fd, bytes, sizeof(bytes))) {
+  if (!net::receiveAll(fd, bytes, sizeof(bytes), deadline)) {
     return false;
   }
   length = getLength(bytes);
@@ -43,9 +43,9 @@ bool writeHeader(int fd, const Header& header) {
   return net::sendAll(fd, wire.data(), wire.size());
 }
 
-bool readHeader(int fd, Header& header, std::string& error) {
+bool readHeader(int fd, Header& header, std::string& error, const net::Deadline& deadline) {
   uint32_t length = 0;
-  if (!readLength(fd, length)) {
+  if (!readLength(fd, length, deadline)) {
     error = "connection closed before the header";
     return false;
   }
@@ -54,9 +54,9 @@ bool readHeader(int fd, Header& header, std::string& error) {
             std::to_string(kMaxHeaderBytes);
     return false;
   }
-  std::vector<uint8_t> bytes(length);
-  if (length > 0 && !net::receiveAll(fd, bytes.data(), length)) {
-    error = "connection closed inside the header";
+  std::vector<uint8_t> bytes;
+  if (!net::receiveGrowing(fd, bytes, length, deadline)) {
+    error = "connection closed inside the header, or the header came too slowly";
     return false;
   }
   header.clear();
@@ -86,7 +86,7 @@ bool readHeader(int fd, Header& header, std::string& error) {
 
 FrameStatus readFrame(int fd, std::vector<uint8_t>& body, std::string& error) {
   uint32_t length = 0;
-  if (!readLength(fd, length)) {
+  if (!readLength(fd, length, net::Deadline::none())) {
     error = "connection closed";
     return kStreamEnded;
   }
@@ -95,8 +95,7 @@ FrameStatus readFrame(int fd, std::vector<uint8_t>& body, std::string& error) {
             std::to_string(kMaxMessageBytes) + " bytes";
     return kFrameTooLarge;
   }
-  body.resize(length);
-  if (length > 0 && !net::receiveAll(fd, body.data(), length)) {
+  if (!net::receiveGrowing(fd, body, length)) {
     error = "connection closed inside a message";
     return kStreamEnded;
   }

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "net.h"
+
 namespace mros {
 namespace posix {
 namespace tcpros {
@@ -26,12 +28,14 @@ const uint32_t kMaxMessageBytes = MROS_POSIX_MAX_MESSAGE_BYTES;
 
 bool writeHeader(int fd, const Header& header);
 // False with a reason for a closed connection, an oversized or malformed
-// header (a field without '=' or running past the end).
-bool readHeader(int fd, Header& header, std::string& error);
+// header (a field without '=' or running past the end), or a header not
+// complete by the deadline (a handshake has one, however slowly it trickles).
+bool readHeader(int fd, Header& header, std::string& error, const net::Deadline& deadline);
 
 enum FrameStatus { kFrameRead, kStreamEnded, kFrameTooLarge };
 // Reads one message frame's body; a length above kMaxMessageBytes is refused
-// before anything is allocated. error says why when no frame was read.
+// before anything is allocated, and storage grows with the bytes that
+// arrive, not with the length claimed. error says why when no frame was read.
 FrameStatus readFrame(int fd, std::vector<uint8_t>& body, std::string& error);
 
 // The value of key, or "" if absent.

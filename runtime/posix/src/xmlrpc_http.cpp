@@ -1,6 +1,7 @@
 // xmlrpc_http.cpp: XML-RPC over HTTP/1.x: POSTing a call to a master or
 // slave URI, and reading a call / writing an answer on the server side.
-// Header and body sizes are bounded and every socket has a timeout.
+// Header and body sizes are bounded, a whole message must arrive within
+// kCallTimeoutMs, and a body takes memory as it arrives.
 #include <cctype>
 #include <cstdlib>
 #include <unistd.h>
@@ -20,10 +21,11 @@ const int kCallTimeoutMs = 5000;
 
 // Reads an HTTP message (request or response) and returns its body.
 bool readHttpMessage(int fd, std::string& body) {
+  const net::Deadline deadline = net::Deadline::after(kCallTimeoutMs);
   std::string head;
   char c;
   while (head.size() < kMaxHttpHeaderBytes) {
-    if (!net::receiveAll(fd, &c, 1)) {
+    if (!net::receiveAll(fd, &c, 1, deadline)) {
       return false;
     }
     head += c;
@@ -52,11 +54,13 @@ bool readHttpMessage(int fd, std::string& body) {
   }
   body.clear();
   if (length >= 0) {
-    body.resize(static_cast<size_t>(length));
-    return length == 0 || net::receiveAll(fd, &body[0], body.size());
+    return net::receiveGrowing(fd, body, static_cast<size_t>(length), deadline);
   }
   char chunk[4096];  // no Content-Length: the body ends with the connection
   for (;;) {
+    if (deadline.remainingMs() == 0) {
+      return false;
+    }
     const ssize_t received = read(fd, chunk, sizeof(chunk));
     if (received <= 0) {
       return received == 0;
