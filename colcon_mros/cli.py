@@ -4,12 +4,10 @@ import argparse
 import sys
 
 from colcon_mros import __version__
+from colcon_mros.defaults import DEFAULT_VARIABLE_SIZE_BUDGET, EXPORT_PARTS, STORAGE_KINDS
 from colcon_mros.errors import GenmrosError
-from colcon_mros.export import EXPORT_PARTS, export
-from colcon_mros.generate import generate_file
-from colcon_mros.make_fragment import make_fragment_path
-from colcon_mros.render import DEFAULT_VARIABLE_SIZE_BUDGET
-from colcon_mros.storage import STORAGE_KINDS
+from colcon_mros.installed_files import MAKE_FRAGMENT, installed_file
+from colcon_mros.ros_environment import require_ros_python
 from colcon_mros.workspace import default_prefixes, parse_include_flags
 
 DESCRIPTION = '''\
@@ -94,6 +92,8 @@ def main(argv=None):
     try:
         if argv[:1] == ['export']:
             options = _export_parser().parse_args(argv[1:])
+            require_ros_python()
+            from colcon_mros.export import export  # needs genmsg and empy
             result = export(options.output_dir, options.prefixes or default_prefixes(),
                             options.workspaces, options.packages, options.types,
                             options.variable_size_budget, options.template_dir,
@@ -102,9 +102,11 @@ def main(argv=None):
             print('genmros: exported %d message and %d service types to %s'
                   % (len(result.messages), len(result.services), options.output_dir))
         elif argv == ['make-fragment']:
-            print(make_fragment_path())
+            print(installed_file(MAKE_FRAGMENT))
         else:
             options = _generator_parser().parse_args(argv)
+            require_ros_python()
+            from colcon_mros.generate import generate_file  # needs genmsg and empy
             generate_file(options.file, options.package, options.output_dir,
                           parse_include_flags(options.include_paths), options.template_dir,
                           options.export_dir)

@@ -21,7 +21,6 @@ rewrites only what changed and removes what no longer exists.
 """
 
 import os
-import sysconfig
 
 from colcon_core.argument_parser import ArgumentParserDecorator
 from colcon_core.argument_parser import ArgumentParserDecoratorExtensionPoint
@@ -29,14 +28,13 @@ from colcon_core.package_selection import get_packages
 from colcon_core.plugin_system import satisfies_version
 
 from colcon_mros.errors import GenmrosError
-from colcon_mros.export import export
+from colcon_mros.installed_files import CMAKE_MODULE, installed_file
 from colcon_mros.output import check_writable, write_files
+from colcon_mros.ros_environment import require_ros_python
 from colcon_mros.workspace import default_prefixes, installed_packages, workspace_packages
 
 CMAKE_FILE = 'mros_export.cmake'
 IGNORE_MARKER = 'COLCON_IGNORE'
-CMAKE_MODULE = os.path.join(sysconfig.get_path('data'), 'share', 'genmros', 'cmake',
-                            'mros_generate.cmake')
 DEFINITION_KINDS = ('msg', 'srv')
 
 
@@ -113,6 +111,8 @@ def export_workspace(args, export_dir):
         raise GenmrosError('the built packages define no messages or services; nothing to '
                            'export', export_dir)
 
+    require_ros_python()
+    from colcon_mros.export import export  # needs genmsg: imported when the flag is used
     result = export(os.path.join(export_dir, 'include'), prefixes, [workspace],
                     package_names=sorted(names), only='headers')
     exported = {message.package for message in result.messages}
@@ -166,4 +166,4 @@ set(MROS_EXPORT_TYPES
 if(NOT COMMAND mros_import_messages)
   include("%s")
 endif()
-''' % (''.join('  %s\n' % name for name in types), CMAKE_MODULE)
+''' % (''.join('  %s\n' % name for name in types), installed_file(CMAKE_MODULE))

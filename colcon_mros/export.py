@@ -20,7 +20,8 @@ from colcon_mros.errors import GenmrosError
 from colcon_mros.model import ModelBuilder
 from colcon_mros.output import is_generated, write_files, write_tree
 from colcon_mros.parse import SpecLoader
-from colcon_mros.render import DEFAULT_VARIABLE_SIZE_BUDGET, Renderer
+from colcon_mros.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
+from colcon_mros.render import Renderer
 from colcon_mros.storage import storage_for
 from colcon_mros.workspace import (installed_packages, msg_search_path, type_name_of,
                                    workspace_packages)
@@ -85,9 +86,6 @@ def _check_type_ids(messages):
                                % (message.type_id, other, message.full_name))
 
 
-# What an export writes: everything, or one of its two halves (an export
-# dir shared by many firmwares takes the headers, each firmware its aggregates).
-EXPORT_PARTS = ('all', 'headers', 'aggregates')
 
 
 def _depfile_text(target, definitions):

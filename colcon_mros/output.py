@@ -95,7 +95,8 @@ def _stage(path, text):
 
 def check_writable(root):
     """Fail early, before anything is written, if root cannot take output."""
-    probe = root
+    # A relative root climbs to '' (the current directory), not to '/'.
+    probe = os.path.abspath(root)
     while not os.path.exists(probe):
         parent = os.path.dirname(probe)
         if parent == probe:

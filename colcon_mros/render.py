@@ -8,10 +8,10 @@ import os
 
 import em
 
+from colcon_mros.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
 from colcon_mros.model import SUPPORT_HEADER, MaxSize
 
 TEMPLATE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'templates')
-DEFAULT_VARIABLE_SIZE_BUDGET = 1024
 
 
 def _render(template_dir, template_name, **context):

@@ -28,7 +28,6 @@ from genmsg.msgs import parse_type
 
 from colcon_mros.errors import GenmrosError
 
-STORAGE_KINDS = ('heap', 'bounded')
 PACKAGE_OPTIONS_FILE = 'genmros.options'
 OPTION_KEYS = ('max_size', 'max_count')
 ANY_FIELD = '*'

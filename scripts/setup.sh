@@ -16,9 +16,18 @@ fi
 
 # --no-deps: every dependency comes from Debian (genmsg is not on PyPI, and
 # empy 4 from PyPI would break catkin). --break-system-packages: the project
-# must live in Debian's interpreter for catkin and colcon to find it.
-as_root /usr/bin/python3 -m pip install --quiet --no-deps --no-build-isolation \
-  --break-system-packages --root-user-action=ignore --force-reinstall "$here"
+# must live in Debian's interpreter for catkin and colcon to find it (pip
+# before 23 has no such flag and needs none). Built from a copy, so the
+# source tree gets no build/ or *.egg-info.
+pip_flags=(--quiet --no-deps --no-build-isolation --force-reinstall)
+pip_help=$(/usr/bin/python3 -m pip install --help)
+for flag in --break-system-packages --root-user-action=ignore; do
+  if grep -q -- "${flag%%=*}" <<<"$pip_help"; then pip_flags+=("$flag"); fi
+done
+source_copy=$(mktemp -d)
+trap 'rm -rf "$source_copy"' EXIT
+tar -C "$here" --exclude=.git --exclude=build --exclude='*.egg-info' -cf - . | tar -C "$source_copy" -xf -
+as_root /usr/bin/python3 -m pip install "${pip_flags[@]}" "$source_copy"
 
 # --- catkin generator registration (issue 3) ---------------------------------
 # genmsg runs every generator named by a file in /etc/ros/genmsg (gencpp, genpy

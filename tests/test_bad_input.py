@@ -2,10 +2,12 @@
 
 import os
 import shutil
+import subprocess
+import sys
 
 import pytest
 
-from conftest import run_genmros
+from conftest import REPO, TEST_WS, run_genmros
 
 PACKAGE_XML = '''<?xml version="1.0"?>
 <package format="2">
@@ -218,3 +220,20 @@ def test_failed_write_changes_no_file(workspace):
     result = run_genmros('export', '--workspace', workspace_dir, '-o', output, '--underlay', '/usr', check=False)
     _assert_one_line_error(result, 'cannot write to output directory')
     assert _snapshot(output) == before
+
+
+@pytest.mark.parametrize('mode', ['export', 'generator'])
+def test_relative_output_paths_whose_first_part_is_new(tmp_path, mode):
+    # The common call from a build or app directory: genmros ... -o include
+    if mode == 'export':
+        arguments = ['export', '--workspace', TEST_WS, '--type', 'mros_test/PersonalData', '-o',
+                     os.path.join('new', 'include'), '--underlay', '/usr']
+        written = tmp_path / 'new' / 'include' / 'mros_test' / 'PersonalData.h'
+    else:
+        arguments = [os.path.join(TEST_WS, 'src', 'mros_test', 'msg', 'PersonalData.msg'), '-p', 'mros_test',
+                     '-o', os.path.join('new', 'mros_test')]
+        written = tmp_path / 'new' / 'mros_test' / 'PersonalData.h'
+    result = subprocess.run([sys.executable, '-m', 'colcon_mros'] + arguments, cwd=str(tmp_path),
+                            env=dict(os.environ, PYTHONPATH=REPO), capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    assert written.is_file()

@@ -1,0 +1,15 @@
+"""The choices and defaults the command line offers.
+
+Kept free of ROS imports, so that ``genmros --help`` and the error for a
+missing genmsg need nothing of ROS.
+"""
+
+# What an export writes: everything, or one of its two halves (an export
+# dir shared by many firmwares takes the headers, each firmware its aggregates).
+EXPORT_PARTS = ('all', 'headers', 'aggregates')
+
+# PUB_MSG_MAX_SIZE share of a type without a maximum wire size.
+DEFAULT_VARIABLE_SIZE_BUDGET = 1024
+
+# How strings and variable arrays are stored (colcon_mros.storage).
+STORAGE_KINDS = ('heap', 'bounded')

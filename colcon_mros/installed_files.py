@@ -1,0 +1,44 @@
+"""Where the files genmros installs beside its Python package are.
+
+pip installs the CMake module (mros_generate.cmake) and the make fragment
+(genmros.mk) under ``share/genmros/cmake/`` of whatever prefix the install
+used (/usr/local, ~/.local, a venv); the distribution's own record of its
+files says where, so no prefix is assumed. A source checkout has them in
+``cmake/``.
+"""
+
+import os
+from importlib import metadata
+
+from colcon_mros.errors import GenmrosError
+
+DISTRIBUTION = 'colcon-mros'
+MAKE_FRAGMENT = 'genmros.mk'
+CMAKE_MODULE = 'mros_generate.cmake'
+
+
+def _checkout_file(name):
+    path = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'cmake', name)
+    return path if os.path.isfile(path) else None
+
+
+def _installed_file(name):
+    try:
+        files = metadata.files(DISTRIBUTION) or []
+    except metadata.PackageNotFoundError:
+        return None
+    for record in files:
+        if record.name == name:
+            path = os.path.normpath(str(record.locate()))
+            if os.path.isfile(path):
+                return path
+    return None
+
+
+def installed_file(name):
+    """The absolute path of one of genmros' CMake/make files, from this
+    checkout or from the install."""
+    path = _checkout_file(name) or _installed_file(name)
+    if path is None:
+        raise GenmrosError('%s is not installed with genmros (reinstall colcon-mros)' % name)
+    return path

@@ -1,0 +1,29 @@
+"""What genmros needs of the ROS installation, checked with a clear message.
+
+genmsg (the parser) and empy 3 (the templates) come with ROS: Debian's
+python3-genmsg and python3-empy, or a sourced ROS setup (Noetic's
+/opt/ros/noetic/setup.bash puts genmsg on PYTHONPATH). Without them the
+modules that generate cannot even be imported; this says so in one line
+instead of a traceback.
+"""
+
+import importlib
+import sys
+
+from colcon_mros.errors import GenmrosError
+
+REQUIRED_MODULES = (
+    ('genmsg', 'genmsg (Debian: apt-get install python3-genmsg; ROS Noetic: source '
+               '/opt/ros/noetic/setup.bash)'),
+    ('em', 'empy 3 (Debian: apt-get install python3-empy; Ubuntu + Noetic: python3-empy)'),
+)
+
+
+def require_ros_python():
+    """Raise a one-line GenmrosError if this interpreter cannot import genmsg or empy."""
+    for module, what in REQUIRED_MODULES:
+        try:
+            importlib.import_module(module)
+        except ImportError:
+            raise GenmrosError('%s cannot import %s; install or source %s, or run genmros with '
+                               'the Python that has it' % (sys.executable, module, what))
