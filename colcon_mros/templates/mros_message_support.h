@@ -720,7 +720,8 @@ template <class T> void deliverFrame(void (*callback)(void*), const char* frame)
                 static_cast<uint32_t>(word[2]) << 16 | static_cast<uint32_t>(word[3]) << 24;
   }
   T message;
-  if (deserialize(message, reinterpret_cast<const uint8_t*>(body), body_size) >= 0) {
+  Reader in(reinterpret_cast<const uint8_t*>(body), body_size);
+  if (Codec<T>::read(in, message)) {
     callback(&message);
   }
 }
