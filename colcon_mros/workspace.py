@@ -84,21 +84,22 @@ def workspace_packages(workspace):
 _MSG_INCLUDE_DIRS = re.compile(r'set\(\w+_MSG_INCLUDE_DIRS\s+"([^"]*)"\)')
 
 
-def _installed_msg_dirs(share):
-    """msg directories of an installed package: its own msg/, or those its
-    <pkg>-msg-paths.cmake names (a catkin devel space keeps them in the sources)."""
+def _devel_space_msg_dirs(share):
+    """The msg directories a catkin devel space's <pkg>-msg-paths.cmake names
+    (a devel space keeps no package.xml or .msg files, only this pointer to
+    the sources), or [] for an install space."""
     name = os.path.basename(share)
-    directories = [os.path.join(share, 'msg')]
     paths_file = os.path.join(share, 'cmake', '%s-msg-paths.cmake' % name)
-    if os.path.isfile(paths_file):
-        with open(paths_file) as stream:
-            for match in _MSG_INCLUDE_DIRS.finditer(stream.read()):
-                directories.extend(d for d in match.group(1).split(';') if d)
-    return list(dict.fromkeys(directories))
+    if not os.path.isfile(paths_file):
+        return []
+    with open(paths_file) as stream:
+        return [d for match in _MSG_INCLUDE_DIRS.finditer(stream.read())
+                for d in match.group(1).split(';') if d]
 
 
 def installed_packages(prefixes):
-    """{name: Package} for the packages under <prefix>/share; earlier prefixes win."""
+    """{name: Package} for the packages under <prefix>/share (install spaces,
+    Debian's /usr, catkin devel spaces); earlier prefixes win."""
     packages = {}
     for prefix in prefixes:
         share = os.path.join(prefix, 'share')
@@ -106,9 +107,14 @@ def installed_packages(prefixes):
             continue
         for name in sorted(os.listdir(share)):
             root = os.path.join(share, name)
-            if name in packages or not os.path.isfile(os.path.join(root, 'package.xml')):
+            devel_msg_dirs = _devel_space_msg_dirs(root)
+            if name in packages or not (devel_msg_dirs or os.path.isfile(os.path.join(root, 'package.xml'))):
                 continue
-            package = Package(name, _installed_msg_dirs(root), [os.path.join(root, 'srv')])
+            # A devel space's srv/ sits beside the msg/ its sources have.
+            msg_dirs = list(dict.fromkeys([os.path.join(root, 'msg')] + devel_msg_dirs))
+            srv_dirs = [os.path.join(root, 'srv')] + [os.path.join(os.path.dirname(d), 'srv')
+                                                      for d in devel_msg_dirs]
+            package = Package(name, msg_dirs, list(dict.fromkeys(srv_dirs)))
             if package.msg_dirs or package.srv_dirs:
                 packages[name] = package
     return packages

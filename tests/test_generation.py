@@ -179,3 +179,19 @@ def test_generator_mode_fills_an_export_dir_with_the_whole_closure(test_ws_expor
                            'mros_test/msg/PersonalData.msg', 'mros_test/package.xml', 'mros_test/srv/LookupPerson.srv']
     assert filecmp.cmp(str(export_dir / 'share' / 'geometry_msgs' / 'msg' / 'Point.msg'),
                        '/usr/share/geometry_msgs/msg/Point.msg', shallow=False)
+
+
+def test_catkin_devel_space_underlays_are_found(tmp_path):
+    # A devel space keeps no package.xml or .msg files, only catkin's pointer
+    # to the sources (genmsg's pkg-msg-paths.cmake.develspace.in).
+    devel = tmp_path / 'devel'
+    cmake_dir = devel / 'share' / 'mros_test_base' / 'cmake'
+    cmake_dir.mkdir(parents=True)
+    (cmake_dir / 'mros_test_base-msg-paths.cmake').write_text(
+        '# generated from genmsg/cmake/pkg-msg-paths.cmake.develspace.in\n\n'
+        'set(mros_test_base_MSG_INCLUDE_DIRS "%s")\nset(mros_test_base_MSG_DEPENDENCIES std_msgs)\n'
+        % os.path.join(TEST_WS, 'src', 'mros_test_base', 'msg'))
+    run_genmros('export', '--type', 'mros_test_base/Labeled', '-o', str(tmp_path / 'include'),
+                '--underlay', str(devel), '--underlay', '/usr')
+    assert _tree(str(tmp_path / 'include')) == sorted(AGGREGATES + [
+        'mros_message_support.h', 'mros_test_base/Labeled.h', 'std_msgs/ColorRGBA.h'])
