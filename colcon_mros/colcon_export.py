@@ -119,8 +119,9 @@ def export_workspace(args, export_dir):
     exported.update(service.package for service in result.services)
     for name in sorted(exported):
         _export_definitions(packages[name], os.path.join(export_dir, 'share', name))
-    types = sorted(message.full_name for message in result.messages)
-    types.extend(sorted(service.full_name for service in result.services))
+    # Every type the export dir holds, not only this run's: a build of some
+    # packages (--packages-select) adds to an export, never shrinks it.
+    types = _exported_types(os.path.join(export_dir, 'share'))
     # COLCON_IGNORE: DIR/share/<pkg>/package.xml must not look like a second
     # copy of each package to colcon or catkin when DIR is in the workspace.
     write_files(export_dir, {CMAKE_FILE: _cmake_file(types), IGNORE_MARKER: ''})
@@ -142,6 +143,20 @@ def _export_definitions(package, share_dir):
         for name in os.listdir(directory) if os.path.isdir(directory) else ():
             if name.endswith('.' + kind) and os.path.join(kind, name) not in files:
                 os.unlink(os.path.join(directory, name))
+
+
+def _exported_types(share_dir):
+    """pkg/Type of every definition under share_dir, services' halves included."""
+    messages, services = set(), set()
+    for package in sorted(os.listdir(share_dir)) if os.path.isdir(share_dir) else ():
+        for kind, names in (('msg', messages), ('srv', services)):
+            directory = os.path.join(share_dir, package, kind)
+            for name in os.listdir(directory) if os.path.isdir(directory) else ():
+                if name.endswith('.' + kind):
+                    names.add('%s/%s' % (package, name[:-len(kind) - 1]))
+    for service in services:
+        messages.update((service + 'Request', service + 'Response'))
+    return sorted(messages) + sorted(services)
 
 
 def _read(path):

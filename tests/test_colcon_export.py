@@ -118,6 +118,19 @@ def test_second_run_updates_the_export(workspace):
     assert mtimes(workspace.include)[unchanged] == before[unchanged]
 
 
+def test_selected_packages_add_to_the_export_and_never_shrink_it(workspace):
+    with open(os.path.join(workspace.export_dir, 'mros_export.cmake')) as stream:
+        before = stream.read()
+    run(['colcon', 'build', '--packages-select', 'mros_test_base', '--mros-export', workspace.export_dir],
+        workspace.root)
+    with open(os.path.join(workspace.export_dir, 'mros_export.cmake')) as stream:
+        after = stream.read()
+    assert after == before
+    for type_name in ('mros_test/PersonalData', 'mros_test_base/Vector3i', 'std_msgs/Header'):
+        assert '\n  %s\n' % type_name in after
+    assert os.path.isfile(os.path.join(workspace.include, 'mros_test', 'PersonalData.h'))
+
+
 def test_unwritable_export_dir_fails_before_building(tmp_path):
     workspace = Workspace(str(tmp_path / 'ws'))
     blocker = os.path.join(workspace.root, 'not_a_directory')
