@@ -2,7 +2,8 @@
 # Footprint benchmark: text+data+bss that message types cost a firmware on
 # each mROS CPU, -Os -fno-exceptions -fno-rtti -std=gnu++98, --gc-sections.
 # Each row is one firmware (start-up, newlib, the API layer in the shape of
-# mROS v1's ros.cpp, and one task that publishes and subscribes one type),
+# mROS v1's ros.cpp over the tests' ros.h, and one task that publishes and
+# subscribes one type),
 # minus the same firmware without any message type (baseline.cpp).
 #   issue 7: genmros' headers against hand-written v1-style ones (handwritten/)
 #   issue 9: heap against bounded storage, and the RAM a firmware's buffers take
@@ -46,7 +47,7 @@ build() {  # cpu output include_dir type header -> elf
       "$out.library.o" "$out.sink.o" "${link[@]}" -o "$out.elf"
   else
     arm-none-eabi-g++ ${cpus[$cpu]} "${common[@]}" -std=gnu++98 -Wno-psabi -I"$include" -I"$here" \
-      -DBENCH_TYPE="$type" -DBENCH_HEADER="<$header>" "$here/api_layer.cpp" "$here/task.cpp" \
+      -DBENCH_TYPE="$type" -DBENCH_HEADER="<$header>" -I"$repo/tests/fixtures/mros_v1" "$here/api_layer.cpp" "$here/task.cpp" \
       "$out.library.o" "$out.sink.o" "${link[@]}" -o "$out.elf"
   fi
   echo "$out.elf"
