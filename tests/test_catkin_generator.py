@@ -13,6 +13,7 @@ import shutil
 import pytest
 
 from fixtures.build_integration.tools import (
+    FIRMWARE_FIXTURE,
     MESSAGE_PACKAGES, SUPPORT_HEADER, compile_headers, expected_header_names, genmros_export,
     headers_under, new_workspace, package_headers, run, unwrapped, user_environment)
 
@@ -157,6 +158,16 @@ def test_export_dir_collects_every_package(build):
         assert os.path.isfile(os.path.join(share, 'package.xml'))
         assert sorted(os.listdir(os.path.join(share, 'msg'))) == sorted(
             os.listdir(os.path.join(build.workspace, 'src', package, 'msg')))
+
+
+def test_firmware_imports_the_export_through_its_cmake_file(build, tmp_path):
+    build_dir = str(tmp_path / 'firmware')
+    run(['cmake', '-S', FIRMWARE_FIXTURE, '-B', build_dir, '-DMROS_MODE=import',
+         '-DMROS_EXPORT_CMAKE=%s' % os.path.join(build.export_dir, 'mros_export.cmake'),
+         '-DFIRMWARE_TYPES=mros_test/NestedTypes'], '/')
+    run(['cmake', '--build', build_dir], build_dir)
+    output = run([os.path.join(build_dir, 'firmware')], build_dir).stdout
+    assert 'md5=' in output and 'serialized=' in output
 
 
 def test_catkin_lint_is_clean_with_genmros_declared(tmp_path):

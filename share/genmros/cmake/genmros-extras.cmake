@@ -9,7 +9,8 @@
 # ${MROS_EXPORT_DIR}/include/<pkg>/<Type>.h, with the headers of every type
 # they contain (installed packages' too), and the .msg/.srv files and the
 # package.xml under ${MROS_EXPORT_DIR}/share/<pkg>/ (what mros_import_messages()
-# reads to write a firmware's aggregates).
+# reads to write a firmware's aggregates), and ${MROS_EXPORT_DIR}/mros_export.cmake
+# for a firmware to include().
 
 if(NOT GENMROS_BIN)
   message(FATAL_ERROR "genmros: the genmros program was not found; reinstall colcon-mros "
@@ -44,9 +45,15 @@ function(_genmros_check_export_dir ARG_DIR)
   file(TOUCH "${ARG_DIR}/COLCON_IGNORE")
 endfunction()
 
+# mros_generate.cmake, the firmware-side module, is installed beside this file.
+set(_GENMROS_CMAKE_DIR "${CMAKE_CURRENT_LIST_DIR}")
+
 if(MROS_EXPORT_DIR)
   get_filename_component(MROS_EXPORT_DIR "${MROS_EXPORT_DIR}" ABSOLUTE)
   _genmros_check_export_dir("${MROS_EXPORT_DIR}")
+  # What a firmware include()s, as colcon build --mros-export writes it;
+  # rewritten only when its text changes.
+  configure_file("${_GENMROS_CMAKE_DIR}/mros_export.cmake.in" "${MROS_EXPORT_DIR}/mros_export.cmake" @ONLY)
 endif()
 
 # The header names one .msg or .srv file produces, relative to its package dir.
