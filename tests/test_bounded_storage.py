@@ -1,14 +1,13 @@
 """Bounded storage (issue 9): strings and arrays inside the message, no heap,
 exact maximum sizes, and bounds that are never exceeded silently."""
 
-import glob
 import os
 import shutil
 import subprocess
 
 import pytest
 
-from conftest import REPO, TEST_WS, run_genmros
+from conftest import TEST_WS, run_genmros
 from test_mros_v1 import LANGUAGE_MODES, STRICT_FLAGS, TARGETS, _every_header_translation_unit
 
 DEBIAN_SET = ['sensor_msgs/Image', 'sensor_msgs/PointCloud2', 'sensor_msgs/JointState', 'nav_msgs/Odometry',
