@@ -1,12 +1,13 @@
 """The ``genmros`` command (also ``python3 -m colcon_mros``)."""
 
 import argparse
+import os
 import sys
 
 from colcon_mros import __version__
 from colcon_mros.defaults import DEFAULT_VARIABLE_SIZE_BUDGET, EXPORT_PARTS, STORAGE_KINDS
 from colcon_mros.errors import GenmrosError
-from colcon_mros.installed_files import MAKE_FRAGMENT, installed_file
+from colcon_mros.installed_files import CMAKE_CONFIG, MAKE_FRAGMENT, installed_file
 from colcon_mros.ros_environment import require_ros_python
 from colcon_mros.workspace import default_prefixes, parse_include_flags
 
@@ -27,6 +28,10 @@ Generate mROS message headers from ROS 1 .msg and .srv files.
   genmros make-fragment
       prints the path of genmros.mk, the fragment an mROS v1 app's Makefile
       includes to generate its headers.
+
+  genmros cmake-dir
+      prints the directory of genmrosConfig.cmake: -Dgenmros_DIR=... lets
+      find_package(genmros) work under a cross toolchain file.
 '''
 
 
@@ -103,6 +108,8 @@ def main(argv=None):
                   % (len(result.messages), len(result.services), options.output_dir))
         elif argv == ['make-fragment']:
             print(installed_file(MAKE_FRAGMENT))
+        elif argv == ['cmake-dir']:
+            print(os.path.dirname(installed_file(CMAKE_CONFIG)))
         else:
             options = _generator_parser().parse_args(argv)
             require_ros_python()

@@ -1,10 +1,11 @@
 """Where the files genmros installs beside its Python package are.
 
-pip installs the CMake module (mros_generate.cmake) and the make fragment
-(genmros.mk) under ``share/genmros/cmake/`` of whatever prefix the install
-used (/usr/local, ~/.local, a venv); the distribution's own record of its
-files says where, so no prefix is assumed. A source checkout has them in
-``cmake/``.
+pip installs the CMake package (genmrosConfig.cmake), the CMake module
+(mros_generate.cmake) and the make fragment (genmros.mk) under
+``share/genmros/cmake/`` of whatever prefix the install used (/usr/local,
+~/.local, a venv); the distribution's own record of its files says where,
+so no prefix is assumed. A source checkout has the module and the fragment
+in ``cmake/``.
 """
 
 import os
@@ -15,6 +16,8 @@ from colcon_mros.errors import GenmrosError
 DISTRIBUTION = 'colcon-mros'
 MAKE_FRAGMENT = 'genmros.mk'
 CMAKE_MODULE = 'mros_generate.cmake'
+# find_package(genmros) reads it; its directory is what genmros_DIR names.
+CMAKE_CONFIG = 'genmrosConfig.cmake'
 
 
 def _checkout_file(name):

@@ -215,3 +215,38 @@ def test_import_from_a_catkin_export_of_types_that_nest_installed_ones(firmware,
     firmware.configure(MROS_MODE='import', MROS_EXPORT_DIR=catkin_export, FIRMWARE_TYPES='mros_test/NestedTypes')
     firmware.build()
     assert firmware.output()['md5'] == genmsg_md5('mros_test/NestedTypes', search_path_of(TEST_WS_SRC))
+
+
+CROSS_TOOLCHAIN = '''\
+set(CMAKE_SYSTEM_NAME Generic)
+set(CMAKE_CXX_COMPILER arm-none-eabi-g++)
+set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
+set(CMAKE_FIND_ROOT_PATH "${CMAKE_CURRENT_LIST_DIR}/sysroot")
+set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
+set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
+set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)
+set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY)
+'''
+
+
+def test_find_package_under_a_cross_toolchain_file(tmp_path):
+    # A toolchain file that confines packages to its sysroot hides the host's
+    # genmros; genmros_DIR=$(genmros cmake-dir) names it.
+    (tmp_path / 'sysroot').mkdir()
+    toolchain = tmp_path / 'toolchain.cmake'
+    toolchain.write_text(CROSS_TOOLCHAIN)
+    project = tmp_path / 'project'
+    project.mkdir()
+    (project / 'CMakeLists.txt').write_text(
+        'cmake_minimum_required(VERSION 3.13)\nproject(firmware CXX)\nfind_package(genmros REQUIRED)\n'
+        'add_library(firmware STATIC firmware.cpp)\n'
+        'mros_generate_messages(TARGET firmware TYPES mros_test/PersonalData PACKAGE_PATHS %s)\n'
+        % TEST_WS_SRC)
+    (project / 'firmware.cpp').write_text('#include <message_headers.h>\n'
+                                          'int size() { return mros_test::PersonalData().dataSize(); }\n')
+    configure = ['cmake', '-S', str(project), '-DCMAKE_TOOLCHAIN_FILE=%s' % toolchain]
+    hidden = run(configure + ['-B', str(tmp_path / 'plain')], str(tmp_path), check=False)
+    assert hidden.returncode != 0 and 'genmrosConfig.cmake' in hidden.stdout
+    cmake_dir = run(['genmros', 'cmake-dir'], str(tmp_path)).stdout.strip()
+    run(configure + ['-B', str(tmp_path / 'named'), '-Dgenmros_DIR=%s' % cmake_dir], str(tmp_path))
+    run(['cmake', '--build', str(tmp_path / 'named')], str(tmp_path))
