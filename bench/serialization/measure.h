@@ -14,11 +14,13 @@
 enum Operation { kEncode, kDecode };
 
 // What one side of the benchmark provides (one side per executable, so every
-// side starts with a fresh allocator): the wire size of an instance and the
-// median nanoseconds per call of an operation on it.
+// side starts with a fresh allocator): the wire size of an instance, the
+// median nanoseconds per call of an operation on it, and a run of exactly
+// `calls` calls (under callgrind, two runs give the instructions per call).
 namespace bench_side {
 size_t wireSize(int instance);
 double nanoseconds(int instance, Operation operation, double seconds);
+void repeat(int instance, Operation operation, uint64_t calls);
 }  // namespace bench_side
 
 inline void keep(const void* pointer) { asm volatile("" : : "g"(pointer) : "memory"); }
@@ -44,5 +46,18 @@ template <class Body> double medianNanoseconds(Body body, double seconds) {
   std::nth_element(per_call.begin(), per_call.begin() + kBatches / 2, per_call.end());
   return per_call[kBatches / 2];
 }
+
+// The two ways a side measures a body (message_side.inc builds the bodies).
+struct MedianTime {
+  double seconds;
+  template <class Body> double operator()(Body body) const { return medianNanoseconds(body, seconds); }
+};
+struct ExactCalls {
+  uint64_t calls;
+  template <class Body> double operator()(Body body) const {
+    for (uint64_t i = 0; i < calls; ++i) body();
+    return 0;
+  }
+};
 
 #endif  // GENMROS_BENCH_MEASURE_H

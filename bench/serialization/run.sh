@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Serialization benchmark: genmros' headers against roscpp's and against a
-# bare memcpy, -O2, each measurement in a process of its own (table.py).
+# bare memcpy, -O2, each measurement in a process of its own, in several code
+# and heap layouts (table.py).
 # Also reports the code size each side compiles to. Run by hand:
 #   bench/serialization/run.sh [--rounds N] [--seconds S]
 set -euo pipefail
@@ -23,10 +24,15 @@ g++ "${flags[@]}" -Werror -DBENCH_BARE_MEMCPY -c -o "$work/memcpy_side.o" "$here
 PYTHONPATH="$here/../.." /usr/bin/python3 -m colcon_mros export --underlay /usr -o "$work/bounded" "${types[@]}" \
   --storage bounded --options "$here/bounds.options" >/dev/null
 g++ "${flags[@]}" -Werror -c -o "$work/bounded_side.o" "$here/mros_side.cpp" -I"$work/bounded" -I"$here"
-g++ -o "$work/bench_roscpp" "$work/main.o" "$work/roscpp_side.o" "${libraries[@]}"
-g++ -o "$work/bench_genmros" "$work/main.o" "$work/mros_side.o"
-g++ -o "$work/bench_memcpy" "$work/main.o" "$work/memcpy_side.o"
-g++ -o "$work/bench_bounded" "$work/main.o" "$work/bounded_side.o"
+# Every side in four code layouts (table.py: layout N is bench_SIDE.N).
+for layout in 0 1 2 3; do
+  g++ -O2 -DBENCH_CODE_PAD=$((16 * (layout + 1))) -c -o "$work/code_pad.o" "$here/code_pad.cpp"
+  g++ -o "$work/bench_roscpp.$layout" "$work/main.o" "$work/code_pad.o" "$work/roscpp_side.o" "${libraries[@]}"
+  for side in mros memcpy bounded; do
+    executable="bench_$side.$layout"
+    g++ -o "$work/${executable/mros/genmros}" "$work/main.o" "$work/code_pad.o" "$work/${side}_side.o"
+  done
+done
 /usr/bin/python3 "$here/table.py" "$work" "$@"
 echo
 echo "code size (text bytes) of the four types' encode/decode, -O2:"
