@@ -7,6 +7,7 @@ import sys
 from colcon_mros import __version__
 from colcon_mros.defaults import DEFAULT_VARIABLE_SIZE_BUDGET, EXPORT_PARTS, STORAGE_KINDS
 from colcon_mros.errors import GenmrosError
+from colcon_mros.export_claims import ExportClaims
 from colcon_mros.installed_files import CMAKE_CONFIG, MAKE_FRAGMENT, installed_file
 from colcon_mros.ros_environment import require_ros_python
 from colcon_mros.workspace import default_prefixes, parse_include_flags
@@ -32,6 +33,11 @@ Generate mROS message headers from ROS 1 .msg and .srv files.
   genmros cmake-dir
       prints the directory of genmrosConfig.cmake: -Dgenmros_DIR=... lets
       find_package(genmros) work under a cross toolchain file.
+
+  genmros prune-export DIR
+      removes from a catkin export dir (MROS_EXPORT_DIR) the headers and
+      definitions no generated type needs any more (catkin runs it when a
+      package loses a .msg or .srv file).
 '''
 
 
@@ -110,6 +116,12 @@ def main(argv=None):
             print(installed_file(MAKE_FRAGMENT))
         elif argv == ['cmake-dir']:
             print(os.path.dirname(installed_file(CMAKE_CONFIG)))
+        elif argv[:1] == ['prune-export'] and len(argv) == 2:
+            if not os.path.isdir(argv[1]):
+                raise GenmrosError('export dir is not a directory', argv[1])
+            with ExportClaims(argv[1]) as claims:
+                for relative in claims.prune():
+                    print('genmros: removed %s' % os.path.join(argv[1], relative))
         else:
             options = _generator_parser().parse_args(argv)
             require_ros_python()

@@ -8,12 +8,14 @@ With an export dir (catkin's MROS_EXPORT_DIR), the same run also fills that
 dir for a firmware: ``include/<pkg>/<Type>.h`` for the file's types and every
 type they contain, from whichever package, and ``share/<pkg>/`` with those
 types' definitions and package.xml, which is what a firmware build reads to
-write its aggregates.
+write its aggregates. Files of the export dir that no definition needs any
+more leave it (export_claims).
 """
 
 import os
 
 from colcon_mros.errors import GenmrosError
+from colcon_mros.export_claims import ExportClaims, claim_key
 from colcon_mros.model import ModelBuilder
 from colcon_mros.output import write_files
 from colcon_mros.parse import SpecLoader
@@ -71,5 +73,8 @@ def generate_file(path, package, output_dir, search_path, template_dir=None, exp
     include_root = os.path.dirname(os.path.abspath(output_dir))
     written = write_files(output_dir, package_files) + write_files(include_root, support)
     if export_dir:
-        written += write_files(export_dir, export_files)
+        with ExportClaims(export_dir) as claims:
+            written += write_files(export_dir, export_files)
+            claims.record(claim_key(package, path), export_files)
+            claims.prune()
     return written

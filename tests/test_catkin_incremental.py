@@ -1,7 +1,8 @@
 """Rebuilds with genmros in catkin: nothing runs when nothing changed, a
 touched .msg regenerates its type and the types that include it, an edited
 .msg reaches the devel space and the export dir, a removed export dir comes
-back, a deleted .msg loses its headers in both.
+back, a deleted .msg loses its headers in both, and a type that no definition
+contains any more leaves the export dir.
 
 The steps share one catkin_make workspace and run in file order.
 """
@@ -114,3 +115,48 @@ def test_deleted_msg_loses_its_headers_and_definition(workspace):
     exported_msgs = os.listdir(os.path.join(workspace.export_dir, 'share', 'mros_test', 'msg'))
     assert 'Constants.msg' not in exported_msgs
     assert 'BuiltinTypes.msg' in exported_msgs
+
+
+def _exported(workspace):
+    """The export dir's headers and definitions, relative to it."""
+    found = set()
+    for part in ('include', 'share'):
+        for directory, _, names in os.walk(os.path.join(workspace.export_dir, part)):
+            found.update(os.path.relpath(os.path.join(directory, name), workspace.export_dir)
+                         for name in names)
+    return found
+
+
+COLOR_RGBA = {os.path.join('include', 'std_msgs', 'ColorRGBA.h'),
+              os.path.join('share', 'std_msgs', 'msg', 'ColorRGBA.msg')}
+STILL_NEEDED = {os.path.join('include', 'std_msgs', 'Header.h'),
+                os.path.join('share', 'std_msgs', 'msg', 'Header.msg'),
+                os.path.join('share', 'std_msgs', 'package.xml')}
+
+
+def test_type_no_longer_contained_leaves_the_export_dir(workspace):
+    # Only Labeled contains std_msgs/ColorRGBA; NestedTypes keeps std_msgs/Header.
+    assert COLOR_RGBA | STILL_NEEDED <= _exported(workspace)
+    workspace.edit(os.path.join('mros_test_base', 'msg', 'Labeled.msg'),
+                   'std_msgs/ColorRGBA color', 'uint32 color')
+    workspace.build()
+    exported = _exported(workspace)
+    assert not COLOR_RGBA & exported
+    assert STILL_NEEDED <= exported
+    assert os.path.join('include', 'mros_test', 'ArrayTypes.h') in exported
+
+
+def test_type_of_a_deleted_msg_leaves_the_export_dir(workspace):
+    with open(workspace.source('mros_test', 'msg', 'Painted.msg'), 'w') as stream:
+        stream.write('std_msgs/ColorRGBA paint\n')
+    workspace.edit(os.path.join('mros_test', 'CMakeLists.txt'), '  Empty.msg\n', '  Empty.msg\n  Painted.msg\n')
+    workspace.build()
+    assert COLOR_RGBA <= _exported(workspace)
+    os.remove(workspace.source('mros_test', 'msg', 'Painted.msg'))
+    workspace.edit(os.path.join('mros_test', 'CMakeLists.txt'), '  Painted.msg\n', '')
+    log = workspace.build()
+    exported = _exported(workspace)
+    assert not COLOR_RGBA & exported
+    assert os.path.join('include', 'mros_test', 'Painted.h') not in exported
+    assert STILL_NEEDED <= exported
+    assert 'genmros: removed %s' % os.path.join(workspace.export_dir, 'include', 'std_msgs', 'ColorRGBA.h') in log
