@@ -34,6 +34,11 @@ as_root /usr/bin/python3 -m pip install "${pip_flags[@]}" "$source_copy"
 # come from Debian) or in a catkin workspace; pip cannot write to /etc, so the
 # marker that pip installed with the CMake files is linked there. Remove the
 # link to unregister genmros (or set ROS_LANG_DISABLE=genmros for one build).
-data_prefix=$(/usr/bin/python3 -c 'import sysconfig; print(sysconfig.get_path("data"))')
+# The installed package says where pip put the marker (sysconfig's data path
+# is not it where pip installs under /usr/local while Python's prefix is
+# /usr, as on Ubuntu 20.04). Run from / so the source tree is not imported.
+cmake_dir=$(cd / && /usr/bin/python3 -m colcon_mros cmake-dir)
+marker="$(dirname "$cmake_dir")/genmsg/genmros"
+[ -f "$marker" ] || { echo "setup.sh: the installed marker $marker is missing" >&2; exit 1; }
 as_root mkdir -p /etc/ros/genmsg
-as_root ln -sfn "$data_prefix/share/genmros/genmsg/genmros" /etc/ros/genmsg/genmros
+as_root ln -sfn "$marker" /etc/ros/genmsg/genmros

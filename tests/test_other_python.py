@@ -1,0 +1,48 @@
+"""Another python3 first on PATH (a venv, pyenv, conda): the README's fix works.
+
+catkin's CMake takes the first python3 on PATH, which cannot import catkin_pkg;
+-DPYTHON_EXECUTABLE=/usr/bin/python3 gives it Debian's, and genmros then runs.
+"""
+
+import os
+import shutil
+import subprocess
+import sys
+
+import pytest
+
+from fixtures.build_integration.tools import TEST_WS_SRC, run, user_environment
+
+FIX = '-DPYTHON_EXECUTABLE=/usr/bin/python3'
+HEADER = os.path.join('share', 'genmros', 'include', 'mros_test_base', 'Vector3i.h')
+
+
+@pytest.fixture(scope='module')
+def environment(tmp_path_factory):
+    """The user's environment with a venv's python3 (no system site packages) first on PATH."""
+    venv = str(tmp_path_factory.mktemp('other_python') / 'venv')
+    subprocess.run([sys.executable, '-m', 'venv', '--without-pip', venv], check=True)
+    env = user_environment()
+    env['PATH'] = os.path.join(venv, 'bin') + os.pathsep + env['PATH']
+    return env
+
+
+def _workspace(root):
+    shutil.copytree(os.path.join(TEST_WS_SRC, 'mros_test_base'),
+                    os.path.join(root, 'src', 'mros_test_base'))
+    return root
+
+
+def test_catkin_make_needs_the_fix_and_works_with_it(environment, tmp_path):
+    workspace = _workspace(str(tmp_path))
+    failed = run(['catkin_make'], workspace, environment, check=False)
+    assert failed.returncode != 0 and "No module named 'catkin_pkg'" in failed.stdout
+    shutil.rmtree(os.path.join(workspace, 'build'))
+    run(['catkin_make', FIX], workspace, environment)
+    assert os.path.isfile(os.path.join(workspace, 'devel', HEADER))
+
+
+def test_colcon_build_works_with_the_fix(environment, tmp_path):
+    workspace = _workspace(str(tmp_path))
+    run(['colcon', 'build', '--cmake-args', FIX], workspace, environment)
+    assert os.path.isfile(os.path.join(workspace, 'install', 'mros_test_base', HEADER))
