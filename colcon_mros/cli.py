@@ -10,7 +10,7 @@ from colcon_mros.errors import GenmrosError
 from colcon_mros.export_claims import ExportClaims
 from colcon_mros.installed_files import CMAKE_CONFIG, MAKE_FRAGMENT, installed_file
 from colcon_mros.ros_environment import require_ros_python
-from colcon_mros.workspace import default_prefixes, parse_include_flags
+from colcon_mros.workspace import parse_include_flags
 
 DESCRIPTION = '''\
 Generate mROS message headers from ROS 1 .msg and .srv files.
@@ -74,8 +74,9 @@ def _export_parser():
     parser.add_argument('-o', dest='output_dir', required=True, metavar='DIR',
                         help='include root to write to')
     parser.add_argument('--underlay', dest='prefixes', action='append', metavar='PREFIX',
-                        help='installed prefix holding share/<pkg>/msg (repeatable; default: '
-                             '$CMAKE_PREFIX_PATH, /usr/local, /usr)')
+                        help='installed prefix holding share/<pkg>/msg, instead of the ROS '
+                             "environment (repeatable; default: rospkg's packages on "
+                             'ROS_PACKAGE_PATH, then the spaces on CMAKE_PREFIX_PATH)')
     parser.add_argument('--variable-size-budget', type=int, metavar='BYTES',
                         default=DEFAULT_VARIABLE_SIZE_BUDGET,
                         help='PUB_MSG_MAX_SIZE share of a type without an upper size '
@@ -105,7 +106,7 @@ def main(argv=None):
             options = _export_parser().parse_args(argv[1:])
             require_ros_python()
             from colcon_mros.export import export  # needs genmsg and empy
-            result = export(options.output_dir, options.prefixes or default_prefixes(),
+            result = export(options.output_dir, options.prefixes,
                             options.workspaces, options.packages, options.types,
                             options.variable_size_budget, options.template_dir,
                             options.only or 'all', options.depfile, options.storage,

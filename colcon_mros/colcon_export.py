@@ -31,7 +31,7 @@ from colcon_mros.errors import GenmrosError
 from colcon_mros.installed_files import CMAKE_MODULE, installed_file
 from colcon_mros.output import check_writable, write_files
 from colcon_mros.ros_environment import require_ros_python
-from colcon_mros.workspace import default_prefixes, installed_packages, workspace_packages
+from colcon_mros.workspace import environment_packages, workspace_packages
 
 CMAKE_FILE = 'mros_export.cmake'
 IGNORE_MARKER = 'COLCON_IGNORE'
@@ -97,8 +97,8 @@ def export_workspace(args, export_dir):
         raise GenmrosError('--mros-export needs the packages under one base path, not %s'
                            % ' '.join(args.base_paths), export_dir)
     workspace = os.path.abspath(args.base_paths[0])
-    prefixes = default_prefixes()
-    packages = installed_packages(prefixes)
+    require_ros_python()
+    packages = environment_packages()
     packages.update(workspace_packages(workspace))
 
     names = set()
@@ -111,9 +111,8 @@ def export_workspace(args, export_dir):
         raise GenmrosError('the built packages define no messages or services; nothing to '
                            'export', export_dir)
 
-    require_ros_python()
     from colcon_mros.export import export  # needs genmsg: imported when the flag is used
-    result = export(os.path.join(export_dir, 'include'), prefixes, [workspace],
+    result = export(os.path.join(export_dir, 'include'), None, [workspace],
                     package_names=sorted(names), only='headers')
     exported = {message.package for message in result.messages}
     exported.update(service.package for service in result.services)

@@ -23,8 +23,8 @@ from colcon_mros.parse import SpecLoader
 from colcon_mros.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
 from colcon_mros.render import Renderer
 from colcon_mros.storage import storage_for
-from colcon_mros.workspace import (installed_packages, msg_search_path, type_name_of,
-                                   workspace_packages)
+from colcon_mros.workspace import (environment_packages, installed_packages, msg_search_path,
+                                   type_name_of, workspace_packages)
 
 
 class ExportResult:
@@ -100,7 +100,8 @@ def _depfile_text(target, definitions):
 def export(output_dir, prefixes, workspaces=(), package_names=(), type_names=(),
            variable_budget=DEFAULT_VARIABLE_SIZE_BUDGET, template_dir=None, only='all',
            depfile=None, storage_kind='heap', option_files=()):
-    packages = installed_packages(prefixes)
+    """Export the selected types; prefixes=None searches the ROS environment."""
+    packages = environment_packages() if prefixes is None else installed_packages(prefixes)
     local = {}
     for workspace in workspaces:
         local.update(workspace_packages(workspace))

@@ -1,7 +1,8 @@
 """What genmros needs of the ROS installation, checked with a clear message.
 
-genmsg (the parser) and empy 3 (the templates) come with ROS: Debian's
-python3-genmsg and python3-empy, or a sourced ROS setup (Noetic's
+genmsg (the parser), empy 3 (the templates) and rospkg (where the ROS
+environment's packages are) come with ROS: Debian's python3-genmsg,
+python3-empy and python3-rospkg, or a sourced ROS setup (Noetic's
 /opt/ros/noetic/setup.bash puts genmsg on PYTHONPATH). Without them the
 modules that generate cannot even be imported; this says so in one line
 instead of a traceback.
@@ -16,6 +17,8 @@ REQUIRED_MODULES = (
     ('genmsg', 'genmsg (Debian: apt-get install python3-genmsg; ROS Noetic: source '
                '/opt/ros/noetic/setup.bash)'),
     ('em', 'empy 3 (Debian: apt-get install python3-empy; Ubuntu + Noetic: python3-empy)'),
+    ('rospkg', 'rospkg (Debian: apt-get install python3-rospkg; ROS Noetic: source '
+               '/opt/ros/noetic/setup.bash)'),
 )
 
 

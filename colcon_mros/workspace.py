@@ -1,17 +1,18 @@
 """Find ROS packages and the directories that hold their .msg and .srv files.
 
-Two places hold packages: a workspace's source tree (found with catkin_pkg,
-as catkin and colcon find it) and installed prefixes (``<prefix>/share/<pkg>``,
-as Debian installs std_msgs to ``/usr/share/std_msgs``). A workspace package
-hides an installed one of the same name.
+Three places hold packages: a workspace's source tree (found with catkin_pkg,
+as catkin and colcon find it), installed prefixes given by the user
+(``<prefix>/share/<pkg>``, install and devel spaces), and the ROS
+environment: what rospkg finds on ROS_PACKAGE_PATH (where nothing is
+sourced, the distribution's default: Debian's /usr/share), then the spaces
+on CMAKE_PREFIX_PATH. A workspace package hides an installed one of the
+same name.
 """
 
 import os
 import re
 
 from colcon_mros.errors import GenmrosError
-
-DEFAULT_PREFIXES = ('/usr/local', '/usr')
 
 
 class Package:
@@ -51,11 +52,26 @@ def _files(directories, extension):
     return [found[name] for name in sorted(found)]
 
 
-def default_prefixes():
-    """Installed prefixes to search: CMAKE_PREFIX_PATH, then /usr/local and /usr."""
+def _package(name, root):
+    return Package(name, [os.path.join(root, 'msg')], [os.path.join(root, 'srv')])
+
+
+def environment_packages():
+    """{name: Package} for the packages of the ROS environment: rospkg's
+    (ROS_PACKAGE_PATH, as rospack sees it), then the install and devel
+    spaces on CMAKE_PREFIX_PATH that rospkg does not see."""
+    import rospkg  # a ROS dependency, checked by ros_environment
+
+    ros_packages = rospkg.RosPack(rospkg.get_ros_paths())
+    packages = {}
+    for name in sorted(ros_packages.list()):
+        package = _package(name, ros_packages.get_path(name))
+        if package.msg_dirs or package.srv_dirs:
+            packages[name] = package
     prefixes = [p for p in os.environ.get('CMAKE_PREFIX_PATH', '').split(os.pathsep) if p]
-    prefixes.extend(DEFAULT_PREFIXES)
-    return list(dict.fromkeys(prefixes))
+    for name, package in installed_packages(prefixes).items():
+        packages.setdefault(name, package)
+    return packages
 
 
 def workspace_packages(workspace):
@@ -76,8 +92,7 @@ def workspace_packages(workspace):
     packages = {}
     for relative, manifest in found.items():
         root = os.path.join(source, relative)
-        packages[manifest.name] = Package(
-            manifest.name, [os.path.join(root, 'msg')], [os.path.join(root, 'srv')])
+        packages[manifest.name] = _package(manifest.name, root)
     return packages
 
 
