@@ -2,9 +2,9 @@
 
 pip installs the CMake package (genmrosConfig.cmake), the CMake module
 (mros_generate.cmake) and the make fragment (genmros.mk) under
-``share/genmros/cmake/`` of whatever prefix the install used (/usr/local,
-~/.local, a venv); the distribution's own record of its files says where,
-so no prefix is assumed. A source checkout has the module and the fragment
+``share/genmros/cmake/`` of whatever prefix the install used (/usr for
+setup.sh's Debian package, /usr/local, ~/.local, a venv); the
+distribution's own record of its files says where, so no prefix is assumed. A source checkout has the module and the fragment
 in ``cmake/``.
 """
 

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Installs what genmros needs on Debian 12 and installs the project itself
-# into Debian's /usr/bin/python3, the interpreter that can import genmsg and
-# that catkin and colcon run. Idempotent; needs root (or sudo).
+# Installs what genmros needs on Debian 12, then the project itself as the
+# Debian package colcon-mros, built here from this tree: dpkg then owns every
+# file of it, the catkin generator marker /etc/ros/genmsg/genmros included,
+# and `apt-get remove colcon-mros` (scripts/uninstall.sh) takes all of it
+# away. Idempotent; needs root (or sudo).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
@@ -14,31 +16,53 @@ if [ -n "$missing" ] || ! dpkg-query -W $packages >/dev/null 2>&1; then
   as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $packages
 fi
 
-# --no-deps: every dependency comes from Debian (genmsg is not on PyPI, and
-# empy 4 from PyPI would break catkin). --break-system-packages: the project
-# must live in Debian's interpreter for catkin and colcon to find it (pip
-# before 23 has no such flag and needs none). Built from a copy, so the
-# source tree gets no build/ or *.egg-info.
-pip_flags=(--quiet --no-deps --no-build-isolation --force-reinstall)
+# An install made by an earlier setup.sh (pip into /usr/local, a marker link).
+"$here/scripts/uninstall.sh" --legacy-only
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+# Built from a copy, so the source tree gets no build/ or *.egg-info.
+mkdir "$work/source"
+tar -C "$here" --exclude=.git --exclude=build --exclude='*.egg-info' -cf - . | tar -C "$work/source" -xf -
+
+# The files, laid out by pip as Debian lays out its Python packages
+# (/usr/lib/python3/dist-packages, /usr/bin, /usr/share), into a staging
+# root. --no-deps: every dependency comes from Debian (genmsg is not on
+# PyPI, and empy 4 from PyPI would break catkin).
+stage="$work/stage"
+pip_flags=(--quiet --no-deps --no-build-isolation --no-compile --root "$stage" --prefix /usr)
 pip_help=$(/usr/bin/python3 -m pip install --help)
 for flag in --break-system-packages --root-user-action=ignore; do
   if grep -q -- "${flag%%=*}" <<<"$pip_help"; then pip_flags+=("$flag"); fi
 done
-source_copy=$(mktemp -d)
-trap 'rm -rf "$source_copy"' EXIT
-tar -C "$here" --exclude=.git --exclude=build --exclude='*.egg-info' -cf - . | tar -C "$source_copy" -xf -
-as_root /usr/bin/python3 -m pip install "${pip_flags[@]}" "$source_copy"
+DEB_PYTHON_INSTALL_LAYOUT=deb_system /usr/bin/python3 -m pip install "${pip_flags[@]}" "$work/source"
+if [ ! -d "$stage/usr/lib/python3/dist-packages/colcon_mros" ]; then
+  echo "setup.sh: pip did not lay out the package as Debian does (needs Debian 12's pip)" >&2
+  exit 1
+fi
+# genmsg runs every generator named by a file in /etc/ros/genmsg (gencpp and
+# genpy come from Debian the same way).
+install -D -m 644 "$stage/usr/share/genmros/genmsg/genmros" "$stage/etc/ros/genmsg/genmros"
 
-# --- catkin generator registration (issue 3) ---------------------------------
-# genmsg runs every generator named by a file in /etc/ros/genmsg (gencpp, genpy
-# come from Debian) or in a catkin workspace; pip cannot write to /etc, so the
-# marker that pip installed with the CMake files is linked there. Remove the
-# link to unregister genmros (or set ROS_LANG_DISABLE=genmros for one build).
-# The installed package says where pip put the marker (sysconfig's data path
-# is not it where pip installs under /usr/local while Python's prefix is
-# /usr, as on Ubuntu 20.04). Run from / so the source tree is not imported.
-cmake_dir=$(cd / && /usr/bin/python3 -m colcon_mros cmake-dir)
-marker="$(dirname "$cmake_dir")/genmsg/genmros"
-[ -f "$marker" ] || { echo "setup.sh: the installed marker $marker is missing" >&2; exit 1; }
-as_root mkdir -p /etc/ros/genmsg
-as_root ln -sfn "$marker" /etc/ros/genmsg/genmros
+version=$(cd "$work/source" && /usr/bin/python3 -c 'import colcon_mros; print(colcon_mros.__version__)')
+mkdir "$stage/DEBIAN"
+cat >"$stage/DEBIAN/control" <<CONTROL
+Package: colcon-mros
+Version: $version
+Architecture: all
+Maintainer: colcon-mros developers <dev@colcon-mros.invalid>
+Depends: python3, python3-genmsg, python3-empy, python3-rospkg, python3-catkin-pkg, python3-colcon-core
+Installed-Size: $(du -sk "$stage/usr" | cut -f1)
+Section: devel
+Priority: optional
+Description: mROS message headers from ROS 1 .msg files
+ genmros, its catkin message generator, colcon extension, firmware CMake
+ module and make fragment. Built locally by colcon-mros' scripts/setup.sh.
+CONTROL
+# Byte code is compiled after install and removed before removal, so dpkg
+# leaves no __pycache__ behind.
+printf '#!/bin/sh\nset -e\npy3compile -p colcon-mros\n' >"$stage/DEBIAN/postinst"
+printf '#!/bin/sh\nset -e\npy3clean -p colcon-mros\n' >"$stage/DEBIAN/prerm"
+chmod 755 "$stage/DEBIAN/postinst" "$stage/DEBIAN/prerm"
+dpkg-deb --build --root-owner-group "$stage" "$work/colcon-mros.deb" >/dev/null
+as_root dpkg -i "$work/colcon-mros.deb" >/dev/null

@@ -1,20 +1,27 @@
 #!/usr/bin/env bash
-# Removes what scripts/setup.sh installed of colcon-mros (not the Debian
-# packages, which other software may use): the catkin generator marker in
-# /etc/ros/genmsg, then the Python package with its genmros command, CMake
-# module and make fragment. catkin builds go on without genmros afterwards.
+# Removes colcon-mros (not the Debian packages it needs, which other software
+# may use): the Debian package scripts/setup.sh built and installed, with the
+# genmros command, the catkin generator marker, the CMake module and make
+# fragment. catkin and colcon builds go on without genmros afterwards.
+# --legacy-only removes only what an earlier setup.sh installed with pip (a
+# copy in /usr/local and a link in /etc/ros/genmsg); both are always removed.
 set -euo pipefail
 as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
 
 marker=/etc/ros/genmsg/genmros
-# Only the link setup.sh made: a marker some other install owns stays.
+# Only the link an earlier setup.sh made: a marker some other install owns stays.
 if [ -L "$marker" ] && [[ "$(readlink "$marker")" == */share/genmros/genmsg/genmros ]]; then
   as_root rm -f "$marker"
 fi
-pip_flags=(--yes)
-if /usr/bin/python3 -m pip uninstall --help | grep -q -- --break-system-packages; then
-  pip_flags+=(--break-system-packages)
+location=$(/usr/bin/python3 -m pip show colcon-mros 2>/dev/null | sed -n 's/^Location: //p' || true)
+if [[ "$location" == /usr/local/* ]]; then
+  pip_flags=(--quiet --yes)
+  if /usr/bin/python3 -m pip uninstall --help | grep -q -- --break-system-packages; then
+    pip_flags+=(--break-system-packages)
+  fi
+  as_root /usr/bin/python3 -m pip uninstall "${pip_flags[@]}" colcon-mros
 fi
-if /usr/bin/python3 -m pip show colcon-mros >/dev/null 2>&1; then
-  as_root /usr/bin/python3 -m pip uninstall --quiet "${pip_flags[@]}" colcon-mros
+
+if [ "${1:-}" != --legacy-only ] && dpkg-query -W -f='${Status}' colcon-mros 2>/dev/null | grep -q installed; then
+  as_root dpkg --purge colcon-mros >/dev/null
 fi

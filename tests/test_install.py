@@ -1,8 +1,9 @@
-"""Installing and uninstalling colcon-mros (issue 8): after
-scripts/uninstall.sh nothing of genmros is left where catkin looks, and an
-ordinary message workspace still builds with catkin_make and colcon;
-scripts/setup.sh puts it back and leaves the source tree as it was. The
-install is restored even when a check fails."""
+"""Installing and uninstalling colcon-mros (issue 8): scripts/setup.sh
+installs it as the Debian package colcon-mros, so dpkg owns every file of it,
+the catkin generator marker included; after scripts/uninstall.sh nothing of
+genmros is left, and an ordinary message workspace still builds with
+catkin_make and colcon; scripts/setup.sh puts it back and leaves the source
+tree as it was. The install is restored even when a check fails."""
 
 import os
 import shutil
@@ -23,6 +24,11 @@ def _ignored_files():
     return _run(['git', 'status', '--porcelain', '--ignored', '--untracked-files=all'], REPO).stdout
 
 
+def _package_files():
+    """The files dpkg lists for colcon-mros."""
+    return _run(['dpkg', '-L', 'colcon-mros'], REPO).stdout.split()
+
+
 def _ordinary_workspace(root):
     source = root / 'src'
     shutil.copytree(os.path.join(TEST_WS, 'src', 'mros_test_base'), str(source / 'mros_test_base'))
@@ -33,11 +39,16 @@ def test_uninstall_leaves_catkin_and_colcon_working_and_setup_reinstalls(tmp_pat
     environment = dict(os.environ, PATH='/usr/bin:/bin:/usr/sbin:/sbin')
     before = _ignored_files()
     try:
+        installed = _package_files()
         _run([os.path.join(REPO, 'scripts', 'uninstall.sh')], REPO)
         assert not os.path.lexists(MARKER)
         assert shutil.which('genmros', path=environment['PATH']) is None
         assert subprocess.run(['/usr/bin/python3', '-m', 'pip', 'show', 'colcon-mros'],
                               capture_output=True).returncode != 0
+        left = [path for path in installed if os.path.lexists(path) and not os.path.isdir(path)]
+        assert left == []
+        for directory in ('/usr/share/genmros', '/usr/lib/python3/dist-packages/colcon_mros'):
+            assert not os.path.exists(directory)  # __pycache__ included
 
         catkin = _ordinary_workspace(tmp_path / 'catkin_ws')
         _run(['catkin_make', '-C', catkin], catkin, env=environment)
@@ -50,6 +61,7 @@ def test_uninstall_leaves_catkin_and_colcon_working_and_setup_reinstalls(tmp_pat
                                            'Vector3i.h'))
     finally:
         _run([os.path.join(REPO, 'scripts', 'setup.sh')], REPO)
-    assert os.path.islink(MARKER) and os.path.isfile(os.path.realpath(MARKER))
-    assert shutil.which('genmros', path=environment['PATH'] + ':/usr/local/bin')
+    assert _run(['dpkg', '-S', MARKER], REPO).stdout == 'colcon-mros: %s\n' % MARKER
+    assert _run(['dpkg', '-S', shutil.which('genmros', path=environment['PATH'])], REPO).stdout.startswith(
+        'colcon-mros: ')
     assert _ignored_files() == before  # no build/ or *.egg-info in the source tree
