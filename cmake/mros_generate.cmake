@@ -10,8 +10,9 @@
 #     Generate the headers at build time from .msg files. Each PACKAGE_PATHS
 #     entry is an installed prefix (dir/share/<pkg>/msg, as ROS installs them
 #     and as an export dir holds them) or one source tree of packages (found
-#     by their package.xml). Without PACKAGE_PATHS: $CMAKE_PREFIX_PATH,
-#     /usr/local and /usr.
+#     by their package.xml). Without PACKAGE_PATHS, or with a source tree
+#     only: the ROS environment, as `genmros export` searches it (rospkg on
+#     ROS_PACKAGE_PATH, then CMAKE_PREFIX_PATH).
 #
 # Both write the per-firmware aggregates for exactly the listed types
 # (message_headers.h, message_class_specialization.h, msg_max_size.h, so
@@ -117,13 +118,11 @@ function(mros_generate_messages)
   endif()
 
   set(genmros_args "")
-  set(prefix_globs "")
   set(workspace "")
   foreach(path ${ARG_PACKAGE_PATHS})
     get_filename_component(path "${path}" ABSOLUTE)
     if(IS_DIRECTORY "${path}/share")
       list(APPEND genmros_args --underlay "${path}")
-      list(APPEND prefix_globs "${path}/share/*/msg/*.msg" "${path}/share/*/srv/*.srv")
     elseif(NOT IS_DIRECTORY "${path}")
       message(FATAL_ERROR "mros_generate_messages(): PACKAGE_PATHS entry '${path}' is not a directory")
     elseif(workspace)
@@ -134,13 +133,6 @@ function(mros_generate_messages)
       list(APPEND genmros_args --workspace "${path}")
     endif()
   endforeach()
-  if(NOT ARG_PACKAGE_PATHS)
-    # genmros' own default search path; the .msg files below are the ones it reads.
-    string(REPLACE ":" ";" prefixes "$ENV{CMAKE_PREFIX_PATH}")
-    foreach(prefix ${prefixes} /usr/local /usr)
-      list(APPEND prefix_globs "${prefix}/share/*/msg/*.msg" "${prefix}/share/*/srv/*.srv")
-    endforeach()
-  endif()
   foreach(type ${ARG_TYPES})
     list(APPEND genmros_args --type "${type}")
   endforeach()
@@ -149,19 +141,24 @@ function(mros_generate_messages)
   list(APPEND genmros_args -o "${output_dir}")
 
   # Run once now, so a type or package that does not exist fails the
-  # configure step, naming it, rather than the first build.
-  execute_process(COMMAND "${GENMROS_BIN}" export ${genmros_args}
+  # configure step, naming it, rather than the first build. Its depfile
+  # names every .msg/.srv file the headers come from, wherever genmros found
+  # it: a change to any of them regenerates the headers.
+  set(depfile "${output_dir}.d")
+  execute_process(COMMAND "${GENMROS_BIN}" export ${genmros_args} --depfile "${depfile}"
     RESULT_VARIABLE result ERROR_VARIABLE error OUTPUT_QUIET)
   if(NOT result EQUAL 0)
     string(STRIP "${error}" error)
     message(FATAL_ERROR "mros_generate_messages(): ${error}")
   endif()
 
-  # A changed .msg in any package genmros may read regenerates the headers.
-  file(GLOB definitions ${prefix_globs})
-  if(workspace)
-    file(GLOB_RECURSE workspace_definitions "${workspace}/*.msg" "${workspace}/*.srv")
-    list(APPEND definitions ${workspace_definitions})
-  endif()
+  # After the main rule, one rule "<definition>:" per file.
+  set(definitions "")
+  file(STRINGS "${depfile}" rules REGEX ":$")
+  foreach(rule ${rules})
+    string(REGEX REPLACE ":$" "" definition "${rule}")
+    string(REPLACE "\\ " " " definition "${definition}")
+    list(APPEND definitions "${definition}")
+  endforeach()
   _mros_attach(${ARG_TARGET} "${output_dir}" "${genmros_args}" "${definitions}" "${output_dir}")
 endfunction()

@@ -98,6 +98,25 @@ def test_generate_rebuilds_after_a_msg_change_and_not_otherwise(firmware, worksp
     assert output['md5'] == genmsg_md5('mros_test/PersonalData', search_path_of(source))
 
 
+def test_generate_takes_installed_packages_from_the_ros_environment(firmware, workspace):
+    # Only the source tree: geometry_msgs and std_msgs come from the ROS
+    # environment (Debian's /usr/share through rospkg), and a change there
+    # would regenerate the headers too.
+    firmware.configure(MROS_PACKAGE_PATHS=os.path.join(workspace, 'src'), FIRMWARE_TYPES='mros_test/NestedTypes')
+    firmware.build()
+    with open(firmware.build_dir + '/mros_messages/firmware.d') as stream:
+        depfile = stream.read()
+    for definition in ('/usr/share/geometry_msgs/msg/Pose.msg', '/usr/share/std_msgs/msg/Header.msg',
+                       os.path.join(workspace, 'src', 'mros_test', 'msg', 'NestedTypes.msg')):
+        assert '\n%s:\n' % definition in depfile
+    build_rules = ''
+    for directory, _, names in os.walk(firmware.build_dir):
+        if 'build.make' in names:
+            with open(os.path.join(directory, 'build.make')) as stream:
+                build_rules += stream.read()
+    assert '/usr/share/geometry_msgs/msg/Pose.msg' in build_rules
+
+
 def test_aggregates_hold_exactly_the_listed_types(firmware, workspace):
     firmware.configure(MROS_PACKAGE_PATHS=[os.path.join(workspace, 'src'), '/usr'],
                        FIRMWARE_TYPES=['mros_test_base/Vector3i', 'std_msgs/ColorRGBA'])
