@@ -1,12 +1,16 @@
 # mROS message headers for a firmware build (plain CMake, cross-compiling
 # welcome: nothing of ROS is needed but the .msg files and genmros).
 #
-#   mros_import_messages(TARGET t EXPORT_DIR dir [TYPES pkg/Type ...])
+#   mros_import_messages(TARGET t EXPORT_DIR dir [TYPES pkg/Type ...]
+#                        [STORAGE heap|bounded] [OPTIONS file ...])
 #     Use the headers a ROS build exported (catkin with MROS_EXPORT_DIR, or
 #     colcon build --mros-export): dir/include/<pkg>/<Type>.h. Without TYPES,
-#     every type the export dir holds.
+#     every type the export dir holds. A ROS build exports heap storage only:
+#     with STORAGE bounded the headers are generated anew from the
+#     definitions the export dir holds (dir/share), for t alone.
 #
-#   mros_generate_messages(TARGET t TYPES pkg/Type ... [PACKAGE_PATHS dir ...])
+#   mros_generate_messages(TARGET t TYPES pkg/Type ... [PACKAGE_PATHS dir ...]
+#                          [STORAGE heap|bounded] [OPTIONS file ...])
 #     Generate the headers at build time from .msg files. Each PACKAGE_PATHS
 #     entry is an installed prefix (dir/share/<pkg>/msg, as ROS installs them
 #     and as an export dir holds them) or one source tree of packages (found
@@ -17,7 +21,10 @@
 # Both write the per-firmware aggregates for exactly the listed types
 # (message_headers.h, message_class_specialization.h, msg_max_size.h, so
 # PUB_MSG_MAX_SIZE fits the firmware's types) and give t the include
-# directories. Installed as <prefix>/share/genmros/cmake/mros_generate.cmake;
+# directories. STORAGE bounded holds strings and variable arrays in the
+# message, with the maxima of the OPTIONS files and of each package's
+# msg/genmros.options (genmros export --storage bounded --options); editing
+# any of them regenerates the headers. Installed as <prefix>/share/genmros/cmake/mros_generate.cmake;
 # find_package(genmros) includes it.
 
 find_program(GENMROS_BIN genmros
@@ -67,8 +74,54 @@ function(_mros_attach ARG_TARGET ARG_OUTPUT_DIR ARG_GENMROS_ARGS ARG_DEPENDS ARG
   target_include_directories(${ARG_TARGET} PUBLIC ${ARG_INCLUDE_DIRS})
 endfunction()
 
+# genmros' storage arguments from STORAGE and OPTIONS, checked.
+function(_mros_storage_args ARG_FUNCTION ARG_STORAGE ARG_OPTIONS ARG_OUTPUT_VAR)
+  if(NOT ARG_STORAGE)
+    set(ARG_STORAGE heap)
+  endif()
+  if(NOT ARG_STORAGE MATCHES "^(heap|bounded)$")
+    message(FATAL_ERROR "${ARG_FUNCTION}(): STORAGE is heap or bounded, not '${ARG_STORAGE}'")
+  endif()
+  if(ARG_OPTIONS AND ARG_STORAGE STREQUAL "heap")
+    message(FATAL_ERROR "${ARG_FUNCTION}(): OPTIONS sets bounds, which only STORAGE bounded uses")
+  endif()
+  set(arguments --storage ${ARG_STORAGE})
+  foreach(file ${ARG_OPTIONS})
+    get_filename_component(file "${file}" ABSOLUTE)
+    if(NOT EXISTS "${file}")
+      message(FATAL_ERROR "${ARG_FUNCTION}(): OPTIONS file '${file}' does not exist")
+    endif()
+    list(APPEND arguments --options "${file}")
+  endforeach()
+  set(${ARG_OUTPUT_VAR} ${arguments} PARENT_SCOPE)
+endfunction()
+
+# Runs genmros export once at configure time, so a bad type, package or
+# options file fails the configure step with genmros' one line rather than
+# the first build, and sets ARG_OUTPUT_VAR to the files its depfile names:
+# every .msg/.srv and options file the headers come from, wherever genmros
+# found them, so that a change to any of them regenerates the headers.
+function(_mros_export_now ARG_FUNCTION ARG_GENMROS_ARGS ARG_OUTPUT_DIR ARG_OUTPUT_VAR)
+  set(depfile "${ARG_OUTPUT_DIR}.d")
+  execute_process(COMMAND "${GENMROS_BIN}" export ${ARG_GENMROS_ARGS} --depfile "${depfile}"
+    RESULT_VARIABLE result ERROR_VARIABLE error OUTPUT_QUIET)
+  if(NOT result EQUAL 0)
+    string(STRIP "${error}" error)
+    message(FATAL_ERROR "${ARG_FUNCTION}(): ${error}")
+  endif()
+  # After the main rule, one rule "<file>:" per file.
+  set(inputs "")
+  file(STRINGS "${depfile}" rules REGEX ":$")
+  foreach(rule ${rules})
+    string(REGEX REPLACE ":$" "" input "${rule}")
+    string(REPLACE "\\ " " " input "${input}")
+    list(APPEND inputs "${input}")
+  endforeach()
+  set(${ARG_OUTPUT_VAR} ${inputs} PARENT_SCOPE)
+endfunction()
+
 function(mros_import_messages)
-  cmake_parse_arguments(ARG "" "TARGET;EXPORT_DIR" "TYPES" ${ARGN})
+  cmake_parse_arguments(ARG "" "TARGET;EXPORT_DIR;STORAGE" "TYPES;OPTIONS" ${ARGN})
   _mros_check_arguments(mros_import_messages "${ARG_TARGET}" "${ARG_UNPARSED_ARGUMENTS}")
   get_filename_component(export_dir "${ARG_EXPORT_DIR}" ABSOLUTE)
   if(NOT ARG_EXPORT_DIR OR NOT EXISTS "${export_dir}/include/mros_message_support.h")
@@ -91,7 +144,8 @@ function(mros_import_messages)
     message(FATAL_ERROR "mros_import_messages(): EXPORT_DIR '${export_dir}' holds no message types")
   endif()
 
-  set(genmros_args --only aggregates --underlay "${export_dir}")
+  _mros_storage_args(mros_import_messages "${ARG_STORAGE}" "${ARG_OPTIONS}" storage_args)
+  set(genmros_args --underlay "${export_dir}")
   set(headers "")
   foreach(type ${types})
     if(NOT EXISTS "${export_dir}/include/${type}.h")
@@ -104,20 +158,27 @@ function(mros_import_messages)
 
   _mros_output_dir(${ARG_TARGET} output_dir)
   list(APPEND genmros_args -o "${output_dir}")
-  # The aggregates first: the export dir has none, but a firmware's own
-  # aggregates must win over any a user copied there.
-  _mros_attach(${ARG_TARGET} "${output_dir}" "${genmros_args}" "${headers}"
-    "${output_dir};${export_dir}/include")
+  if(ARG_STORAGE STREQUAL "bounded")
+    # Every header anew, bounded: the export's heap headers stay out of t.
+    list(APPEND genmros_args ${storage_args})
+    _mros_export_now(mros_import_messages "${genmros_args}" "${output_dir}" inputs)
+    _mros_attach(${ARG_TARGET} "${output_dir}" "${genmros_args}" "${inputs}" "${output_dir}")
+  else()
+    # The aggregates first: the export dir has none, but a firmware's own
+    # aggregates must win over any a user copied there.
+    _mros_attach(${ARG_TARGET} "${output_dir}" "--only;aggregates;${genmros_args}" "${headers}"
+      "${output_dir};${export_dir}/include")
+  endif()
 endfunction()
 
 function(mros_generate_messages)
-  cmake_parse_arguments(ARG "" "TARGET" "TYPES;PACKAGE_PATHS" ${ARGN})
+  cmake_parse_arguments(ARG "" "TARGET;STORAGE" "TYPES;PACKAGE_PATHS;OPTIONS" ${ARGN})
   _mros_check_arguments(mros_generate_messages "${ARG_TARGET}" "${ARG_UNPARSED_ARGUMENTS}")
   if(NOT ARG_TYPES)
     message(FATAL_ERROR "mros_generate_messages(): TYPES lists no message type")
   endif()
 
-  set(genmros_args "")
+  _mros_storage_args(mros_generate_messages "${ARG_STORAGE}" "${ARG_OPTIONS}" genmros_args)
   set(workspace "")
   foreach(path ${ARG_PACKAGE_PATHS})
     get_filename_component(path "${path}" ABSOLUTE)
@@ -140,25 +201,6 @@ function(mros_generate_messages)
   _mros_output_dir(${ARG_TARGET} output_dir)
   list(APPEND genmros_args -o "${output_dir}")
 
-  # Run once now, so a type or package that does not exist fails the
-  # configure step, naming it, rather than the first build. Its depfile
-  # names every .msg/.srv file the headers come from, wherever genmros found
-  # it: a change to any of them regenerates the headers.
-  set(depfile "${output_dir}.d")
-  execute_process(COMMAND "${GENMROS_BIN}" export ${genmros_args} --depfile "${depfile}"
-    RESULT_VARIABLE result ERROR_VARIABLE error OUTPUT_QUIET)
-  if(NOT result EQUAL 0)
-    string(STRIP "${error}" error)
-    message(FATAL_ERROR "mros_generate_messages(): ${error}")
-  endif()
-
-  # After the main rule, one rule "<definition>:" per file.
-  set(definitions "")
-  file(STRINGS "${depfile}" rules REGEX ":$")
-  foreach(rule ${rules})
-    string(REGEX REPLACE ":$" "" definition "${rule}")
-    string(REPLACE "\\ " " " definition "${definition}")
-    list(APPEND definitions "${definition}")
-  endforeach()
-  _mros_attach(${ARG_TARGET} "${output_dir}" "${genmros_args}" "${definitions}" "${output_dir}")
+  _mros_export_now(mros_generate_messages "${genmros_args}" "${output_dir}" inputs)
+  _mros_attach(${ARG_TARGET} "${output_dir}" "${genmros_args}" "${inputs}" "${output_dir}")
 endfunction()

@@ -94,8 +94,8 @@ def _export_parser():
                              "max_count:N' or '* ...' (repeatable; each package's "
                              'msg/genmros.options is read too)')
     parser.add_argument('--depfile', metavar='FILE',
-                        help='also write FILE, a make rule naming every .msg/.srv file the '
-                             'headers come from')
+                        help='also write FILE, a make rule naming every .msg/.srv file and '
+                             'options file the headers come from')
     return parser
 
 

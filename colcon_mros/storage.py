@@ -102,6 +102,7 @@ class HeapStorage:
     """std::string and std::vector: no bounds, the heap holds what arrives."""
 
     bounded = False
+    option_files = ()
 
     def field_bounds(self, message_name, field_name, ros_type, path, line):
         return FieldBounds()
@@ -118,6 +119,7 @@ class BoundedStorage:
 
     def __init__(self, firmware_option_files=(), package_option_files=()):
         # Later entries win: package files first, then the firmware's.
+        self.option_files = [path for _, path in package_option_files] + list(firmware_option_files)
         self._entries = []
         for package, path in package_option_files:
             self._entries.extend(read_options_file(path, package))

@@ -109,12 +109,17 @@ def test_generate_takes_installed_packages_from_the_ros_environment(firmware, wo
     for definition in ('/usr/share/geometry_msgs/msg/Pose.msg', '/usr/share/std_msgs/msg/Header.msg',
                        os.path.join(workspace, 'src', 'mros_test', 'msg', 'NestedTypes.msg')):
         assert '\n%s:\n' % definition in depfile
-    build_rules = ''
+    assert '/usr/share/geometry_msgs/msg/Pose.msg' in _makefiles(firmware, 'build.make')
+
+
+def _makefiles(firmware, name):
+    """The text of every makefile called name that CMake wrote for the build."""
+    text = ''
     for directory, _, names in os.walk(firmware.build_dir):
-        if 'build.make' in names:
-            with open(os.path.join(directory, 'build.make')) as stream:
-                build_rules += stream.read()
-    assert '/usr/share/geometry_msgs/msg/Pose.msg' in build_rules
+        if name in names:
+            with open(os.path.join(directory, name)) as stream:
+                text += stream.read()
+    return text
 
 
 def test_aggregates_hold_exactly_the_listed_types(firmware, workspace):
@@ -269,3 +274,62 @@ def test_find_package_under_a_cross_toolchain_file(tmp_path):
     cmake_dir = run(['genmros', 'cmake-dir'], str(tmp_path)).stdout.strip()
     run(configure + ['-B', str(tmp_path / 'named'), '-Dgenmros_DIR=%s' % cmake_dir], str(tmp_path))
     run(['cmake', '--build', str(tmp_path / 'named')], str(tmp_path))
+
+
+PERSONAL_DATA_BOUNDS = 'mros_test/PersonalData.first_name max_size:%d\n* max_size:20\n'
+
+
+def _bounds_file(tmp_path, first_name_bound):
+    path = tmp_path / 'firmware.options'
+    path.write_text(PERSONAL_DATA_BOUNDS % first_name_bound)
+    return str(path)
+
+
+def test_generate_bounded_storage_follows_its_options_file(firmware, workspace, tmp_path):
+    options = _bounds_file(tmp_path, 10)
+    firmware.configure(MROS_PACKAGE_PATHS=os.path.join(workspace, 'src'), MROS_STORAGE='bounded',
+                       MROS_OPTIONS=options)
+    firmware.build()
+    # Exact: 4 + 10 and 4 + 20 for the strings, uint16 age, int32 score.
+    assert firmware.output()['PUB_MSG_MAX_SIZE'] == '44'
+    header = os.path.join(firmware.build_dir, 'mros_messages', 'firmware', 'mros_test', 'PersonalData.h')
+    with open(header) as stream:
+        assert 'mros::bounded_string<10> first_name;' in stream.read()
+    _bounds_file(tmp_path, 30)
+    assert REGENERATION_LOG_LINE in firmware.build()
+    assert firmware.output()['PUB_MSG_MAX_SIZE'] == '64'
+
+
+def test_import_bounded_storage_generates_its_own_headers(firmware, catkin_export, tmp_path):
+    firmware.configure(MROS_MODE='import', MROS_EXPORT_DIR=catkin_export, MROS_STORAGE='bounded',
+                       MROS_OPTIONS=_bounds_file(tmp_path, 10))
+    firmware.build()
+    assert firmware.output()['PUB_MSG_MAX_SIZE'] == '44'
+    assert os.path.isfile(os.path.join(firmware.build_dir, 'mros_messages', 'firmware', 'mros_test',
+                                       'PersonalData.h'))
+    # The export's heap headers are not on the firmware's include path.
+    flags = _makefiles(firmware, 'flags.make')
+    assert 'mros_messages/firmware' in flags and os.path.join(catkin_export, 'include') not in flags
+
+
+@pytest.mark.parametrize('cache, expected', [
+    ({'MROS_STORAGE': 'stack'}, "mros_generate_messages(): STORAGE is heap or bounded, not 'stack'"),
+    ({'MROS_STORAGE': 'bounded', 'MROS_OPTIONS': '/nonexistent/firmware.options'},
+     "mros_generate_messages(): OPTIONS file '/nonexistent/firmware.options' does not exist"),
+    ({'MROS_OPTIONS': '/nonexistent/firmware.options'},
+     'mros_generate_messages(): OPTIONS sets bounds, which only STORAGE bounded uses'),
+])
+def test_bad_storage_arguments_fail_the_configure_step(firmware, workspace, cache, expected):
+    result = firmware.configure(check=False, MROS_PACKAGE_PATHS=os.path.join(workspace, 'src'), **cache)
+    assert result.returncode != 0
+    assert expected in unwrapped(result.stdout)
+
+
+def test_bad_options_line_fails_the_configure_step_with_its_place(firmware, workspace, tmp_path):
+    options = tmp_path / 'firmware.options'
+    options.write_text('mros_test/PersonalData.first_name max_size:ten\n')
+    result = firmware.configure(check=False, MROS_PACKAGE_PATHS=os.path.join(workspace, 'src'),
+                                MROS_STORAGE='bounded', MROS_OPTIONS=str(options))
+    assert result.returncode != 0
+    assert ("mros_generate_messages(): genmros: error: %s:1: max_size must be a positive integer, "
+            "not 'ten'" % options) in unwrapped(result.stdout)
