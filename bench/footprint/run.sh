@@ -19,7 +19,7 @@ declare -A cpus=(
   [cortex-m4]="-mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16"
   [cortex-a9]="-mcpu=cortex-a9 -marm -mfpu=vfpv3 -mfloat-abi=hard -mno-unaligned-access"
 )
-cflags=(-Os -ffunction-sections -fdata-sections)
+cflags=(-Os -fno-builtin -ffunction-sections -fdata-sections)
 common=("${cflags[@]}" -fno-exceptions -fno-rtti)
 link=(--specs=nosys.specs -Wl,--gc-sections)
 
