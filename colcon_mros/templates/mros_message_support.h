@@ -267,13 +267,20 @@ struct Writer {
   // per width: a 32-bit CPU never does 64-bit arithmetic for a 32-bit word.
   template <class Word> void putWord(Word value) {
     if (kHostIsLittleEndian) {
-      copyWord(pos, &value, sizeof(Word));
-    } else {
-      for (size_t i = 0; i < sizeof(Word); ++i) {
-        pos[i] = static_cast<uint8_t>(value >> (8 * i));
-      }
+      putNative(value);
+      return;
+    }
+    for (size_t i = 0; i < sizeof(Word); ++i) {
+      pos[i] = static_cast<uint8_t>(value >> (8 * i));
     }
     pos += sizeof(Word);
+  }
+
+  // A number's bytes as they lie in memory: its wire image on little-endian
+  // hosts.
+  template <class Number> void putNative(const Number& value) {
+    copyWord(pos, &value, sizeof(Number));
+    pos += sizeof(Number);
   }
 
   void putBytes(const void* bytes, uint32_t count) {
@@ -313,19 +320,30 @@ struct Reader {
       : pos(buffer), remaining(size), allocation_budget(kAllocationBudget) {}
 
   template <class Word> bool getWord(Word& value) {
+    if (kHostIsLittleEndian) {
+      return getNative(value);
+    }
     if (remaining < sizeof(Word)) {
       return false;
     }
-    if (kHostIsLittleEndian) {
-      copyWord(&value, pos, sizeof(Word));
-    } else {
-      value = 0;
-      for (size_t i = 0; i < sizeof(Word); ++i) {
-        value = static_cast<Word>(value | static_cast<Word>(static_cast<Word>(pos[i]) << (8 * i)));
-      }
+    value = 0;
+    for (size_t i = 0; i < sizeof(Word); ++i) {
+      value = static_cast<Word>(value | static_cast<Word>(static_cast<Word>(pos[i]) << (8 * i)));
     }
     pos += sizeof(Word);
     remaining -= static_cast<uint32_t>(sizeof(Word));
+    return true;
+  }
+
+  // Reads a number's bytes as they lie in memory: its wire image on
+  // little-endian hosts.
+  template <class Number> bool getNative(Number& value) {
+    if (remaining < sizeof(Number)) {
+      return false;
+    }
+    copyWord(&value, pos, sizeof(Number));
+    pos += sizeof(Number);
+    remaining -= static_cast<uint32_t>(sizeof(Number));
     return true;
   }
 
@@ -407,12 +425,21 @@ template <class T, class Bits> struct FloatCodec {
   static const uint32_t kMinSize = sizeof(T);
   static const bool kPlain = true;
   static uint32_t length(const T&) { return sizeof(T); }
+  // On little-endian hosts the value's bytes are its wire image: copied
+  // once, not twice through an integer of its width.
   static void write(Writer& out, const T& value) {
+    if (kHostIsLittleEndian) {
+      out.putNative(value);
+      return;
+    }
     Bits bits;
     copyWord(&bits, &value, sizeof(T));
     out.putWord(bits);
   }
   static bool read(Reader& in, T& value) {
+    if (kHostIsLittleEndian) {
+      return in.getNative(value);
+    }
     Bits bits;
     if (!in.getWord(bits)) {
       return false;
