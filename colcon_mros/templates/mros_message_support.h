@@ -400,8 +400,19 @@ template <class T> struct IntegerCodec {
   static const uint32_t kMinSize = sizeof(T);
   static const bool kPlain = true;
   static uint32_t length(const T&) { return sizeof(T); }
-  static void write(Writer& out, const T& value) { out.putWord(static_cast<Word>(value)); }
+  // On little-endian hosts straight from and into the field: no copy on
+  // the stack between the field and the buffer.
+  static void write(Writer& out, const T& value) {
+    if (kHostIsLittleEndian) {
+      out.putNative(value);
+      return;
+    }
+    out.putWord(static_cast<Word>(value));
+  }
   static bool read(Reader& in, T& value) {
+    if (kHostIsLittleEndian) {
+      return in.getNative(value);
+    }
     Word raw;
     if (!in.getWord(raw)) {
       return false;
