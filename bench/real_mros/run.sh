@@ -1,0 +1,98 @@
+#!/usr/bin/env bash
+# genmros' headers in the real mROS v1 library, as a new user would try them:
+# export the types of the sample apps custom_pubsub, string_pubsub and
+# image_publisher, put the export in place of each app's include/, and
+# compile the real mros-lib/mros-src/api/ros.cpp and the apps' app.cpp with
+# the flags of mROS v1's Makefiles (-std=gnu++98 -fno-rtti -fno-exceptions
+# -fno-builtin -Os, GR-PEACH's Cortex-A9, and a Cortex-M4). The RTOS, lwIP
+# and mbed headers are our own stand-ins (stubs/); everything else is the
+# checkout's. Prints each compile's warnings from genmros' headers (none is
+# the expectation; the apps' own warnings are counted, not shown) and the
+# text+data+bss of ros.o and app.o with the headers mROS ships and with
+# genmros'. Nothing is linked.
+#   bench/real_mros/run.sh MROS_CHECKOUT   (a work tree, or a git dir of mROS-base/mROS)
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+repo="$here/../.."
+[ $# = 1 ] || { echo "usage: $0 MROS_CHECKOUT" >&2; exit 2; }
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+
+# The parts of mROS used here, from a work tree or straight from git objects.
+mros="$work/mros"
+if [ -d "$1/mros-lib" ]; then
+  mros="$(cd "$1" && pwd)"
+else
+  git --git-dir="$1" ls-tree -r --name-only HEAD mros-lib/mros-src mros-lib/mros-msgs mros_ws \
+      ros_catkin_ws/src/custom_pubsub |
+    while read -r path; do
+      mkdir -p "$mros/$(dirname "$path")"
+      git --git-dir="$1" show "HEAD:$path" >"$mros/$path" 2>/dev/null || true
+    done
+fi
+
+src="$mros/mros-lib/mros-src"
+includes=(-I"$here/stubs")
+for dir in inc api protocol/cimpl node/cimpl topic/cimpl os/target/os_asp comm/cimpl/target/lwip \
+    comm/cimpl packet/cimpl packet/template/version/kinetic packet/cimpl/version/kinetic transfer/cimpl; do
+  includes+=(-I"$src/$dir")
+done
+flags=(-c -Os -std=gnu++98 -fno-rtti -fno-exceptions -fno-builtin -ffunction-sections -fdata-sections
+       -Wall -Wextra -Wno-unused-parameter -Wno-missing-field-initializers)
+declare -A cpus=(
+  [cortex-a9]="-mcpu=cortex-a9 -marm -mfpu=vfpv3 -mfloat-abi=hard -mno-unaligned-access"
+  [cortex-m4]="-mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16"
+)
+
+# app  genmros export arguments  whether app.cpp builds on the stubs (image_publisher needs the camera library)
+apps=(
+  "custom_pubsub --workspace $mros/ros_catkin_ws --type custom_pubsub/UserTypeTest yes"
+  "string_pubsub --type std_msgs/String yes"
+  "image_publisher --type sensor_msgs/Image no"
+)
+
+compile() {  # cpu headers app source object -> prints "size warnings-from-genmros other-warnings"
+  local cpu=$1 headers=$2 app=$3 source=$4 object=$5 log="$5.log" include
+  if [ "$headers" = shipped ]; then
+    include=(-I"$mros/mros_ws/$app/include" -I"$mros/mros-lib/mros-msgs")
+  else
+    include=(-I"$work/export/$app")
+  fi
+  # shellcheck disable=SC2086
+  if ! arm-none-eabi-g++ ${cpus[$cpu]} "${flags[@]}" "${includes[@]}" "${include[@]}" \
+      -I"$mros/mros_ws/$app" -I"$mros/mros_ws/$app/mros_config" \
+      -I"$mros/mros_ws/$app/mros_config/os/target/os_asp" "$source" -o "$object" 2>"$log"; then
+    echo "compile failed: $app $headers $cpu $(basename "$source")" >&2
+    cat "$log" >&2
+    exit 1
+  fi
+  if [ "$headers" = genmros ] && grep -q "^$work/export/.*warning" "$log"; then
+    grep "^$work/export/.*warning" "$log" | sed "s|$work/export/||" >&2
+  fi
+  echo "$(arm-none-eabi-size "$object" | awk 'NR == 2 {print $4}') $(grep -c "^$work/export/.*warning" "$log" || true) $(grep -v "^$work/export/" "$log" | grep -c "warning" || true)"
+}
+
+echo "text+data+bss (bytes) of the real ros.cpp and app.cpp, -Os, mROS v1's flags;"
+echo "warnings: from genmros' headers / from mROS' own code and the apps"
+echo
+echo "| CPU | app | file | shipped headers | genmros | genmros / shipped | warnings shipped | warnings genmros |"
+echo "|---|---|---|---:|---:|---:|---:|---:|"
+for entry in "${apps[@]}"; do
+  # shellcheck disable=SC2086
+  set -- $entry
+  app=$1
+  builds_app=${!#}
+  arguments=("${@:2:$#-2}")
+  PYTHONPATH="$repo" /usr/bin/python3 -m colcon_mros export "${arguments[@]}" -o "$work/export/$app" >/dev/null
+  sources=("$src/api/ros.cpp")
+  [ "$builds_app" = yes ] && sources+=("$mros/mros_ws/$app/app.cpp")
+  for cpu in cortex-a9 cortex-m4; do
+    for source in "${sources[@]}"; do
+      name=$(basename "$source" .cpp)
+      read -r shipped _ shipped_other <<<"$(compile "$cpu" shipped "$app" "$source" "$work/$app.$cpu.$name.shipped.o")"
+      read -r ours ours_own ours_other <<<"$(compile "$cpu" genmros "$app" "$source" "$work/$app.$cpu.$name.genmros.o")"
+      ratio=$(awk -v a="$ours" -v b="$shipped" 'BEGIN {printf "%.2fx", a / b}')
+      echo "| $cpu | $app | $name.o | $shipped | $ours | $ratio | 0 / $shipped_other | $ours_own / $ours_other |"
+    done
+  done
+done
