@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Footprint benchmark: text+data+bss that message types cost a firmware on
-# each mROS CPU, -Os -fno-exceptions -fno-rtti -std=gnu++98, --gc-sections.
+# each mROS CPU, -Os -fno-builtin -fno-exceptions -fno-rtti -std=gnu++98 (mROS v1's
+# flags), --gc-sections.
 # Each row is one firmware (start-up, newlib, the API layer in the shape of
 # mROS v1's ros.cpp over the tests' ros.h, and one task that publishes and
 # subscribes one type),
