@@ -8,7 +8,7 @@ from colcon_mros import __version__
 from colcon_mros.defaults import DEFAULT_VARIABLE_SIZE_BUDGET, EXPORT_PARTS, STORAGE_KINDS
 from colcon_mros.errors import GenmrosError
 from colcon_mros.export_claims import ExportClaims
-from colcon_mros.installed_files import CMAKE_CONFIG, MAKE_FRAGMENT, installed_file
+from colcon_mros.installed_files import CATKIN_MARKER, CMAKE_CONFIG, MAKE_FRAGMENT, installed_file
 from colcon_mros.ros_environment import require_ros_python
 from colcon_mros.workspace import parse_include_flags
 
@@ -33,6 +33,11 @@ Generate mROS message headers from ROS 1 .msg and .srv files.
   genmros cmake-dir
       prints the directory of genmrosConfig.cmake: -Dgenmros_DIR=... lets
       find_package(genmros) work under a cross toolchain file.
+
+  genmros catkin-prefix
+      prints a catkin prefix that holds only genmros' generator marker:
+      with it on CMAKE_PREFIX_PATH, catkin runs genmros (for installs that
+      cannot write /etc/ros/genmsg: ROS Noetic, a user, a venv).
 
   genmros prune-export DIR
       removes from a catkin export dir (MROS_EXPORT_DIR) the headers and
@@ -117,6 +122,8 @@ def main(argv=None):
             print(installed_file(MAKE_FRAGMENT))
         elif argv == ['cmake-dir']:
             print(os.path.dirname(installed_file(CMAKE_CONFIG)))
+        elif argv == ['catkin-prefix']:
+            print(os.path.dirname(installed_file(CATKIN_MARKER)))
         elif argv[:1] == ['prune-export'] and len(argv) == 2:
             if not os.path.isdir(argv[1]):
                 raise GenmrosError('export dir is not a directory', argv[1])

@@ -18,6 +18,10 @@ MAKE_FRAGMENT = 'genmros.mk'
 CMAKE_MODULE = 'mros_generate.cmake'
 # find_package(genmros) reads it; its directory is what genmros_DIR names.
 CMAKE_CONFIG = 'genmrosConfig.cmake'
+# Marks share/genmros/catkin_prefix as a catkin workspace, whose
+# etc/ros/genmsg/genmros registers the catkin generator once the prefix is
+# on CMAKE_PREFIX_PATH.
+CATKIN_MARKER = '.catkin'
 
 
 def _checkout_file(name):

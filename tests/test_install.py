@@ -10,6 +10,7 @@ import shutil
 import subprocess
 
 from conftest import REPO, TEST_WS
+from user_install import NOBODY, install_as_nobody, pip_flags
 
 MARKER = '/etc/ros/genmsg/genmros'
 
@@ -65,3 +66,30 @@ def test_uninstall_leaves_catkin_and_colcon_working_and_setup_reinstalls(tmp_pat
     assert _run(['dpkg', '-S', shutil.which('genmros', path=environment['PATH'])], REPO).stdout.startswith(
         'colcon-mros: ')
     assert _ignored_files() == before  # no build/ or *.egg-info in the source tree
+
+
+def test_a_user_install_registers_the_generator_through_its_catkin_prefix(tmp_path):
+    # No /etc/ros/genmsg/genmros while the Debian package is away: only the
+    # prefix `genmros catkin-prefix` prints, on CMAKE_PREFIX_PATH, makes
+    # catkin run the user's genmros.
+    user = install_as_nobody()
+    try:
+        _run([os.path.join(REPO, 'scripts', 'uninstall.sh')], REPO)
+        prefix = user.run(['genmros', 'catkin-prefix'], user.root).stdout.strip()
+        assert prefix == os.path.join(user.prefix, 'share', 'genmros', 'catkin_prefix')
+        header = os.path.join('devel', 'share', 'genmros', 'include', 'mros_test_base', 'Vector3i.h')
+        for registered in (True, False):
+            workspace = os.path.join(user.root, 'ws_%s' % registered)
+            shutil.copytree(os.path.join(TEST_WS, 'src', 'mros_test_base'),
+                            os.path.join(workspace, 'src', 'mros_test_base'))
+            subprocess.run(['chown', '-R', '%d:%d' % (NOBODY, NOBODY), workspace], check=True)
+            variables = {'CMAKE_PREFIX_PATH': prefix} if registered else {}
+            log = user.run(['catkin_make'], workspace, **variables).stdout
+            assert os.path.isfile(os.path.join(workspace, header)) == registered, log[-2000:]
+        user.run(['/usr/bin/python3', '-m', 'pip', 'uninstall', '--yes', '--quiet'] +
+                 [flag for flag in pip_flags() if flag == '--break-system-packages'] + ['colcon-mros'],
+                 user.root)
+        assert not os.path.exists(prefix)
+    finally:
+        _run([os.path.join(REPO, 'scripts', 'setup.sh')], REPO)
+        shutil.rmtree(user.root)

@@ -11,14 +11,12 @@ Debian package, which they hide for their user or venv.
 import os
 import shutil
 import subprocess
-import sys
-import tempfile
 
 import pytest
 
-from conftest import REPO, TEST_WS
+from conftest import TEST_WS
+from user_install import NOBODY, Install, copy_sources, install_as_nobody, pip_flags
 
-NOBODY = 65534
 FIRMWARE_CMAKE = '''\
 cmake_minimum_required(VERSION 3.10)
 project(user_firmware CXX)
@@ -38,55 +36,11 @@ int main() {
 '''
 
 
-class Install:
-    """One install of colcon-mros: how to run a command with it."""
-
-    def __init__(self, root, home, prefix, as_nobody=False):
-        self.root = root
-        self.home = home
-        self.prefix = prefix  # where pip put bin/ and share/
-        self.as_nobody = as_nobody
-
-    def run(self, command, cwd, check=True):
-        environment = ['HOME=%s' % self.home,
-                       'PATH=%s:/usr/bin:/bin' % os.path.join(self.prefix, 'bin')]
-        prefix = ['env', '-i'] + environment
-        if self.as_nobody:
-            prefix = ['setpriv', '--reuid=%d' % NOBODY, '--regid=%d' % NOBODY, '--clear-groups'] + prefix
-        result = subprocess.run(prefix + command, cwd=cwd, capture_output=True, text=True)
-        if check:
-            assert result.returncode == 0, ' '.join(command) + '\n' + (result.stdout + result.stderr)[-3000:]
-        return result
-
-
-def _copy_sources(root):
-    source = os.path.join(root, 'source')
-    shutil.copytree(REPO, source, ignore=shutil.ignore_patterns('.git', 'build', '*.egg-info'))
-    return source
-
-
-def _pip_flags():
-    flags = ['--quiet', '--no-deps', '--no-build-isolation']
-    help_text = subprocess.run([sys.executable, '-m', 'pip', 'install', '--help'],
-                               capture_output=True, text=True).stdout
-    return flags + (['--break-system-packages'] if '--break-system-packages' in help_text else [])
-
-
 @pytest.fixture(scope='module')
 def user_install():
-    root = tempfile.mkdtemp(prefix='genmros-user-')
-    try:
-        home = os.path.join(root, 'home')
-        os.mkdir(home)
-        source = _copy_sources(root)
-        for directory, _, names in os.walk(root):
-            for name in [''] + names:
-                os.lchown(os.path.join(directory, name), NOBODY, NOBODY)
-        install = Install(root, home, os.path.join(home, '.local'), as_nobody=True)
-        install.run(['/usr/bin/python3', '-m', 'pip', 'install', '--user'] + _pip_flags() + [source], root)
-        yield install
-    finally:
-        shutil.rmtree(root)
+    install = install_as_nobody()
+    yield install
+    shutil.rmtree(install.root)
 
 
 @pytest.fixture(scope='module')
@@ -95,7 +49,7 @@ def venv_install(tmp_path_factory):
     venv = os.path.join(root, 'venv')
     subprocess.run(['/usr/bin/python3', '-m', 'venv', '--system-site-packages', venv], check=True)
     install = Install(root, os.environ.get('HOME', '/root'), venv)
-    install.run(['python3', '-m', 'pip', 'install'] + _pip_flags() + [_copy_sources(root)], root)
+    install.run(['python3', '-m', 'pip', 'install'] + pip_flags() + [copy_sources(root)], root)
     return install
 
 
