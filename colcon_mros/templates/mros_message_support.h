@@ -509,9 +509,10 @@ inline bool assignText(std::string& value, const char* text, uint32_t size) {
     return true;
   }
 #endif
-  // Into the capacity already there: append() to an empty string copies
-  // without assign()'s checks for overlapping text (a third fewer
-  // instructions for JointState's six names).
+  // Into the capacity already there. append() to an empty string copies
+  // without assign()'s care for overlapping text: libstdc++'s _M_append is
+  // smaller than _M_replace (a firmware with PersonalData is 500 bytes
+  // smaller) and quicker (JointState decode: 1905 instructions, not 2068).
   value.clear();
   value.append(text, size);
   return true;
