@@ -24,8 +24,9 @@
 # directories. STORAGE bounded holds strings and variable arrays in the
 # message, with the maxima of the OPTIONS files and of each package's
 # msg/genmros.options (genmros export --storage bounded --options); editing
-# any of them regenerates the headers. Installed as <prefix>/share/genmros/cmake/mros_generate.cmake;
-# find_package(genmros) includes it.
+# any of them regenerates the headers. Installed as
+# <prefix>/share/genmros/cmake/mros_generate.cmake; find_package(genmros)
+# includes it.
 
 find_program(GENMROS_BIN genmros
   HINTS "${CMAKE_CURRENT_LIST_DIR}/../../../bin"

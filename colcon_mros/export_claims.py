@@ -11,8 +11,10 @@ claimed once and are claimed by no definition now leave the dir.
 Under ``<export dir>/.genmros/``:
 
 - ``claims/<pkg>/<msg|srv>/<file>``: one claim per definition file, one path
-  per line. The CMake side removes the claim of a definition removed from
-  its package, then runs ``genmros prune-export``.
+  per line. A run whose new claim drops a path prunes the dir; the CMake side
+  removes the claim of a definition removed from its package, then runs
+  ``genmros prune-export``. Prunes read every claim, so the runs that drop
+  nothing (nearly all of them) skip it.
 - ``ledger``: every path ever claimed and not yet removed; only these are
   ever removed, so files that genmros did not put there stay.
 - ``lock``: runs for packages built in parallel share the dir, so writing,
@@ -52,10 +54,14 @@ class ExportClaims:
         self._lock = None
 
     def record(self, key, paths):
-        """Claim paths for the definition key, replacing its former claim."""
+        """Claim paths for the definition key, replacing its former claim;
+        returns whether the former claim named a path the new one does not
+        (only then can a file have lost its last claim)."""
+        claim = 'claims/' + key
+        dropped = self._read_lines(claim) - set(paths)
         ledger = self._read_lines('ledger') | set(paths)
-        write_files(self._state_dir, {'ledger': _lines(ledger),
-                                      'claims/' + key: _lines(paths)})
+        write_files(self._state_dir, {'ledger': _lines(ledger), claim: _lines(paths)})
+        return bool(dropped)
 
     def prune(self):
         """Remove the files of the ledger that no claim names; returns them."""

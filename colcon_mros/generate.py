@@ -75,6 +75,6 @@ def generate_file(path, package, output_dir, search_path, template_dir=None, exp
     if export_dir:
         with ExportClaims(export_dir) as claims:
             written += write_files(export_dir, export_files)
-            claims.record(claim_key(package, path), export_files)
-            claims.prune()
+            if claims.record(claim_key(package, path), export_files):
+                claims.prune()
     return written

@@ -4,8 +4,8 @@ pip installs the CMake package (genmrosConfig.cmake), the CMake module
 (mros_generate.cmake) and the make fragment (genmros.mk) under
 ``share/genmros/cmake/`` of whatever prefix the install used (/usr for
 setup.sh's Debian package, /usr/local, ~/.local, a venv); the
-distribution's own record of its files says where, so no prefix is assumed. A source checkout has the module and the fragment
-in ``cmake/``.
+distribution's own record of its files says where, so no prefix is
+assumed. A source checkout has the module and the fragment in ``cmake/``.
 """
 
 import os

@@ -2,7 +2,7 @@
 # Installs what genmros needs on Debian 12, then the project itself as the
 # Debian package colcon-mros, built here from this tree: dpkg then owns every
 # file of it, the catkin generator marker /etc/ros/genmsg/genmros included,
-# and `apt-get remove colcon-mros` (scripts/uninstall.sh) takes all of it
+# and `apt-get purge colcon-mros` (scripts/uninstall.sh) takes all of it
 # away. Idempotent; needs root (or sudo).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"

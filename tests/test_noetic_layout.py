@@ -16,7 +16,8 @@ import sys
 
 import pytest
 
-from conftest import REPO, TEST_WS
+from conftest import TEST_WS
+from user_install import copy_sources
 
 # What a sourced Noetic puts on PYTHONPATH that genmros uses (from Debian here).
 ROS_PYTHON_MODULES = ('genmsg', 'em.py', 'rospkg', 'catkin_pkg', 'pyparsing', 'yaml', 'dateutil',
@@ -79,8 +80,7 @@ def noetic(tmp_path_factory):
     _make_prefix(layout.prefix)
     # A wheel from a copy of the sources (the tree stays clean), installed
     # into a venv without system site packages, with no Debian-only flag.
-    source = os.path.join(root, 'source')
-    shutil.copytree(REPO, source, ignore=shutil.ignore_patterns('.git', 'build', '*.egg-info'))
+    source = copy_sources(root)
     wheels = os.path.join(root, 'wheels')
     subprocess.run([sys.executable, '-m', 'pip', 'wheel', '--quiet', '--no-deps', '--no-build-isolation',
                     '-w', wheels, source], check=True, capture_output=True)

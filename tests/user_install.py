@@ -1,6 +1,6 @@
-"""Installing colcon-mros as an ordinary user or into a venv, for the tests
-that do (test_user_installs.py, test_install.py): one install and how to run
-a command with it."""
+"""Installing colcon-mros outside the system package, for the tests that do
+(test_user_installs.py, test_install.py, test_noetic_layout.py): a copy of
+the sources to build from, and one install and how to run a command with it."""
 
 import os
 import shutil

@@ -1,8 +1,8 @@
 """Runs the serialization benchmark's sides and prints the table.
 
 Every measurement is a process of its own (bench_SIDE.LAYOUT time INSTANCE
-OPERATION SECONDS HEAP_SHIFT), so each side starts with a fresh allocator, warms up,
-and reports the median time per call over its batches. The sides run in
+OPERATION SECONDS HEAP_SHIFT), so each side starts with a fresh allocator,
+warms up, and reports the median time per call over its batches. The sides run in
 rounds, in a different order each round, so drift of the machine's speed
 hits them alike; a ratio is the median of the per-round ratios, with their
 range.
@@ -100,7 +100,8 @@ def main():
             rows.append((name, operation, size, sides, rounds))
 
     print('Median ns per call over %d rounds (each a fresh process per side: warm-up, then the median of 15 '
-          'batches; every side of a round in the same code layout and heap shift, another each round); speed ratios are roscpp time / genmros time, median (min-max) of the rounds.'
+          'batches; every side of a round in the same code layout and heap shift, another each round); '
+          'speed ratios are roscpp time / genmros time, median (min-max) of the rounds.'
           % arguments.rounds)
     print()
     header = ['message', 'op', 'bytes', 'roscpp ns', 'genmros ns', 'genmros vs roscpp',
