@@ -19,6 +19,9 @@
 #                         package.xml) and installed prefixes (with share/<pkg>/msg);
 #                         default: the ROS environment genmros finds
 #   MROS_MSG_INCLUDE_DIR  output directory (default: include, the app's include dir)
+#   MROS_MSG_DEFINITION_TEXT  full (default: gencpp's definition texts) or
+#                         compact (without comments and blank lines: less flash,
+#                         the same MD5 sums)
 #   MROS_MSG_FLAGS        further genmros export flags
 #   GENMROS               the genmros command (default: genmros)
 #
@@ -27,6 +30,7 @@
 
 GENMROS ?= genmros
 MROS_MSG_INCLUDE_DIR ?= include
+MROS_MSG_DEFINITION_TEXT ?= full
 
 ifeq ($(strip $(MROS_MSG_TYPES)),)
 $(error genmros.mk: MROS_MSG_TYPES names no message type (pkg/Type ...))
@@ -42,7 +46,7 @@ _mros_msg_args := export -o $(MROS_MSG_INCLUDE_DIR) \
   $(addprefix --type ,$(MROS_MSG_TYPES)) \
   $(addprefix --underlay ,$(_mros_msg_prefixes)) \
   $(addprefix --workspace ,$(_mros_msg_sources)) \
-  $(MROS_MSG_FLAGS)
+  --definition-text $(MROS_MSG_DEFINITION_TEXT) $(MROS_MSG_FLAGS)
 
 # genmros lists in this file the definitions the headers come from, as rules
 # whose change remakes it; make remakes an included makefile before anything

@@ -2,15 +2,18 @@
 # welcome: nothing of ROS is needed but the .msg files and genmros).
 #
 #   mros_import_messages(TARGET t EXPORT_DIR dir [TYPES pkg/Type ...]
-#                        [STORAGE heap|bounded] [OPTIONS file ...])
+#                        [STORAGE heap|bounded] [OPTIONS file ...]
+#                        [DEFINITION_TEXT full|compact])
 #     Use the headers a ROS build exported (catkin with MROS_EXPORT_DIR, or
 #     colcon build --mros-export): dir/include/<pkg>/<Type>.h. Without TYPES,
-#     every type the export dir holds. A ROS build exports heap storage only:
-#     with STORAGE bounded the headers are generated anew from the
-#     definitions the export dir holds (dir/share), for t alone.
+#     every type the export dir holds. A ROS build exports heap storage and
+#     full definition texts only: with STORAGE bounded or DEFINITION_TEXT
+#     compact the headers are generated anew from the definitions the export
+#     dir holds (dir/share), for t alone.
 #
 #   mros_generate_messages(TARGET t TYPES pkg/Type ... [PACKAGE_PATHS dir ...]
-#                          [STORAGE heap|bounded] [OPTIONS file ...])
+#                          [STORAGE heap|bounded] [OPTIONS file ...]
+#                          [DEFINITION_TEXT full|compact])
 #     Generate the headers at build time from .msg files. Each PACKAGE_PATHS
 #     entry is an installed prefix (dir/share/<pkg>/msg, as ROS installs them
 #     and as an export dir holds them) or one source tree of packages (found
@@ -24,7 +27,10 @@
 # directories. STORAGE bounded holds strings and variable arrays in the
 # message, with the maxima of the OPTIONS files and of each package's
 # msg/genmros.options (genmros export --storage bounded --options); editing
-# any of them regenerates the headers. Installed as
+# any of them regenerates the headers. DEFINITION_TEXT compact puts each
+# type's definition text into the headers without comments and blank lines
+# (genmros export --definition-text compact): less flash, same MD5 sums.
+# Installed as
 # <prefix>/share/genmros/cmake/mros_generate.cmake; find_package(genmros)
 # includes it.
 
@@ -75,8 +81,16 @@ function(_mros_attach ARG_TARGET ARG_OUTPUT_DIR ARG_GENMROS_ARGS ARG_DEPENDS ARG
   target_include_directories(${ARG_TARGET} PUBLIC ${ARG_INCLUDE_DIRS})
 endfunction()
 
-# genmros' storage arguments from STORAGE and OPTIONS, checked.
-function(_mros_storage_args ARG_FUNCTION ARG_STORAGE ARG_OPTIONS ARG_OUTPUT_VAR)
+# genmros' arguments for the headers' form, from STORAGE, OPTIONS and
+# DEFINITION_TEXT, checked.
+function(_mros_form_args ARG_FUNCTION ARG_STORAGE ARG_OPTIONS ARG_DEFINITION_TEXT ARG_OUTPUT_VAR)
+  if(NOT ARG_DEFINITION_TEXT)
+    set(ARG_DEFINITION_TEXT full)
+  endif()
+  if(NOT ARG_DEFINITION_TEXT MATCHES "^(full|compact)$")
+    message(FATAL_ERROR "${ARG_FUNCTION}(): DEFINITION_TEXT is full or compact, not "
+      "'${ARG_DEFINITION_TEXT}'")
+  endif()
   if(NOT ARG_STORAGE)
     set(ARG_STORAGE heap)
   endif()
@@ -86,7 +100,7 @@ function(_mros_storage_args ARG_FUNCTION ARG_STORAGE ARG_OPTIONS ARG_OUTPUT_VAR)
   if(ARG_OPTIONS AND ARG_STORAGE STREQUAL "heap")
     message(FATAL_ERROR "${ARG_FUNCTION}(): OPTIONS sets bounds, which only STORAGE bounded uses")
   endif()
-  set(arguments --storage ${ARG_STORAGE})
+  set(arguments --storage ${ARG_STORAGE} --definition-text ${ARG_DEFINITION_TEXT})
   foreach(file ${ARG_OPTIONS})
     get_filename_component(file "${file}" ABSOLUTE)
     if(NOT EXISTS "${file}")
@@ -122,7 +136,7 @@ function(_mros_export_now ARG_FUNCTION ARG_GENMROS_ARGS ARG_OUTPUT_DIR ARG_OUTPU
 endfunction()
 
 function(mros_import_messages)
-  cmake_parse_arguments(ARG "" "TARGET;EXPORT_DIR;STORAGE" "TYPES;OPTIONS" ${ARGN})
+  cmake_parse_arguments(ARG "" "TARGET;EXPORT_DIR;STORAGE;DEFINITION_TEXT" "TYPES;OPTIONS" ${ARGN})
   _mros_check_arguments(mros_import_messages "${ARG_TARGET}" "${ARG_UNPARSED_ARGUMENTS}")
   get_filename_component(export_dir "${ARG_EXPORT_DIR}" ABSOLUTE)
   if(NOT ARG_EXPORT_DIR OR NOT EXISTS "${export_dir}/include/mros_message_support.h")
@@ -145,7 +159,8 @@ function(mros_import_messages)
     message(FATAL_ERROR "mros_import_messages(): EXPORT_DIR '${export_dir}' holds no message types")
   endif()
 
-  _mros_storage_args(mros_import_messages "${ARG_STORAGE}" "${ARG_OPTIONS}" storage_args)
+  _mros_form_args(mros_import_messages "${ARG_STORAGE}" "${ARG_OPTIONS}" "${ARG_DEFINITION_TEXT}"
+    form_args)
   set(genmros_args --underlay "${export_dir}")
   set(headers "")
   foreach(type ${types})
@@ -159,9 +174,10 @@ function(mros_import_messages)
 
   _mros_output_dir(${ARG_TARGET} output_dir)
   list(APPEND genmros_args -o "${output_dir}")
-  if(ARG_STORAGE STREQUAL "bounded")
-    # Every header anew, bounded: the export's heap headers stay out of t.
-    list(APPEND genmros_args ${storage_args})
+  if(ARG_STORAGE STREQUAL "bounded" OR ARG_DEFINITION_TEXT STREQUAL "compact")
+    # Every header anew, in the form asked for: the export's heap headers
+    # with full texts stay out of t.
+    list(APPEND genmros_args ${form_args})
     _mros_export_now(mros_import_messages "${genmros_args}" "${output_dir}" inputs)
     _mros_attach(${ARG_TARGET} "${output_dir}" "${genmros_args}" "${inputs}" "${output_dir}")
   else()
@@ -173,13 +189,14 @@ function(mros_import_messages)
 endfunction()
 
 function(mros_generate_messages)
-  cmake_parse_arguments(ARG "" "TARGET;STORAGE" "TYPES;PACKAGE_PATHS;OPTIONS" ${ARGN})
+  cmake_parse_arguments(ARG "" "TARGET;STORAGE;DEFINITION_TEXT" "TYPES;PACKAGE_PATHS;OPTIONS" ${ARGN})
   _mros_check_arguments(mros_generate_messages "${ARG_TARGET}" "${ARG_UNPARSED_ARGUMENTS}")
   if(NOT ARG_TYPES)
     message(FATAL_ERROR "mros_generate_messages(): TYPES lists no message type")
   endif()
 
-  _mros_storage_args(mros_generate_messages "${ARG_STORAGE}" "${ARG_OPTIONS}" genmros_args)
+  _mros_form_args(mros_generate_messages "${ARG_STORAGE}" "${ARG_OPTIONS}" "${ARG_DEFINITION_TEXT}"
+    genmros_args)
   set(workspace "")
   foreach(path ${ARG_PACKAGE_PATHS})
     get_filename_component(path "${path}" ABSOLUTE)

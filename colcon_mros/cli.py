@@ -5,7 +5,8 @@ import os
 import sys
 
 from colcon_mros import __version__
-from colcon_mros.defaults import DEFAULT_VARIABLE_SIZE_BUDGET, EXPORT_PARTS, STORAGE_KINDS
+from colcon_mros.defaults import (DEFAULT_VARIABLE_SIZE_BUDGET, DEFINITION_TEXTS, EXPORT_PARTS,
+                                  STORAGE_KINDS)
 from colcon_mros.errors import GenmrosError
 from colcon_mros.export_claims import ExportClaims
 from colcon_mros.installed_files import CATKIN_MARKER, CMAKE_CONFIG, MAKE_FRAGMENT, installed_file
@@ -24,7 +25,8 @@ Generate mROS message headers from ROS 1 .msg and .srv files.
       the headers of the selected types and every type they contain, plus the
       per-firmware aggregates message_headers.h, message_class_specialization.h
       and msg_max_size.h for the selected types. Without --package or --type:
-      every type in WS.
+      every type in WS. (genmros export --help lists the options: storage,
+      definition text, depfile.)
 
   genmros make-fragment
       prints the path of genmros.mk, the fragment an mROS v1 app's Makefile
@@ -98,6 +100,11 @@ def _export_parser():
                         help="bounds for --storage bounded: lines 'pkg/Type.field max_size:N "
                              "max_count:N' or '* ...' (repeatable; each package's "
                              'msg/genmros.options is read too)')
+    parser.add_argument('--definition-text', choices=DEFINITION_TEXTS, default='full',
+                        help="the definition text each header carries: gencpp's (full, default; "
+                             'what roscpp sends as message_definition) or the same declarations '
+                             'without comments and blank lines (compact: less flash; the MD5 '
+                             'sum and what ROS tools decode from the text are the same)')
     parser.add_argument('--depfile', metavar='FILE',
                         help='also write FILE, a make rule naming every .msg/.srv file and '
                              'options file the headers come from')
@@ -115,7 +122,7 @@ def main(argv=None):
                             options.workspaces, options.packages, options.types,
                             options.variable_size_budget, options.template_dir,
                             options.only or 'all', options.depfile, options.storage,
-                            options.option_files)
+                            options.option_files, options.definition_text)
             print('genmros: exported %d message and %d service types to %s'
                   % (len(result.messages), len(result.services), options.output_dir))
         elif argv == ['make-fragment']:

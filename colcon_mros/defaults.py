@@ -13,3 +13,7 @@ DEFAULT_VARIABLE_SIZE_BUDGET = 1024
 
 # How strings and variable arrays are stored (colcon_mros.storage).
 STORAGE_KINDS = ('heap', 'bounded')
+
+# Which definition text the headers carry (colcon_mros.identity): gencpp's,
+# or the same declarations without comments, for a firmware's flash.
+DEFINITION_TEXTS = ('full', 'compact')

@@ -100,7 +100,7 @@ def _depfile_text(target, inputs):
 
 def export(output_dir, prefixes, workspaces=(), package_names=(), type_names=(),
            variable_budget=DEFAULT_VARIABLE_SIZE_BUDGET, template_dir=None, only='all',
-           depfile=None, storage_kind='heap', option_files=()):
+           depfile=None, storage_kind='heap', option_files=(), definition_text='full'):
     """Export the selected types; prefixes=None searches the ROS environment."""
     packages = environment_packages() if prefixes is None else installed_packages(prefixes)
     local = {}
@@ -115,7 +115,7 @@ def export(output_dir, prefixes, workspaces=(), package_names=(), type_names=(),
     storage = storage_for(storage_kind, option_files, search_path)
     loader = SpecLoader(search_path)
     storage.check(loader)
-    builder = ModelBuilder(loader, storage)
+    builder = ModelBuilder(loader, storage, definition_text)
     renderer = Renderer(template_dir)
     roots = [loader.load_message_file(path, package).full_name
              for package, path in selection.messages]

@@ -14,6 +14,36 @@ import hashlib
 from genmsg.msgs import bare_msg_type, is_builtin
 
 _SEPARATOR = '=' * 80 + '\n'
+_COMMENT = '#'
+_CONSTANT = '='
+
+
+def _tokens(declaration):
+    """The words of a declaration, split as genmsg splits them (on spaces)."""
+    return [word for word in (piece.strip() for piece in declaration.split(' ')) if word]
+
+
+def _compact_line(line):
+    """One line of a .msg text as genmsg reads it, in the fewest bytes; None
+    for a line without a declaration."""
+    declaration = line.split(_COMMENT)[0].strip()
+    if not declaration:
+        return None
+    tokens = _tokens(declaration)
+    if _CONSTANT not in declaration:
+        return ' '.join(tokens)
+    if tokens[0] == 'string':
+        # A string constant's value is the rest of the line, '#' and all.
+        return line
+    name, _, value = ' '.join(tokens[1:]).partition(_CONSTANT)
+    return '%s %s=%s' % (tokens[0], name.strip(), value.strip())
+
+
+def compact_text(text):
+    """A .msg text without its comments, blank lines and repeated blanks:
+    the declarations genmsg reads from text, unchanged."""
+    lines = (_compact_line(line) for line in text.split('\n'))
+    return '\n'.join(line for line in lines if line is not None)
 
 
 def _nested_types(spec):
@@ -88,12 +118,14 @@ class Identities:
                 self._closure[name] = list(contained)
         return self._closure[full_name]
 
-    def full_text(self, full_name):
+    def full_text(self, full_name, compact=False):
         """The definition text with those of the types it contains, as
-        genmsg's compute_full_text gives it."""
-        spec = self._context.get_registered(full_name)
-        pieces = [spec.text, '\n']
+        genmsg's compute_full_text gives it; compact: each type's text
+        without comments, blank lines and repeated blanks."""
+        def text_of(name):
+            text = self._context.get_registered(name).text
+            return compact_text(text) if compact else text
+        pieces = [text_of(full_name), '\n']
         for nested in self._contained(full_name):
-            pieces.extend([_SEPARATOR, 'MSG: %s\n' % nested,
-                           self._context.get_registered(nested).text, '\n'])
+            pieces.extend([_SEPARATOR, 'MSG: %s\n' % nested, text_of(nested), '\n'])
         return ''.join(pieces)[:-1]

@@ -13,6 +13,7 @@ import zlib
 from genmsg.msgs import is_valid_msg_field_name, parse_type
 
 from colcon_mros.errors import GenmrosError
+from colcon_mros.floats import FLOAT32_SMALLEST_NORMAL, round_to_type
 from colcon_mros.names import member_identifier
 from colcon_mros.storage import HeapStorage
 
@@ -37,6 +38,10 @@ BUILTIN_TYPES = {
     'time': ('mros::Time', 8),
     'duration': ('mros::Duration', 8),
 }
+
+# Header guards of message headers start with this; a header includes those
+# of the types it contains and checks their guards.
+MESSAGE_GUARD_PREFIX = 'MROS_MSG'
 
 STRING_MIN_SIZE = 4
 # The int32_t results of serialize() and deserialize() bound every message.
@@ -138,6 +143,12 @@ def cpp_constant_literal(ros_type, value):
         if math.isinf(value):
             sign = '-' if value < 0 else ''
             return '%sstd::numeric_limits<%s>::infinity()' % (sign, cpp_type)
+        held = round_to_type(ros_type, value)
+        # A literal that rounds to zero or to a subnormal float draws a
+        # warning from C++ compilers: such a constant is written as the value
+        # the float holds, exactly. Other literals keep the definition's digits.
+        if cpp_type == 'float' and abs(held) < FLOAT32_SMALLEST_NORMAL:
+            value = held
         text = repr(float(value))
         text = text if ('.' in text or 'e' in text) else text + '.0'
         return text + 'f' if cpp_type == 'float' else text
@@ -223,6 +234,7 @@ class NamedType:
         self.full_name = full_name
         self.package, self.name = full_name.split('/', 1)
         self.cpp_name = '%s::%s' % (self.package, self.name)
+        self.header = '%s.h' % full_name
         # The package's length keeps a_b/C and a/b_C apart; the case is kept.
         self.header_guard = '%s_%d_%s_%s_H' % (guard_prefix, len(self.package), self.package,
                                                self.name)
@@ -231,11 +243,13 @@ class NamedType:
 class Message(NamedType):
     """One message type (or one half of a service) ready for rendering."""
 
-    def __init__(self, full_name, spec, identities, declarations, element_of, storage):
-        super().__init__(full_name, 'MROS_MSG')
+    def __init__(self, full_name, spec, identities, declarations, element_of, storage,
+                 definition_text='full'):
+        super().__init__(full_name, MESSAGE_GUARD_PREFIX)
         self.source = declarations.path
         self.origin = origin(self.package, self.source)
         self._identities = identities
+        self.compact_definition = definition_text == 'compact'
         self.type_id = type_id(full_name)
         self.constants = [Constant(constant, line) for constant, line
                           in zip(spec.constants, declarations.constant_lines)]
@@ -244,7 +258,7 @@ class Message(NamedType):
             bounds = storage.field_bounds(full_name, name, ros_type, self.source, line)
             self.fields.append(Field(name, ros_type, element_of(ros_type, bounds), bounds, line))
         self.dependencies = sorted({f.element_type for f in self.fields if '/' in f.element_type})
-        self.includes = ['%s.h' % dependency for dependency in self.dependencies]
+        self.includes = [NamedType(dependency, MESSAGE_GUARD_PREFIX) for dependency in self.dependencies]
         self.min_size = sum(f.min_size for f in self.fields)
         unbounded = [f for f in self.fields if f.max_size is None]
         # The largest wire image, where one exists: fixed-size types, and every
@@ -270,7 +284,8 @@ class Message(NamedType):
 
     @functools.cached_property
     def definition(self):
-        return gencpp_definition_text(self._identities.full_text(self.full_name))
+        return gencpp_definition_text(
+            self._identities.full_text(self.full_name, self.compact_definition))
 
     @functools.cached_property
     def definition_lines(self):
@@ -307,9 +322,10 @@ class Service(NamedType):
 class ModelBuilder:
     """Turns specs loaded by a :class:`colcon_mros.parse.SpecLoader` into models."""
 
-    def __init__(self, loader, storage=None):
+    def __init__(self, loader, storage=None, definition_text='full'):
         self.loader = loader
         self.storage = storage or HeapStorage()
+        self.definition_text = definition_text
         self._messages = {}
 
     def message(self, full_name):
@@ -318,7 +334,8 @@ class ModelBuilder:
             spec = self.loader.context.get_registered(full_name)
             self._messages[full_name] = Message(
                 full_name, spec, self.loader.identities,
-                self.loader.declarations(full_name), self._element, self.storage)
+                self.loader.declarations(full_name), self._element, self.storage,
+                self.definition_text)
         return self._messages[full_name]
 
     def service(self, spec):

@@ -7,10 +7,12 @@ syntax error by handing genmsg the file's declarations one line at a time
 (linear in the file's length), and loads dependencies itself, one field at a
 time, so a missing or recursive type is reported at the field that names it.
 It also refuses what genmsg accepts but C++ cannot take (see
-:mod:`colcon_mros.names`) and integer constants beyond their type, which
-genmsg checks in floating point.
+:mod:`colcon_mros.names`), integer constants beyond their type, which
+genmsg checks in floating point, and floating-point constants beyond their
+type, which genmsg does not check.
 """
 
+import math
 import os
 import sys
 
@@ -20,6 +22,7 @@ from genmsg.msgs import bare_msg_type, is_builtin, parse_type
 from genmsg.names import is_legal_resource_base_name
 
 from colcon_mros.errors import GenmrosError
+from colcon_mros.floats import FLOAT_LIMITS, round_to_type
 from colcon_mros.identity import Identities
 from colcon_mros.names import (check_member_name, check_service_name, check_type_name,
                                check_type_named_like_package, check_unique_headers, headers_of)
@@ -120,6 +123,25 @@ def _check_integer_constants(spec, declarations):
             lower, upper = -(1 << (bits - 1)), (1 << (bits - 1)) - 1
         if not lower <= constant.val <= upper:
             raise GenmrosError('cannot coerce [%s] to %s (out of bounds)' % (constant.val, constant.type),
+                               declarations.path, line)
+
+
+def _is_infinity_text(text):
+    return text.strip().lstrip('+-').lower() in ('inf', 'infinity')
+
+
+def _check_float_constants(spec, declarations):
+    """genmsg takes any float() text, so float32 X=1e39 and float64 Y=1e400
+    pass, and C++ would not compile them: a finite value beyond the type's
+    range is refused (infinity is spelled 'inf')."""
+    for constant, line in zip(spec.constants, declarations.constant_lines):
+        if constant.type not in FLOAT_LIMITS or _is_infinity_text(constant.val_text):
+            continue
+        largest = FLOAT_LIMITS[constant.type]
+        if math.isinf(constant.val) or (not math.isnan(constant.val) and abs(constant.val) > largest
+                                        and math.isinf(round_to_type(constant.type, constant.val))):
+            raise GenmrosError('%s constant %s is beyond the range of %s (largest finite value %r)'
+                               % (constant.type, constant.val_text, constant.type, largest),
                                declarations.path, line)
 
 
@@ -246,6 +268,7 @@ class SpecLoader:
         declarations = self._declarations[spec.full_name]
         _check_member_names(spec, declarations)
         _check_integer_constants(spec, declarations)
+        _check_float_constants(spec, declarations)
         self._in_progress.append(spec.full_name)
         own_types = None
         for index, field_type in enumerate(spec.types):

@@ -14,7 +14,7 @@ import pytest
 
 from fixtures.build_integration.tools import (
     FIRMWARE_FIXTURE,
-    MESSAGE_PACKAGES, SUPPORT_HEADER, compile_headers, expected_header_names, genmros_export,
+    MESSAGE_PACKAGES, SUPPORT_HEADER, TEST_WS_SRC, compile_headers, expected_header_names, genmros_export,
     headers_under, new_workspace, package_headers, run, unwrapped, user_environment)
 
 GENMROS_INCLUDE = os.path.join('share', 'genmros', 'include')
@@ -199,3 +199,41 @@ def test_unwritable_export_dir_fails_the_configure_step(tmp_path):
     assert ("genmros: MROS_EXPORT_DIR '%s' cannot be created: '%s' is not a directory"
             % (export_dir, blocker)) in unwrapped(result.stdout)
     assert not os.path.exists(os.path.join(workspace, 'devel', 'share', 'genmros'))
+
+
+def test_export_dir_from_the_environment_holds_until_turned_off(tmp_path):
+    """MROS_EXPORT_DIR=DIR catkin build: a later build that reconfigures
+    without the variable (a CMakeLists.txt edit) still fills the export; the
+    export stops with -DMROS_EXPORT_DIR=, and the variable alone does not
+    bring it back, saying so."""
+    workspace = str(tmp_path / 'ws')
+    shutil.copytree(os.path.join(TEST_WS_SRC, 'mros_test_base'),
+                    os.path.join(workspace, 'src', 'mros_test_base'))
+    package = os.path.join(workspace, 'src', 'mros_test_base')
+    export_dir = str(tmp_path / 'export')
+    build = ['catkin', 'build', '--no-status', '--no-notify', '--verbose']
+    run(['catkin', 'init'], workspace)
+    run(build, workspace, env=user_environment(MROS_EXPORT_DIR=export_dir))
+    exported = os.path.join(export_dir, 'include', 'mros_test_base')
+    assert sorted(os.listdir(exported)) == ['Labeled.h', 'Vector3i.h']
+
+    def replace_message(old, new):
+        os.remove(os.path.join(package, 'msg', old + '.msg'))
+        with open(os.path.join(package, 'msg', new + '.msg'), 'w') as stream:
+            stream.write('int32 value\n')
+        with open(os.path.join(package, 'CMakeLists.txt')) as stream:
+            text = stream.read()
+        with open(os.path.join(package, 'CMakeLists.txt'), 'w') as stream:
+            stream.write(text.replace(old + '.msg', new + '.msg'))
+
+    replace_message('Labeled', 'Added')
+    log = run(build, workspace).stdout
+    assert 'Generating mROS headers from mros_test_base/Added.msg' in log
+    assert sorted(os.listdir(exported)) == ['Added.h', 'Vector3i.h']
+
+    run(build + ['--cmake-args', '-DMROS_EXPORT_DIR='], workspace)
+    replace_message('Added', 'Later')
+    log = run(build + ['--force-cmake'], workspace, env=user_environment(MROS_EXPORT_DIR=export_dir)).stdout
+    assert "genmros: MROS_EXPORT_DIR in the environment ('%s') is ignored" % export_dir in unwrapped(log)
+    assert os.path.isfile(os.path.join(workspace, 'devel', GENMROS_INCLUDE, 'mros_test_base', 'Later.h'))
+    assert sorted(os.listdir(exported)) == ['Added.h', 'Vector3i.h']

@@ -42,6 +42,16 @@ def _type_per_line(prefix, declarations):
             for index, declaration in enumerate(declarations)]
 
 
+# Floating-point constants at the edges of their types: those that round to
+# zero or to a subnormal compile without a warning and hold the value the
+# type holds after the conversion (test_float_constants_hold_what_their_type_holds).
+FLOAT_LIMITS_MSG = (
+    'float32 F32_TO_ZERO=1e-50\nfloat32 F32_TO_MINUS_ZERO=-1e-50\nfloat32 F32_SUBNORMAL=1e-40\n'
+    'float32 F32_SMALLEST=1.4e-45\nfloat32 F32_MAX=3.4028235e38\nfloat32 F32_ROUNDS_TO_MAX=3.40282356e38\n'
+    'float32 F32_LOWEST=-3.4028235e38\nfloat32 F32_INF=inf\nfloat32 F32_TENTH=0.1\n'
+    'float64 F64_TO_ZERO=1e-400\nfloat64 F64_SUBNORMAL=5e-324\nfloat64 F64_MAX=1.7976931348623157e308\n'
+    'float64 F64_MINUS_INF=-Infinity\nint32 value\n')
+
 # Accepted: (case id, {path in package hostile_ok: text}). A field or
 # constant named like something C++ or the generated code owns is renamed
 # with a trailing underscore; everything else keeps its name.
@@ -70,6 +80,7 @@ ACCEPTED = [
         'int64 I64_MIN=-9223372036854775808\nint64 I64_MAX=9223372036854775807\n'
         'uint64 U64_MAX=18446744073709551615\nint32 I32_MIN=-2147483648\nint8 I8_MIN=-128\n'
         'uint32 U32_MAX=4294967295\nint16 I16_MIN=-32768\nbyte B=-128\nchar C=255\nint32 value\n')}),
+    ('float-constants-at-their-limits', {'msg/FloatLimits.msg': FLOAT_LIMITS_MSG}),
     ('string-constants-with-escapes', {'msg/Quotes.msg': (
         'string QUOTE="quoted" \\\\ back\nstring TRIGRAPH=??= ??/ ??\'\nstring HASH=a # not a comment\n'
         'int32 value\n')}),
@@ -181,6 +192,16 @@ REFUSED = [
     ('int64-just-past-min', 'hostile_bad', {'msg/A.msg': 'int64 X=-9223372036854775809\n'}, 'msg/A.msg', ':1:',
      'out of bounds'),
     ('uint32-past-max', 'hostile_bad', {'msg/A.msg': 'uint32 X=4294967296\n'}, 'msg/A.msg', ':1:', 'out of bounds'),
+    ('float32-beyond-max', 'hostile_bad', {'msg/A.msg': 'int8 a\nfloat32 X=1e39\n'}, 'msg/A.msg', ':2:',
+     'float32 constant 1e39 is beyond the range of float32 (largest finite value 3.4028234663852886e+38)'),
+    ('float32-just-beyond-max', 'hostile_bad', {'msg/A.msg': 'float32 X=3.4028236e38\n'}, 'msg/A.msg', ':1:',
+     'float32 constant 3.4028236e38 is beyond the range of float32'),
+    ('float32-beyond-lowest', 'hostile_bad', {'msg/A.msg': 'float32 X=-1e39\n'}, 'msg/A.msg', ':1:',
+     'float32 constant -1e39 is beyond the range of float32'),
+    ('float64-beyond-max', 'hostile_bad', {'msg/A.msg': 'float64 Y=1e400\n'}, 'msg/A.msg', ':1:',
+     'float64 constant 1e400 is beyond the range of float64 (largest finite value 1.7976931348623157e+308)'),
+    ('float64-beyond-lowest', 'hostile_bad', {'msg/A.msg': 'int8 a\nint8 b\nfloat64 Y=-2e308\n'}, 'msg/A.msg',
+     ':3:', 'float64 constant -2e308 is beyond the range of float64'),
     ('srv-second-separator', 'hostile_bad', {'srv/A.srv': 'int32 a\n---\nint32 b\n---\nint32 c\nfloat32 1x\n'},
      'srv/A.srv', ':6:', '1x is not a legal message field name'),
     ('srv-second-separator-duplicate', 'hostile_bad', {'srv/A.srv': 'int32 a\n---\nint32 b\n---\nint32 b\n'},
@@ -396,6 +417,32 @@ def test_accepted_messages_round_trip_under_asan(accepted_export, tmp_path):
     _run(['g++', '-std=gnu++98', '-O1', '-o', program, str(source), '-I' + output] + STRICT + SANITIZERS)
     result = _run([program, str(tmp_path / 'images.bin')])
     assert '%d images, 0 failures' % (6 * len(full_names)) in result.stdout
+
+
+def test_float_constants_hold_what_their_type_holds(accepted_export, tmp_path):
+    """Each constant's bits equal the definition's text converted to the type,
+    as a C++ float or double holds it (and as struct packs it)."""
+    _, _, output = accepted_export
+    constants = [line.split(' ', 1) for line in FLOAT_LIMITS_MSG.splitlines() if '=' in line]
+    prints = []
+    for ros_type, declaration in constants:
+        name = declaration.split('=')[0]
+        cpp_type, integer = ('float', 'uint32_t') if ros_type == 'float32' else ('double', 'uint64_t')
+        prints.append('  { %s v = hostile_ok::FloatLimits::%s; %s bits; memcpy(&bits, &v, sizeof bits);\n'
+                      '    printf("%s %%llx\\n", static_cast<unsigned long long>(bits)); }'
+                      % (cpp_type, name, integer, name))
+    source = tmp_path / 'float_constants.cpp'
+    source.write_text('#include <stdio.h>\n#include <string.h>\n#include <hostile_ok/FloatLimits.h>\n'
+                      'int main() {\n%s\n  return 0;\n}\n' % '\n'.join(prints))
+    expected = []
+    for ros_type, declaration in constants:
+        name, text = declaration.split('=')
+        packed = struct.pack('<f', float(text)) if ros_type == 'float32' else struct.pack('<d', float(text))
+        expected.append('%s %x' % (name, int.from_bytes(packed, 'little')))
+    for mode in LANGUAGE_MODES:
+        program = str(tmp_path / ('float_constants_' + mode))
+        _run(['g++', '-std=' + mode, '-o', program, str(source), '-I' + output] + STRICT)
+        assert _run([program]).stdout.splitlines() == expected, mode
 
 
 def test_empty_elements_in_nested_arrays_stay_within_the_allocation_bound(accepted_export, tmp_path):

@@ -78,18 +78,34 @@ def test_a_user_install_registers_the_generator_through_its_catkin_prefix(tmp_pa
         prefix = user.run(['genmros', 'catkin-prefix'], user.root).stdout.strip()
         assert prefix == os.path.join(user.prefix, 'share', 'genmros', 'catkin_prefix')
         header = os.path.join('devel', 'share', 'genmros', 'include', 'mros_test_base', 'Vector3i.h')
+        # The README's line, run where ~/.local/bin is not on PATH yet.
+        registration = _readme_catkin_prefix_line()
         for registered in (True, False):
             workspace = os.path.join(user.root, 'ws_%s' % registered)
             shutil.copytree(os.path.join(TEST_WS, 'src', 'mros_test_base'),
                             os.path.join(workspace, 'src', 'mros_test_base'))
             subprocess.run(['chown', '-R', '%d:%d' % (NOBODY, NOBODY), workspace], check=True)
-            variables = {'CMAKE_PREFIX_PATH': prefix} if registered else {}
-            log = user.run(['catkin_make'], workspace, **variables).stdout
+            script = '%s && catkin_make' % registration if registered else 'catkin_make'
+            log = user.run(['bash', '-c', script], workspace, bin_on_path=False).stdout
             assert os.path.isfile(os.path.join(workspace, header)) == registered, log[-2000:]
         user.run(['/usr/bin/python3', '-m', 'pip', 'uninstall', '--yes', '--quiet'] +
                  [flag for flag in pip_flags() if flag == '--break-system-packages'] + ['colcon-mros'],
                  user.root)
         assert not os.path.exists(prefix)
+        # Without the install the line fails, saying why, and sets nothing.
+        result = user.run(['bash', '-c', registration + ' && echo "set: $CMAKE_PREFIX_PATH"'], user.root,
+                          check=False, bin_on_path=False)
+        assert result.returncode != 0 and 'set:' not in result.stdout
+        assert 'No module named colcon_mros' in result.stderr
     finally:
         _run([os.path.join(REPO, 'scripts', 'setup.sh')], REPO)
         shutil.rmtree(user.root)
+
+
+def _readme_catkin_prefix_line():
+    """The README's command that puts an install's catkin prefix on CMAKE_PREFIX_PATH."""
+    with open(os.path.join(REPO, 'README.md')) as readme:
+        lines = [line.split('#')[0].strip() for line in readme
+                 if 'catkin-prefix' in line and line.lstrip().startswith('prefix=')]
+    assert len(set(lines)) == 1, lines
+    return lines[0]

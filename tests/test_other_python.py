@@ -1,7 +1,9 @@
 """Another python3 first on PATH (a venv, pyenv, conda): the README's fix works.
 
-catkin's CMake takes the first python3 on PATH, which cannot import catkin_pkg;
--DPYTHON_EXECUTABLE=/usr/bin/python3 gives it Debian's, and genmros then runs.
+catkin's CMake takes the first python3 on PATH, which cannot import catkin_pkg,
+even under Debian's /usr/bin/colcon; -DPYTHON_EXECUTABLE=/usr/bin/python3 or
+/usr/bin first on PATH gives it Debian's, and genmros then runs. The README
+says exactly these.
 """
 
 import os
@@ -45,4 +47,22 @@ def test_catkin_make_needs_the_fix_and_works_with_it(environment, tmp_path):
 def test_colcon_build_works_with_the_fix(environment, tmp_path):
     workspace = _workspace(str(tmp_path))
     run(['colcon', 'build', '--cmake-args', FIX], workspace, environment)
+    assert os.path.isfile(os.path.join(workspace, 'install', 'mros_test_base', HEADER))
+
+
+def test_debian_colcon_alone_is_no_fix(environment, tmp_path):
+    workspace = _workspace(str(tmp_path))
+    failed = run(['/usr/bin/colcon', 'build'], workspace, environment, check=False)
+    assert failed.returncode != 0
+    with open(os.path.join(workspace, 'log', 'latest_build', 'mros_test_base', 'stdout_stderr.log')) as log:
+        assert "No module named 'catkin_pkg'" in log.read()
+
+
+def test_usr_bin_first_on_path_is_a_fix(environment, tmp_path):
+    fixed = dict(environment, PATH='/usr/bin' + os.pathsep + environment['PATH'])
+    workspace = _workspace(str(tmp_path / 'catkin_make'))
+    run(['catkin_make'], workspace, fixed)
+    assert os.path.isfile(os.path.join(workspace, 'devel', HEADER))
+    workspace = _workspace(str(tmp_path / 'colcon'))
+    run(['colcon', 'build'], workspace, fixed)
     assert os.path.isfile(os.path.join(workspace, 'install', 'mros_test_base', HEADER))

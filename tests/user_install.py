@@ -22,10 +22,14 @@ class Install:
         self.prefix = prefix  # where pip put bin/ and share/
         self.as_nobody = as_nobody
 
-    def run(self, command, cwd, check=True, **variables):
-        """command with only HOME, PATH (the install's bin/ first) and variables set."""
-        environment = ['HOME=%s' % self.home,
-                       'PATH=%s:/usr/bin:/bin' % os.path.join(self.prefix, 'bin')]
+    def run(self, command, cwd, check=True, bin_on_path=True, **variables):
+        """command with only HOME, PATH (the install's bin/ first, unless
+        bin_on_path is false: ~/.local/bin before the next login) and
+        variables set."""
+        path = '/usr/bin:/bin'
+        if bin_on_path:
+            path = '%s:%s' % (os.path.join(self.prefix, 'bin'), path)
+        environment = ['HOME=%s' % self.home, 'PATH=%s' % path]
         environment += ['%s=%s' % item for item in sorted(variables.items())]
         prefix = ['env', '-i'] + environment
         if self.as_nobody:

@@ -8,6 +8,8 @@
 # minus the same firmware without any message type (baseline.cpp).
 #   issue 7: genmros' headers against hand-written v1-style ones (handwritten/)
 #   issue 9: heap against bounded storage, and the RAM a firmware's buffers take
+#   issue 15: heap with the compact definition text against the full one, and
+#             the definition bytes of the Debian message set (definition_text.py)
 # Run by hand: bench/footprint/run.sh
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -25,10 +27,11 @@ common=("${cflags[@]}" -fno-exceptions -fno-rtti)
 link=(--specs=nosys.specs -Wl,--gc-sections)
 
 genmros() { PYTHONPATH="$repo" /usr/bin/python3 -m colcon_mros "$@" >/dev/null; }
-# include dir of genmros' export of one type: heap or bounded storage
-export_type() {  # name type storage
-  local flags=()
-  [ "$3" = bounded ] && flags=(--storage bounded --options "$here/bounds.options")
+# include dir of genmros' export of one type: heap or bounded storage, full or
+# compact definition text
+export_type() {  # name type storage definition_text
+  local flags=(--definition-text "$4")
+  [ "$3" = bounded ] && flags+=(--storage bounded --options "$here/bounds.options")
   genmros export --workspace "$repo/test_ws" --workspace "$here/msgs" --underlay /usr --type "$2" \
     -o "$work/$1" "${flags[@]}"
   echo "$work/$1"
@@ -66,8 +69,9 @@ declare -A handwritten=([personal]="$here/handwritten/mros_test" [usertype]="$he
 declare -A include
 for entry in "${types[@]}"; do
   read -r name ros_type _ _ <<<"$entry"
-  include[$name.heap]=$(export_type "$name.heap" "$ros_type" heap)
-  include[$name.bounded]=$(export_type "$name.bounded" "$ros_type" bounded)
+  include[$name.heap]=$(export_type "$name.heap" "$ros_type" heap full)
+  include[$name.compact]=$(export_type "$name.compact" "$ros_type" heap compact)
+  include[$name.bounded]=$(export_type "$name.bounded" "$ros_type" bounded full)
 done
 
 cost() {  # elf baseline_elf -> total bytes over the baseline
@@ -78,15 +82,17 @@ cost() {  # elf baseline_elf -> total bytes over the baseline
 
 echo "Bytes a message type adds to a firmware (text+data+bss over the baseline firmware without one):"
 echo
-echo "| CPU | type | hand-written v1 | genmros heap | genmros / hand-written | genmros bounded |"
-echo "|---|---|---:|---:|---:|---:|"
+echo "| CPU | type | hand-written v1 | genmros heap | genmros / hand-written | genmros bounded | heap, compact text | compact / full |"
+echo "|---|---|---:|---:|---:|---:|---:|---:|"
 for cpu in cortex-m0 cortex-m4 cortex-a9; do
   base=$(build "$cpu" "$work/$cpu.baseline" "" none "")
   for entry in "${types[@]}"; do
     read -r name _ cpp_type header <<<"$entry"
     read -r ht hd hb <<<"$(cost "$(build "$cpu" "$work/$cpu.$name.heap" "${include[$name.heap]}" "$cpp_type" "$header")" "$base")"
     read -r bt bd bb <<<"$(cost "$(build "$cpu" "$work/$cpu.$name.bounded" "${include[$name.bounded]}" "$cpp_type" "$header")" "$base")"
-    heap=$((ht + hd + hb)); bounded=$((bt + bd + bb))
+    read -r ct cd cb <<<"$(cost "$(build "$cpu" "$work/$cpu.$name.compact" "${include[$name.compact]}" "$cpp_type" "$header")" "$base")"
+    heap=$((ht + hd + hb)); bounded=$((bt + bd + bb)); compact=$((ct + cd + cb))
+    compact_ratio=$(awk -v a="$compact" -v b="$heap" 'BEGIN {printf "%.2fx", a / b}')
     if [ -n "${handwritten[$name]:-}" ]; then
       read -r wt wd wb <<<"$(cost "$(build "$cpu" "$work/$cpu.$name.hand" "${handwritten[$name]}" "$cpp_type" "$header")" "$base")"
       hand=$((wt + wd + wb))
@@ -94,7 +100,7 @@ for cpu in cortex-m0 cortex-m4 cortex-a9; do
     else
       hand="-"; ratio="-"
     fi
-    echo "| $cpu | $cpp_type | $hand | $heap | $ratio | $bounded |"
+    echo "| $cpu | $cpp_type | $hand | $heap | $ratio | $bounded | $compact | $compact_ratio |"
   done
 done
 
@@ -120,3 +126,5 @@ for entry in "${types[@]}"; do
 done
 echo
 echo "(bounded storage with bench/footprint/bounds.options; heap PUB_MSG_MAX_SIZE counts a type without a maximum as the 1024-byte budget)"
+echo
+PYTHONPATH="$repo" /usr/bin/python3 "$here/definition_text.py"

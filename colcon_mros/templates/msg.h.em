@@ -10,7 +10,12 @@
 #include <limits>
 @[end if]@
 @[for include in msg.includes]@
-#include <@(include)>
+#include <@(include.header)>
+@[end for]@
+@[for include in msg.includes]@
+#ifndef @(include.header_guard)
+#error "the @(include.header) found first is not genmros' (gencpp's?): compile against a genmros export dir's include/, which holds every type its headers include"
+#endif
 @[end for]@
 @[if msg.constants]@
 
@@ -124,7 +129,13 @@ struct DataTypeId<@(msg.cpp_name)*> {
   static int value() { return @(msg.cpp_name)::MROS_TYPE_ID; }
 };
 
+@[if msg.compact_definition]@
+// Definition text, with the texts of nested types, without comments and
+// blank lines (genmros export --definition-text compact): it declares the
+// same fields and constants as gencpp's text, so the MD5 sum is the same.
+@[else]@
 // Full definition text, with the texts of nested types, as gencpp gives it.
+@[end if]@
 template <>
 struct Definition<@(msg.cpp_name)*> {
   static const char* value() {

@@ -25,8 +25,24 @@ set(genmros_INSTALL_DIR share/genmros/include)
 # the include root, the parent of each package's output directory.
 set(GENMROS_SUPPORT_HEADER mros_message_support.h)
 
-if(NOT MROS_EXPORT_DIR AND NOT "$ENV{MROS_EXPORT_DIR}" STREQUAL "")
-  set(MROS_EXPORT_DIR "$ENV{MROS_EXPORT_DIR}")
+# The export is a cache setting, so a later configure (a CMakeLists.txt edit,
+# a new package) keeps it until -DMROS_EXPORT_DIR= turns it off. The
+# environment variable sets it where the cache has no say yet: on a package's
+# first configure.
+if(NOT DEFINED CACHE{MROS_EXPORT_DIR} AND NOT "$ENV{MROS_EXPORT_DIR}" STREQUAL "")
+  set(MROS_EXPORT_DIR "$ENV{MROS_EXPORT_DIR}" CACHE PATH
+    "genmros: also collect every mROS header of the workspace in this dir (empty: off)")
+elseif(NOT "$ENV{MROS_EXPORT_DIR}" STREQUAL "")
+  get_filename_component(_genmros_environment_dir "$ENV{MROS_EXPORT_DIR}" ABSOLUTE)
+  set(_genmros_cache_dir "$CACHE{MROS_EXPORT_DIR}")
+  if(_genmros_cache_dir)
+    get_filename_component(_genmros_cache_dir "${_genmros_cache_dir}" ABSOLUTE)
+  endif()
+  if(NOT _genmros_environment_dir STREQUAL _genmros_cache_dir)
+    message(WARNING "genmros: MROS_EXPORT_DIR in the environment ('$ENV{MROS_EXPORT_DIR}') is "
+      "ignored: the CMake cache holds '$CACHE{MROS_EXPORT_DIR}'; change it with "
+      "-DMROS_EXPORT_DIR=...")
+  endif()
 endif()
 
 # Fail at configure time, naming the directory, if the export dir cannot
