@@ -427,18 +427,21 @@ def test_float_constants_hold_what_their_type_holds(accepted_export, tmp_path):
     prints = []
     for ros_type, declaration in constants:
         name = declaration.split('=')[0]
-        cpp_type, integer = ('float', 'uint32_t') if ros_type == 'float32' else ('double', 'uint64_t')
-        prints.append('  { %s v = hostile_ok::FloatLimits::%s; %s bits; memcpy(&bits, &v, sizeof bits);\n'
-                      '    printf("%s %%llx\\n", static_cast<unsigned long long>(bits)); }'
-                      % (cpp_type, name, integer, name))
+        cpp_type = 'float' if ros_type == 'float32' else 'double'
+        prints.append('  { const %s v = hostile_ok::FloatLimits::%s; printBytes("%s", &v, sizeof v); }'
+                      % (cpp_type, name, name))
     source = tmp_path / 'float_constants.cpp'
-    source.write_text('#include <stdio.h>\n#include <string.h>\n#include <hostile_ok/FloatLimits.h>\n'
-                      'int main() {\n%s\n  return 0;\n}\n' % '\n'.join(prints))
+    source.write_text(
+        '#include <stdio.h>\n#include <hostile_ok/FloatLimits.h>\n'
+        'static void printBytes(const char* name, const void* value, size_t size) {\n'
+        '  printf("%%s ", name);\n'
+        '  for (size_t i = 0; i < size; ++i) printf("%%02x", static_cast<const unsigned char*>(value)[i]);\n'
+        '  printf("\\n");\n}\nint main() {\n%s\n  return 0;\n}\n' % '\n'.join(prints))
     expected = []
     for ros_type, declaration in constants:
         name, text = declaration.split('=')
         packed = struct.pack('<f', float(text)) if ros_type == 'float32' else struct.pack('<d', float(text))
-        expected.append('%s %x' % (name, int.from_bytes(packed, 'little')))
+        expected.append('%s %s' % (name, packed.hex()))
     for mode in LANGUAGE_MODES:
         program = str(tmp_path / ('float_constants_' + mode))
         _run(['g++', '-std=' + mode, '-o', program, str(source), '-I' + output] + STRICT)
