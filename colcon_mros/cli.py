@@ -37,9 +37,10 @@ Generate mROS message headers from ROS 1 .msg and .srv files.
       find_package(genmros) work under a cross toolchain file.
 
   genmros catkin-prefix
-      prints a catkin prefix that holds only genmros' generator marker:
-      with it on CMAKE_PREFIX_PATH, catkin runs genmros (for installs that
-      cannot write /etc/ros/genmsg: ROS Noetic, a user, a venv).
+      prints a catkin prefix that holds genmros' generator marker (and
+      lets find_package(genmros) find this install): with it on
+      CMAKE_PREFIX_PATH, catkin runs genmros (for installs that cannot
+      write /etc/ros/genmsg: ROS Noetic, a user, a venv).
 
   genmros prune-export DIR
       removes from a catkin export dir (MROS_EXPORT_DIR) the headers and

@@ -114,3 +114,58 @@ def test_namespace_and_remapping_from_the_command_line(ros_graph, mros_firmware)
         'mros_personal_talker', '__ns:=/robot1', 'mros_str:=people'))
     ros_graph.wait_for_graph(publishers=[('/robot1/people', '/robot1/mros_node')])
     assert 'Type: mros_test/PersonalData' in rostopic(ros_graph, 'info', '/robot1/people')
+
+
+def test_rosnode_and_rosmsg_see_the_mros_node(ros_graph, mros_firmware):
+    start_talker(ros_graph, mros_firmware)
+    info = subprocess.run(['rosnode', 'info', '/mros_node'], env=ros_graph.env, capture_output=True,
+                          text=True, timeout=30)
+    assert info.returncode == 0, info.stdout + info.stderr
+    assert 'Node [/mros_node]' in info.stdout
+    assert ' * /mros_str [mros_test/PersonalData]' in info.stdout
+    assert 'Pid: ' in info.stdout  # answered by the node's own slave API
+    show = subprocess.run(['rosmsg', 'show', 'mros_test/PersonalData'], env=ros_graph.env,
+                          capture_output=True, text=True, timeout=30)
+    assert show.stdout.split() == ['string', 'first_name', 'string', 'last_name', 'uint16', 'age',
+                                   'int32', 'score'], show.stderr
+    md5 = subprocess.run(['rosmsg', 'md5', 'mros_test/PersonalData'], env=ros_graph.env,
+                         capture_output=True, text=True, timeout=30)
+    assert md5.stdout.strip() == PERSONAL_DATA_MD5
+
+
+COMPACT_PERSONAL_DATA = 'string first_name\nstring last_name\nuint16 age\nint32 score\n'
+
+
+def test_compact_definition_text_reaches_rostopic_and_rosbag(ros_graph, ros_workspace, mros_firmware,
+                                                               tmp_path):
+    """A node whose headers carry the compact definition text: rostopic echo
+    decodes it, rosbag records its text and decodes the bag from that text
+    alone, and rosbag play delivers it to a rospy subscriber."""
+    talker = ros_graph.start('mROS compact talker', mros_firmware.node('mros_compact_talker'))
+    ros_graph.wait_for_graph(publishers=[('/mros_str', '/mros_node')])
+    echoed = rostopic(ros_graph, 'echo', '-n', '2', '/mros_str')
+    assert echoed.count('first_name: "Phil"') == 2 and echoed.count('age: 83') == 2
+
+    bag_path = str(tmp_path / 'compact.bag')
+    record = subprocess.run(['rosbag', 'record', '-O', bag_path, '-l', '3', '/mros_str'], env=ros_graph.env,
+                            capture_output=True, text=True, timeout=60)
+    assert record.returncode == 0, record.stdout + record.stderr
+    assert talker.stop() == 0
+
+    import rosbag  # Debian's python3-rosbag, importable by /usr/bin/python3
+    with rosbag.Bag(bag_path) as bag:
+        connections = bag._get_connections()
+        definitions = {c.header['message_definition'].decode() for c in connections}
+        assert definitions == {COMPACT_PERSONAL_DATA}
+        messages = [message for _, message, _ in bag.read_messages(topics=['/mros_str'])]
+    assert len(messages) == 3
+    assert messages[0]._md5sum == PERSONAL_DATA_MD5 and messages[0]._type == 'mros_test/PersonalData'
+    assert [(m.first_name, m.last_name, m.age) for m in messages] == [('Phil', 'Woods', 83)] * 3
+    assert [m.score - messages[0].score for m in messages] == [0, 1, 2]
+
+    listener = ros_graph.start('rospy listener', ros_workspace.rospy('personal_data_listener.py'))
+    ros_graph.wait_for_graph(subscribers=[('/mros_str', '/rospy_personal_listener')])
+    play = subprocess.run(['rosbag', 'play', bag_path], env=ros_graph.env, capture_output=True, text=True,
+                          timeout=60)
+    assert play.returncode == 0, play.stdout + play.stderr
+    listener.wait_for(r'I heard from mROS: Phil Woods age:83 score:%d' % (messages[2].score))
