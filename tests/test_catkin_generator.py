@@ -138,6 +138,20 @@ def test_devel_headers_compile_with_strict_flags(build, tmp_path):
     compile_headers(build.devel_roots + [build.reference], headers, str(tmp_path))
 
 
+def test_devel_headers_alone_meet_gencpp_with_one_clear_line(build, tmp_path):
+    # The devel space holds the workspace's types only: the std_msgs/ColorRGBA
+    # that Labeled contains is found in /usr/include, and it is gencpp's.
+    source = tmp_path / 'firmware.cpp'
+    source.write_text('#include <mros_test_base/Labeled.h>\nint main() { return 0; }\n')
+    result = run(['g++', '-std=c++11', '-fsyntax-only'] + ['-I' + root for root in build.devel_roots] +
+                 [str(source)], str(tmp_path), check=False)
+    errors = [line for line in result.stdout.splitlines() if ': error: ' in line]
+    assert result.returncode != 0
+    assert errors[0].endswith(
+        "#error \"the std_msgs/ColorRGBA.h found first is not genmros' (gencpp's?): compile against a "
+        "genmros export dir's include/, which holds every type its headers include\""), errors[0]
+
+
 def test_install_space_holds_the_same_headers(build):
     assert headers_under(build.install_root) == build.devel_headers()
 
