@@ -65,7 +65,7 @@ endfunction()
 # ARG_TARGET build after it with ARG_INCLUDE_DIRS.
 function(_mros_attach ARG_TARGET ARG_OUTPUT_DIR ARG_GENMROS_ARGS ARG_DEPENDS ARG_INCLUDE_DIRS)
   set(outputs "")
-  foreach(name message_headers.h message_class_specialization.h msg_max_size.h)
+  foreach(name message_headers.h message_class_specialization.h msg_max_size.h mros_v1_delivery.h)
     list(APPEND outputs "${ARG_OUTPUT_DIR}/${name}")
   endforeach()
   # genmros keeps unchanged files as they are (so the firmware's objects are
@@ -139,21 +139,18 @@ function(mros_import_messages)
   cmake_parse_arguments(ARG "" "TARGET;EXPORT_DIR;STORAGE;DEFINITION_TEXT" "TYPES;OPTIONS" ${ARGN})
   _mros_check_arguments(mros_import_messages "${ARG_TARGET}" "${ARG_UNPARSED_ARGUMENTS}")
   get_filename_component(export_dir "${ARG_EXPORT_DIR}" ABSOLUTE)
-  if(NOT ARG_EXPORT_DIR OR NOT EXISTS "${export_dir}/include/mros_message_support.h")
+  # An export dir describes itself to CMake in mros_export.cmake (genmros
+  # writes it): MROS_EXPORT_INCLUDE_DIR and every type, MROS_EXPORT_TYPES.
+  if(NOT ARG_EXPORT_DIR OR NOT EXISTS "${export_dir}/mros_export.cmake")
     message(FATAL_ERROR "mros_import_messages(): EXPORT_DIR '${ARG_EXPORT_DIR}' holds no "
-      "genmros export (no include/mros_message_support.h); build the ROS workspace with "
+      "genmros export (no mros_export.cmake); build the ROS workspace with "
       "MROS_EXPORT_DIR or colcon build --mros-export first")
   endif()
+  include("${export_dir}/mros_export.cmake")
 
   set(types ${ARG_TYPES})
   if(NOT types)
-    # Every type whose definition the export dir holds.
-    file(GLOB definitions RELATIVE "${export_dir}/share"
-      "${export_dir}/share/*/msg/*.msg" "${export_dir}/share/*/srv/*.srv")
-    foreach(definition ${definitions})
-      string(REGEX REPLACE "^([^/]+)/(msg|srv)/([^/]+)\\.(msg|srv)$" "\\1/\\3" type "${definition}")
-      list(APPEND types "${type}")
-    endforeach()
+    set(types ${MROS_EXPORT_TYPES})
   endif()
   if(NOT types)
     message(FATAL_ERROR "mros_import_messages(): EXPORT_DIR '${export_dir}' holds no message types")
@@ -162,14 +159,13 @@ function(mros_import_messages)
   _mros_form_args(mros_import_messages "${ARG_STORAGE}" "${ARG_OPTIONS}" "${ARG_DEFINITION_TEXT}"
     form_args)
   set(genmros_args --underlay "${export_dir}")
-  set(headers "")
   foreach(type ${types})
-    if(NOT EXISTS "${export_dir}/include/${type}.h")
+    list(FIND MROS_EXPORT_TYPES "${type}" index)
+    if(index EQUAL -1)
       message(FATAL_ERROR "mros_import_messages(): type '${type}' is not in the export "
-        "dir '${export_dir}' (no include/${type}.h)")
+        "dir '${export_dir}'")
     endif()
     list(APPEND genmros_args --type "${type}")
-    list(APPEND headers "${export_dir}/include/${type}.h")
   endforeach()
 
   _mros_output_dir(${ARG_TARGET} output_dir)
@@ -178,14 +174,18 @@ function(mros_import_messages)
     # Every header anew, in the form asked for: the export's heap headers
     # with full texts stay out of t.
     list(APPEND genmros_args ${form_args})
-    _mros_export_now(mros_import_messages "${genmros_args}" "${output_dir}" inputs)
-    _mros_attach(${ARG_TARGET} "${output_dir}" "${genmros_args}" "${inputs}" "${output_dir}")
+    set(include_dirs "${output_dir}")
   else()
-    # The aggregates first: the export dir has none, but a firmware's own
+    # The aggregates only: the export dir has none, and a firmware's own
     # aggregates must win over any a user copied there.
-    _mros_attach(${ARG_TARGET} "${output_dir}" "--only;aggregates;${genmros_args}" "${headers}"
-      "${output_dir};${export_dir}/include")
+    list(INSERT genmros_args 0 --only aggregates)
+    set(include_dirs "${output_dir};${MROS_EXPORT_INCLUDE_DIR}")
   endif()
+  _mros_export_now(mros_import_messages "${genmros_args}" "${output_dir}" inputs)
+  # A ROS build that changes the export rewrites its definitions and, when
+  # types come or go, mros_export.cmake.
+  list(APPEND inputs "${export_dir}/mros_export.cmake")
+  _mros_attach(${ARG_TARGET} "${output_dir}" "${genmros_args}" "${inputs}" "${include_dirs}")
 endfunction()
 
 function(mros_generate_messages)

@@ -1,4 +1,11 @@
-"""The ``genmros`` command (also ``python3 -m colcon_mros``)."""
+"""The ``genmros`` command (also ``python3 -m colcon_mros``).
+
+One argparse subcommand per job, each with ``--help``. Generator mode takes
+gencpp's arguments (``genmros FILE -p PKG -o DIR ...``), which is what a
+genmsg generator is called with, so a command line that names no subcommand
+is generator mode (``genmros generate``). Each subcommand imports what it
+needs when it runs: ROS' Python packages only where they are needed.
+"""
 
 import argparse
 import os
@@ -8,52 +15,22 @@ from colcon_mros import __version__
 from colcon_mros.defaults import (DEFAULT_VARIABLE_SIZE_BUDGET, DEFINITION_TEXTS, EXPORT_PARTS,
                                   STORAGE_KINDS)
 from colcon_mros.errors import GenmrosError
-from colcon_mros.export_claims import ExportClaims
-from colcon_mros.installed_files import CATKIN_MARKER, CMAKE_CONFIG, MAKE_FRAGMENT, installed_file
-from colcon_mros.ros_environment import require_ros_python
-from colcon_mros.workspace import parse_include_flags
 
 DESCRIPTION = '''\
 Generate mROS message headers from ROS 1 .msg and .srv files.
 
+Generator mode, with gencpp's arguments (catkin runs it for every message):
   genmros FILE.msg|FILE.srv -p PKG -o OUTDIR [-I PKG:DIR ...] [-e TEMPLATE_DIR]
           [--export-dir DIR]
-      generator mode, with gencpp's arguments: the headers of one file
-      (catkin runs it for every message of every package).
 
-  genmros export [--workspace WS ...] [--package PKG ...] [--type PKG/TYPE ...] -o DIR
-      the headers of the selected types and every type they contain, plus the
-      per-firmware aggregates message_headers.h, message_class_specialization.h
-      and msg_max_size.h for the selected types. Without --package or --type:
-      every type in WS. (genmros export --help lists the options: storage,
-      definition text, depfile.)
-
-  genmros make-fragment
-      prints the path of genmros.mk, the fragment an mROS v1 app's Makefile
-      includes to generate its headers.
-
-  genmros cmake-dir
-      prints the directory of genmrosConfig.cmake: -Dgenmros_DIR=... lets
-      find_package(genmros) work under a cross toolchain file.
-
-  genmros catkin-prefix
-      prints a catkin prefix that holds genmros' generator marker (and
-      lets find_package(genmros) find this install): with it on
-      CMAKE_PREFIX_PATH, catkin runs genmros (for installs that cannot
-      write /etc/ros/genmsg: ROS Noetic, a user, a venv).
-
-  genmros prune-export DIR
-      removes from a catkin export dir (MROS_EXPORT_DIR) the headers and
-      definitions no generated type needs any more (catkin runs it when a
-      package loses a .msg or .srv file).
-'''
+Every subcommand has --help.'''
 
 
-def _generator_parser():
-    parser = argparse.ArgumentParser(
-        prog='genmros', description=DESCRIPTION,
-        formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument('--version', action='version', version='genmros %s' % __version__)
+def _add_generate(subparsers):
+    parser = subparsers.add_parser(
+        'generate', help='the headers of one .msg or .srv file (generator mode, the default)',
+        description='The headers of one .msg or .srv file, with gencpp\'s arguments; "genmros '
+                    'FILE ..." without a subcommand is the same.')
     parser.add_argument('file', metavar='FILE', help='a .msg or .srv file')
     parser.add_argument('-p', dest='package', required=True, help='package of FILE')
     parser.add_argument('-o', dest='output_dir', required=True,
@@ -62,23 +39,27 @@ def _generator_parser():
                         metavar='PKG:DIR', help='msg directory of a package (repeatable)')
     parser.add_argument('-e', dest='template_dir', help='template directory to use instead of ours')
     parser.add_argument('--export-dir', metavar='DIR',
-                        help='also write DIR/include/<pkg>/<Type>.h for the types of FILE and every '
-                             'type they contain, and their definitions to DIR/share/<pkg>/ '
-                             "(catkin's MROS_EXPORT_DIR)")
-    return parser
+                        help='also put the headers of the types of FILE and of every type they '
+                             "contain, and their definitions, into the export dir DIR (catkin's "
+                             'MROS_EXPORT_DIR)')
+    parser.set_defaults(run=_generate)
 
 
-def _export_parser():
-    parser = argparse.ArgumentParser(
-        prog='genmros export',
-        description='Export the mROS headers of a workspace for a firmware build.')
+def _add_export(subparsers):
+    parser = subparsers.add_parser(
+        'export', help='the headers and aggregates one firmware needs',
+        description='The headers of the selected types and every type they contain, plus the '
+                    'per-firmware aggregates message_headers.h, message_class_specialization.h '
+                    'and msg_max_size.h for the selected types. Without --package or --type: '
+                    'every type in the workspaces.')
     parser.add_argument('--workspace', dest='workspaces', action='append', default=[], metavar='WS',
                         help='catkin/colcon workspace or source tree, searched for packages '
                              '(repeatable)')
     parser.add_argument('--package', dest='packages', action='append', default=[],
                         metavar='PKG', help='export every type of PKG (repeatable)')
     parser.add_argument('--type', dest='types', action='append', default=[],
-                        metavar='PKG/TYPE', help='export one message or service (repeatable)')
+                        metavar='PKG/TYPE', help='export one message or service, or one half of '
+                                                 'a service (PKG/SrvRequest) (repeatable)')
     parser.add_argument('-o', dest='output_dir', required=True, metavar='DIR',
                         help='include root to write to')
     parser.add_argument('--underlay', dest='prefixes', action='append', metavar='PREFIX',
@@ -109,42 +90,126 @@ def _export_parser():
     parser.add_argument('--depfile', metavar='FILE',
                         help='also write FILE, a make rule naming every .msg/.srv file and '
                              'options file the headers come from')
-    return parser
+    parser.set_defaults(run=_export)
+
+
+def _add_printers(subparsers):
+    for name, help_text, run in (
+            ('make-fragment', "print the path of genmros.mk, the fragment an mROS v1 app's "
+                              'Makefile includes to generate its headers', _make_fragment),
+            ('cmake-dir', 'print the directory of genmrosConfig.cmake: -Dgenmros_DIR=... lets '
+                          'find_package(genmros) work under a cross toolchain file', _cmake_dir),
+            ('catkin-prefix', "print a catkin prefix that holds genmros' generator marker (and "
+                              'leads find_package(genmros) to this install): with it on '
+                              'CMAKE_PREFIX_PATH, catkin runs genmros (for installs that cannot '
+                              'write /etc/ros/genmsg: ROS Noetic, a user, a venv)', _catkin_prefix)):
+        parser = subparsers.add_parser(name, help=help_text, description=help_text)
+        parser.set_defaults(run=run)
+
+
+def _add_export_dir_commands(subparsers):
+    parser = subparsers.add_parser(
+        'prune-export', help='remove from an export dir what no definition needs any more',
+        description='Remove from an export dir (MROS_EXPORT_DIR) the headers and definitions no '
+                    'generated type needs any more.')
+    parser.add_argument('export_dir', metavar='DIR')
+    parser.set_defaults(run=_prune_export)
+    parser = subparsers.add_parser(
+        'catkin-package', help="catkin's configure step for one package (genmros-extras.cmake)",
+        description="What catkin's configure step asks for one package: a CMake file naming each "
+                    "definition's outputs; the package's stale headers leave its output "
+                    'directory and the export dir.')
+    parser.add_argument('-p', dest='package', required=True)
+    parser.add_argument('-o', dest='output_dir', required=True)
+    parser.add_argument('--cmake-file', required=True, metavar='FILE')
+    parser.add_argument('--export-dir', metavar='DIR')
+    parser.add_argument('files', nargs='*', metavar='FILE', help='the .msg and .srv files')
+    parser.set_defaults(run=_catkin_package)
+
+
+def _parser():
+    parser = argparse.ArgumentParser(prog='genmros', description=DESCRIPTION,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument('--version', action='version', version='genmros %s' % __version__)
+    subparsers = parser.add_subparsers(metavar='SUBCOMMAND')
+    _add_generate(subparsers)
+    _add_export(subparsers)
+    _add_printers(subparsers)
+    _add_export_dir_commands(subparsers)
+    return parser, set(subparsers.choices)
+
+
+def _generate(options):
+    from colcon_mros.ros_environment import require_ros_python
+    require_ros_python()
+    from colcon_mros.generate import generate_file  # needs genmsg and empy
+    from colcon_mros.workspace import parse_include_flags
+    generate_file(options.file, options.package, options.output_dir,
+                  parse_include_flags(options.include_paths), options.template_dir,
+                  options.export_dir)
+
+
+def export_request(options):
+    """The :class:`colcon_mros.export.ExportRequest` of ``genmros export``'s options."""
+    from colcon_mros.export import ExportRequest
+    return ExportRequest(
+        options.output_dir, options.prefixes, options.workspaces, options.packages, options.types,
+        options.variable_size_budget, options.template_dir, options.only or 'all', options.depfile,
+        options.storage, options.option_files, options.definition_text)
+
+
+def _export(options):
+    from colcon_mros.ros_environment import require_ros_python
+    require_ros_python()
+    from colcon_mros.export import export  # needs genmsg and empy
+    result = export(export_request(options))
+    print('genmros: exported %d message and %d service types to %s'
+          % (len(result.messages), len(result.services), options.output_dir))
+
+
+def _make_fragment(options):
+    from colcon_mros.installed_files import MAKE_FRAGMENT, installed_file
+    print(installed_file(MAKE_FRAGMENT))
+
+
+def _cmake_dir(options):
+    from colcon_mros.installed_files import CMAKE_CONFIG, installed_file
+    print(os.path.dirname(installed_file(CMAKE_CONFIG)))
+
+
+def _catkin_prefix(options):
+    from colcon_mros.installed_files import CATKIN_MARKER, installed_file
+    print(os.path.dirname(installed_file(CATKIN_MARKER)))
+
+
+def _prune_export(options):
+    from colcon_mros.export_dir import ExportDir
+    from colcon_mros.installed_files import CMAKE_MODULE, installed_file
+    if not os.path.isdir(options.export_dir):
+        raise GenmrosError('export dir is not a directory', options.export_dir)
+    for relative in ExportDir(options.export_dir).prune(installed_file(CMAKE_MODULE)):
+        print('genmros: removed %s' % os.path.join(options.export_dir, relative))
+
+
+def _catkin_package(options):
+    from colcon_mros.catkin_package import configure_package
+    configure_package(options.package, options.output_dir, options.files, options.cmake_file,
+                      options.export_dir)
 
 
 def main(argv=None):
-    argv = sys.argv[1:] if argv is None else argv
+    argv = sys.argv[1:] if argv is None else list(argv)
+    parser, subcommands = _parser()
+    if argv and argv[0] not in subcommands and argv[0] not in ('-h', '--help', '--version'):
+        argv = ['generate'] + argv
+    options = parser.parse_args(argv)
+    if not hasattr(options, 'run'):
+        parser.print_usage(sys.stderr)
+        print('genmros: error: give a .msg or .srv file, or a subcommand (genmros --help)',
+              file=sys.stderr)
+        return 2
     try:
-        if argv[:1] == ['export']:
-            options = _export_parser().parse_args(argv[1:])
-            require_ros_python()
-            from colcon_mros.export import export  # needs genmsg and empy
-            result = export(options.output_dir, options.prefixes,
-                            options.workspaces, options.packages, options.types,
-                            options.variable_size_budget, options.template_dir,
-                            options.only or 'all', options.depfile, options.storage,
-                            options.option_files, options.definition_text)
-            print('genmros: exported %d message and %d service types to %s'
-                  % (len(result.messages), len(result.services), options.output_dir))
-        elif argv == ['make-fragment']:
-            print(installed_file(MAKE_FRAGMENT))
-        elif argv == ['cmake-dir']:
-            print(os.path.dirname(installed_file(CMAKE_CONFIG)))
-        elif argv == ['catkin-prefix']:
-            print(os.path.dirname(installed_file(CATKIN_MARKER)))
-        elif argv[:1] == ['prune-export'] and len(argv) == 2:
-            if not os.path.isdir(argv[1]):
-                raise GenmrosError('export dir is not a directory', argv[1])
-            with ExportClaims(argv[1]) as claims:
-                for relative in claims.prune():
-                    print('genmros: removed %s' % os.path.join(argv[1], relative))
-        else:
-            options = _generator_parser().parse_args(argv)
-            require_ros_python()
-            from colcon_mros.generate import generate_file  # needs genmsg and empy
-            generate_file(options.file, options.package, options.output_dir,
-                          parse_include_flags(options.include_paths), options.template_dir,
-                          options.export_dir)
+        options.run(options)
     except GenmrosError as error:
         print('genmros: error: %s' % error, file=sys.stderr)
         return 1

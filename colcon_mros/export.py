@@ -24,7 +24,7 @@ from colcon_mros.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
 from colcon_mros.render import Renderer
 from colcon_mros.storage import storage_for
 from colcon_mros.workspace import (environment_packages, installed_packages, msg_search_path,
-                                   type_name_of, workspace_packages)
+                                   workspace_packages)
 
 
 class ExportResult:
@@ -38,11 +38,14 @@ class ExportResult:
 
 
 class Selection:
-    """The message and service files a run exports, by package."""
+    """The definitions a run exports: whole packages, or single types (a
+    message, a service, or one half of a service, which brings its service)."""
 
     def __init__(self, packages, workspace_names, package_names, type_names):
         self.messages = []
         self.services = []
+        # Service halves named as types: the firmware uses the half's message.
+        self.service_halves = []
         self._packages = packages
         if not package_names and not type_names:
             package_names = sorted(workspace_names)
@@ -58,23 +61,47 @@ class Selection:
         return self._packages[name]
 
     def _add_package(self, name):
-        package = self._package(name, '')
-        self.messages.extend((name, path) for path in package.message_files())
-        self.services.extend((name, path) for path in package.service_files())
+        for definition in self._package(name, '').definitions():
+            (self.services if definition.is_service else self.messages).append(definition)
 
     def _add_type(self, full_name):
         package_name, _, type_name = full_name.partition('/')
         if not package_name or not type_name:
             raise GenmrosError("bad type name '%s' (expected PACKAGE/TYPE)" % full_name)
         package = self._package(package_name, " for type '%s'" % full_name)
-        for files, target in ((package.message_files(), self.messages),
-                              (package.service_files(), self.services)):
-            for path in files:
-                if type_name_of(path) == type_name:
-                    target.append((package_name, path))
-                    return
+        for definition in package.definitions():
+            if definition.name == type_name:
+                (self.services if definition.is_service else self.messages).append(definition)
+                return
+            if definition.half_of(type_name):
+                self.service_halves.append((definition, full_name))
+                return
         raise GenmrosError("unknown type '%s' (package %s has no %s.msg or %s.srv)"
                            % (full_name, package_name, type_name, type_name))
+
+
+class ExportRequest:
+    """What one export run is asked for: the command line's ``genmros export``
+    and ``colcon build --mros-export`` both make one.
+
+    prefixes=None searches the ROS environment for packages; only is 'all',
+    'headers' or 'aggregates' (colcon_mros.defaults.EXPORT_PARTS)."""
+
+    def __init__(self, output_dir, prefixes=None, workspaces=(), package_names=(), type_names=(),
+                 variable_budget=DEFAULT_VARIABLE_SIZE_BUDGET, template_dir=None, only='all',
+                 depfile=None, storage_kind='heap', option_files=(), definition_text='full'):
+        self.output_dir = output_dir
+        self.prefixes = prefixes
+        self.workspaces = list(workspaces)
+        self.package_names = list(package_names)
+        self.type_names = list(type_names)
+        self.variable_budget = variable_budget
+        self.template_dir = template_dir
+        self.only = only
+        self.depfile = depfile
+        self.storage_kind = storage_kind
+        self.option_files = list(option_files)
+        self.definition_text = definition_text
 
 
 def _check_type_ids(messages):
@@ -98,38 +125,41 @@ def _depfile_text(target, inputs):
     return '\n'.join(lines) + '\n'
 
 
-def export(output_dir, prefixes, workspaces=(), package_names=(), type_names=(),
-           variable_budget=DEFAULT_VARIABLE_SIZE_BUDGET, template_dir=None, only='all',
-           depfile=None, storage_kind='heap', option_files=(), definition_text='full'):
-    """Export the selected types; prefixes=None searches the ROS environment."""
-    packages = environment_packages() if prefixes is None else installed_packages(prefixes)
+def export(request):
+    """Run one :class:`ExportRequest`; returns an :class:`ExportResult`."""
+    output_dir = request.output_dir
+    packages = (environment_packages() if request.prefixes is None
+                else installed_packages(request.prefixes))
     local = {}
-    for workspace in workspaces:
+    for workspace in request.workspaces:
         local.update(workspace_packages(workspace))
     packages.update(local)
-    if not workspaces and not package_names and not type_names:
+    if not request.workspaces and not request.package_names and not request.type_names:
         raise GenmrosError('nothing to export: give --workspace, --package or --type')
-    selection = Selection(packages, local.keys(), package_names, type_names)
+    selection = Selection(packages, local.keys(), request.package_names, request.type_names)
 
     search_path = msg_search_path(packages)
-    storage = storage_for(storage_kind, option_files, search_path)
+    storage = storage_for(request.storage_kind, request.option_files, search_path)
     loader = SpecLoader(search_path)
     storage.check(loader)
-    builder = ModelBuilder(loader, storage, definition_text)
-    renderer = Renderer(template_dir)
-    roots = [loader.load_message_file(path, package).full_name
-             for package, path in selection.messages]
-    services = [builder.service(loader.load_service_file(path, package))
-                for package, path in selection.services]
+    builder = ModelBuilder(loader, storage, request.definition_text)
+    renderer = Renderer(request.template_dir)
+    roots = [loader.load_message_file(d.path, d.package).full_name for d in selection.messages]
+    services = [builder.service(loader.load_service_file(d.path, d.package))
+                for d in selection.services]
     for service in services:
         roots.extend(service.dependencies)
+    for definition, half in selection.service_halves:
+        services.append(builder.service(loader.load_service_file(definition.path,
+                                                                 definition.package)))
+        roots.append(half)
     messages = builder.closure(roots)
     _check_type_ids(messages)
     # The firmware publishes and subscribes the types it names, not the ones
     # nested in them: only those get API instantiations and callback cases.
     firmware_messages = [builder.message(name) for name in dict.fromkeys(roots)]
 
-    writes_headers = only != 'aggregates'
+    writes_headers = request.only != 'aggregates'
     files = {}
     if writes_headers:
         files.update(renderer.support_header())
@@ -137,8 +167,8 @@ def export(output_dir, prefixes, workspaces=(), package_names=(), type_names=(),
             files.update(renderer.message(message))
         for service in services:
             files.update(renderer.service(service))
-    if only != 'headers':
-        files.update(renderer.aggregates(firmware_messages, variable_budget))
+    if request.only != 'headers':
+        files.update(renderer.aggregates(firmware_messages, request.variable_budget))
 
     # Headers left over from types that no longer exist in an exported package.
     keep = {}
@@ -152,6 +182,7 @@ def export(output_dir, prefixes, workspaces=(), package_names=(), type_names=(),
                 and is_generated(os.path.join(output_dir, relative)))
 
     changed, removed = write_tree(output_dir, files, stale)
+    depfile = request.depfile
     if depfile:
         inputs = sorted({os.path.abspath(m.source) for m in messages} |
                         {os.path.abspath(s.source) for s in services} |

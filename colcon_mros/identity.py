@@ -59,9 +59,9 @@ class Identities:
         self._md5 = {}
         self._closure = {}
 
-    def _post_order(self, full_name, done):
+    def contained_first(self, full_name, done):
         """full_name and every type it contains, each after those it contains,
-        leaving out those in done."""
+        leaving out those in done (without recursion: types nest deeply)."""
         order = []
         stack = [(full_name, False)]
         pending = set()
@@ -93,7 +93,7 @@ class Identities:
     def md5_of(self, full_name):
         """The MD5 sum of a registered message type, as genmsg computes it."""
         if full_name not in self._md5:
-            for name in self._post_order(full_name, self._md5):
+            for name in self.contained_first(full_name, self._md5):
                 self._md5[name] = hashlib.md5(
                     self._md5_text(self._context.get_registered(name)).encode()).hexdigest()
         return self._md5[full_name]
@@ -109,7 +109,7 @@ class Identities:
         """Every type full_name contains, in genmsg's order: depth first,
         each at its first occurrence."""
         if full_name not in self._closure:
-            for name in self._post_order(full_name, self._closure):
+            for name in self.contained_first(full_name, self._closure):
                 contained = {}
                 for nested in _nested_types(self._context.get_registered(name)):
                     contained.setdefault(nested)

@@ -15,6 +15,7 @@ import os
 import re
 
 from colcon_mros.c_names import GLOBAL_NAMES, MACROS
+from colcon_mros.definition import Definition
 from colcon_mros.errors import GenmrosError
 
 # The language's keywords and alternative tokens up to C++20, and NULL.
@@ -51,23 +52,18 @@ SUPPORT_NAMESPACES = frozenset('''
     MD5Sum DataType DataTypeId Definition CallCallbackFuncs
 '''.split())
 
+# What the support header and the mROS v1 delivery header declare in
+# namespaces mros and mros::wire (types, templates, namespaces): message
+# headers name packages from inside those namespaces, where these would be
+# found first. tests/test_names.py holds this list equal to the headers'.
+SUPPORT_HEADER_NAMES = frozenset('''
+    CallCallbackFuncs Codec DataType DataTypeId Definition Duration ElementRun Fields
+    FloatCodec IntegerCodec LengthCounter MD5Sum Message OnBoardFrames Reader SequenceCodec
+    Slots StampCodec TextCodec Time UnsignedWord Writer array bounded_string bounded_vector
+    message_traits mros service_traits subtask_methods wire
+'''.split())
+
 _ASCII_IDENTIFIER = re.compile(r'[A-Za-z][A-Za-z0-9_]*\Z')
-_SUPPORT_DECLARATION = re.compile(r'\b(?:struct|class|namespace|using)\s+([A-Za-z_]\w*)')
-
-SUPPORT_HEADER_PATH = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'templates',
-                                   'mros_message_support.h')
-
-
-def _support_header_names():
-    """The types, templates and namespaces the support header declares:
-    message headers name packages from inside namespaces mros and mros::wire,
-    where these would be found first."""
-    with open(SUPPORT_HEADER_PATH, encoding='utf-8') as stream:
-        text = stream.read()
-    return frozenset(_SUPPORT_DECLARATION.findall(text))
-
-
-SUPPORT_HEADER_NAMES = _support_header_names()
 
 
 def member_identifier(name, type_name):
@@ -148,24 +144,17 @@ def check_type_named_like_package(package, type_names, dependency_package, path,
             path, line)
 
 
-def headers_of(path):
-    """The type names (header names) one definition file gives its package."""
-    base, extension = os.path.splitext(os.path.basename(path))
-    if extension == '.srv':
-        return [base, base + 'Request', base + 'Response']
-    return [base]
-
-
-def check_unique_headers(package, path, sibling_paths):
+def check_unique_headers(definition, sibling_paths):
     """Refuse a definition file that would write a header another file of
     its package writes too (Foo.srv and FooRequest.msg, Pair.srv and Pair.msg)."""
-    mine = set(headers_of(path))
+    mine = set(definition.type_names)
     for other in sorted(sibling_paths):
         # The same file, or the same definition found in another directory.
-        if os.path.basename(other) == os.path.basename(path):
+        if os.path.basename(other) == definition.file_name:
             continue
-        shared = mine.intersection(headers_of(other))
+        shared = mine.intersection(Definition(definition.package, other).type_names)
         if shared:
             raise GenmrosError("'%s/%s' would be defined twice, by %s and by %s; rename one"
-                               % (package, sorted(shared)[0], os.path.basename(path), other),
-                               path)
+                               % (definition.package, sorted(shared)[0], definition.file_name,
+                                  other),
+                               definition.path)

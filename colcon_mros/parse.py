@@ -14,25 +14,24 @@ type, which genmsg does not check.
 
 import math
 import os
-import sys
 
 from genmsg import InvalidMsgSpec, MsgNotFound
 from genmsg import msg_loader
 from genmsg.msgs import bare_msg_type, is_builtin, parse_type
 from genmsg.names import is_legal_resource_base_name
 
+from colcon_mros.definition import Definition
 from colcon_mros.errors import GenmrosError
 from colcon_mros.floats import FLOAT_LIMITS, round_to_type
 from colcon_mros.identity import Identities
 from colcon_mros.names import (check_member_name, check_service_name, check_type_name,
-                               check_type_named_like_package, check_unique_headers, headers_of)
+                               check_type_named_like_package, check_unique_headers)
 
 SERVICE_SEPARATOR = '---'
 
-# Types nest at most this deep (gencpp manages 250). The loader and the
-# model recurse once per level, so Python's recursion limit is raised to fit.
+# Types nest at most this deep (gencpp manages 250). Nothing recurses per
+# level (the loader keeps its own stack), so any depth fits the interpreter.
 MAX_NESTING_DEPTH = 1000
-_FRAMES_PER_LEVEL = 8
 # The safe interface reports sizes as int32_t: no message has more bytes,
 # and no fixed array more elements (even of empty messages).
 MAX_ARRAY_LENGTH = (1 << 31) - 1
@@ -173,38 +172,42 @@ class SpecLoader:
         self._packages = set(search_path)
         self._files_of_package = {}
         self.identities = Identities(self.context)
-        needed = MAX_NESTING_DEPTH * _FRAMES_PER_LEVEL + 1000
-        if sys.getrecursionlimit() < needed:
-            sys.setrecursionlimit(needed)
 
     def declarations(self, full_name):
         """The :class:`Declarations` of a loaded message (or service half)."""
         return self._declarations[full_name]
 
     def load_message_file(self, path, package):
-        full_name = '%s/%s' % (package, _type_name_from_path(path, '.msg'))
-        if self.context.is_registered(full_name):
-            return self.context.get_registered(full_name)
-        self._check_file_names(path, package)
-        text = _read_text(path)
-        numbered_lines = _numbered_lines(text)
-        spec = self._parse(
-            text, path, [numbered_lines],
-            lambda context, source: msg_loader.load_msg_from_string(context, source, full_name))
-        self.context.set_file(full_name, path)
-        self._declarations[full_name] = Declarations(path, numbered_lines)
+        definition = _definition(package, path, 'msg')
+        if self.context.is_registered(definition.full_name):
+            return self.context.get_registered(definition.full_name)
+        spec = self._parse_message_file(definition)
         self._load_dependencies(spec)
         return spec
 
+    def _parse_message_file(self, definition):
+        """Parse and register one message, without the types it contains."""
+        self._check_file_names(definition)
+        text = _read_text(definition.path)
+        numbered_lines = _numbered_lines(text)
+        spec = self._parse(
+            text, definition.path, [numbered_lines],
+            lambda context, source: msg_loader.load_msg_from_string(context, source,
+                                                                   definition.full_name))
+        self.context.set_file(definition.full_name, definition.path)
+        self._declarations[definition.full_name] = Declarations(definition.path, numbered_lines)
+        return spec
+
     def load_service_file(self, path, package):
-        full_name = '%s/%s' % (package, _type_name_from_path(path, '.srv'))
+        definition = _definition(package, path, 'srv')
         self._packages.add(package)
-        self._check_file_names(path, package)
+        self._check_file_names(definition)
         text = _read_text(path)
         halves = _service_halves(text)
         spec = self._parse(
             text, path, halves,
-            lambda context, source: msg_loader.load_srv_from_string(context, source, full_name))
+            lambda context, source: msg_loader.load_srv_from_string(context, source,
+                                                                   definition.full_name))
         for half, numbered_lines in zip((spec.request, spec.response), halves):
             self.context.set_file(half.full_name, path)
             self._declarations[half.full_name] = Declarations(path, numbered_lines)
@@ -240,14 +243,12 @@ class SpecLoader:
             self._files_of_package[package] = sorted(files)
         return self._files_of_package[package]
 
-    def _check_file_names(self, path, package):
-        name = os.path.basename(path)[:-len('.msg')]
-        check_type_name(package, name, path)
-        if path.endswith('.srv'):
-            check_service_name(package, name, path)
-            for half in ('Request', 'Response'):
-                check_type_name(package, name + half, path)
-        check_unique_headers(package, path, self._package_files(package, path))
+    def _check_file_names(self, definition):
+        for name in definition.type_names:
+            check_type_name(definition.package, name, definition.path)
+        if definition.is_service:
+            check_service_name(definition.package, definition.name, definition.path)
+        check_unique_headers(definition, self._package_files(definition.package, definition.path))
 
     def _find_message_file(self, package, name, path=None, line=None):
         if package not in self.search_path and package in self._packages:
@@ -264,47 +265,79 @@ class SpecLoader:
                 "unknown type '%s/%s' (no %s.msg in %s)"
                 % (package, name, name, ', '.join(self.search_path[package])), path, line)
 
-    def _load_dependencies(self, spec):
-        declarations = self._declarations[spec.full_name]
-        _check_member_names(spec, declarations)
-        _check_integer_constants(spec, declarations)
-        _check_float_constants(spec, declarations)
-        self._in_progress.append(spec.full_name)
-        own_types = None
-        for index, field_type in enumerate(spec.types):
-            line = declarations.field_lines[index]
-            array_length = parse_type(field_type)[2]
-            if array_length is not None and array_length > MAX_ARRAY_LENGTH:
-                raise GenmrosError('%s: more elements than the %d a message can have'
-                                   % (field_type, MAX_ARRAY_LENGTH), declarations.path, line)
-            dependency = bare_msg_type(field_type)
-            if is_builtin(dependency):
+    def _load_dependencies(self, root):
+        """Load every type root contains, depth first, each before the type
+        that contains it; a missing, recursive or too deep type is reported
+        at the field that names it. The stack is this loop's own, so the
+        depth of the nesting does not meet the interpreter's recursion limit."""
+        stack = [_Visit(root, self._declarations[root.full_name])]
+        self._check_declarations(stack[-1])
+        while stack:
+            visit = stack[-1]
+            if visit.next_field == len(visit.spec.types):
+                stack.pop()
+                msg_loader.load_depends(self.context, visit.spec, self.search_path)
                 continue
-            if own_types is None:
-                own_types = {type_name for path in self._package_files(spec.package, declarations.path)
-                             for type_name in headers_of(path)}
-            check_type_named_like_package(spec.package, own_types, dependency.split('/')[0],
-                                          declarations.path, line)
-            if dependency in self._in_progress:
-                raise GenmrosError(
-                    "type '%s' contains itself through field '%s'"
-                    % (dependency, spec.names[index]), declarations.path, line)
-            if len(self._in_progress) >= MAX_NESTING_DEPTH:
-                raise GenmrosError("field '%s' nests types more than %d levels deep"
-                                   % (spec.names[index], MAX_NESTING_DEPTH), declarations.path, line)
-            if not self.context.is_registered(dependency):
-                package, name = dependency.split('/', 1)
-                dependency_path = self._find_message_file(package, name, declarations.path, line)
-                self.load_message_file(dependency_path, package)
-        self._in_progress.pop()
-        msg_loader.load_depends(self.context, spec, self.search_path)
+            index = visit.next_field
+            visit.next_field += 1
+            dependency_spec = self._field_dependency(visit, index, [v.spec.full_name for v in stack])
+            if dependency_spec is not None:
+                stack.append(_Visit(dependency_spec, self._declarations[dependency_spec.full_name]))
+                self._check_declarations(stack[-1])
+
+    def _check_declarations(self, visit):
+        _check_member_names(visit.spec, visit.declarations)
+        _check_integer_constants(visit.spec, visit.declarations)
+        _check_float_constants(visit.spec, visit.declarations)
+
+    def _field_dependency(self, visit, index, in_progress):
+        """Check field index of a visited spec; returns the spec of the
+        message type it names when that still needs its dependencies loaded."""
+        spec, declarations = visit.spec, visit.declarations
+        field_type = spec.types[index]
+        line = declarations.field_lines[index]
+        array_length = parse_type(field_type)[2]
+        if array_length is not None and array_length > MAX_ARRAY_LENGTH:
+            raise GenmrosError('%s: more elements than the %d a message can have'
+                               % (field_type, MAX_ARRAY_LENGTH), declarations.path, line)
+        dependency = bare_msg_type(field_type)
+        if is_builtin(dependency):
+            return None
+        if visit.own_types is None:
+            visit.own_types = {
+                type_name for path in self._package_files(spec.package, declarations.path)
+                for type_name in Definition(spec.package, path).type_names}
+        check_type_named_like_package(spec.package, visit.own_types, dependency.split('/')[0],
+                                      declarations.path, line)
+        if dependency in in_progress:
+            raise GenmrosError(
+                "type '%s' contains itself through field '%s'"
+                % (dependency, spec.names[index]), declarations.path, line)
+        if len(in_progress) >= MAX_NESTING_DEPTH:
+            raise GenmrosError("field '%s' nests types more than %d levels deep"
+                               % (spec.names[index], MAX_NESTING_DEPTH), declarations.path, line)
+        if self.context.is_registered(dependency):
+            return None
+        package, name = dependency.split('/', 1)
+        dependency_path = self._find_message_file(package, name, declarations.path, line)
+        return self._parse_message_file(_definition(package, dependency_path, 'msg'))
 
 
-def _type_name_from_path(path, extension):
-    base = os.path.basename(path)
-    if not base.endswith(extension):
-        raise GenmrosError('expected a %s file' % extension, path)
-    name = base[:-len(extension)]
-    if not is_legal_resource_base_name(name):
-        raise GenmrosError("'%s' is not a legal ROS type name" % name, path)
-    return name
+class _Visit:
+    """A spec whose fields the loader is going through."""
+
+    def __init__(self, spec, declarations):
+        self.spec = spec
+        self.declarations = declarations
+        self.next_field = 0
+        self.own_types = None  # the type names of the spec's package, when needed
+
+
+def _definition(package, path, kind):
+    """The Definition of path, which must be a legal file of kind."""
+    definition = Definition(package, path)
+    if definition.kind != kind:
+        raise GenmrosError('expected a .%s file' % kind, path)
+    if not is_legal_resource_base_name(definition.name):
+        raise GenmrosError("'%s' is not a legal ROS type name" % definition.name, path)
+    return definition

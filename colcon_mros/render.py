@@ -1,20 +1,28 @@
-"""Render the empy templates in ``templates/`` from the type model.
+"""Render the empy templates in ``templates/`` from the type model, in the
+C++ names :mod:`colcon_mros.cpp` gives it.
 
-Every function returns ``{relative path: text}`` and touches no file; writing
-is :mod:`colcon_mros.output`'s job.
+Every function returns ``{relative path: text}`` (or the text) and touches no
+file; writing is :mod:`colcon_mros.output`'s job.
 """
 
 import os
+import sys
 
 import em
 
+from colcon_mros.aggregates import MaxSize
+from colcon_mros.cpp import SUPPORT_HEADER, V1_DELIVERY_HEADER, CppMessage, CppService, CppType
 from colcon_mros.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
-from colcon_mros.model import SUPPORT_HEADER, MaxSize
 
 TEMPLATE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'templates')
 
 
 def _render(template_dir, template_name, **context):
+    # empy 3 wraps sys.stdout in a proxy the first time it runs and refuses
+    # to run again if the host has replaced sys.stdout since (a test runner
+    # does, per test); rendering in such a process wraps the current one.
+    if not hasattr(sys.stdout, '_testProxy'):
+        em.Interpreter._wasProxyInstalled = False
     with open(os.path.join(template_dir, template_name)) as template:
         return em.expand(template.read(), dict(context))
 
@@ -26,26 +34,39 @@ class Renderer:
         self.template_dir = template_dir or TEMPLATE_DIR
 
     def support_header(self):
-        with open(os.path.join(self.template_dir, SUPPORT_HEADER)) as source:
-            return {SUPPORT_HEADER: source.read()}
+        return {SUPPORT_HEADER: self._read(SUPPORT_HEADER)}
+
+    def _read(self, name):
+        with open(os.path.join(self.template_dir, name)) as source:
+            return source.read()
 
     def message(self, message):
         return {'%s.h' % message.full_name: _render(
-            self.template_dir, 'msg.h.em', msg=message, support_header=SUPPORT_HEADER)}
+            self.template_dir, 'msg.h.em', msg=CppMessage(message), support_header=SUPPORT_HEADER)}
 
     def service(self, service):
-        files = {'%s.h' % service.full_name: _render(self.template_dir, 'srv.h.em', srv=service)}
+        files = {'%s.h' % service.full_name: _render(self.template_dir, 'srv.h.em',
+                                                     srv=CppService(service))}
         files.update(self.message(service.request))
         files.update(self.message(service.response))
         return files
 
     def aggregates(self, messages, variable_budget=DEFAULT_VARIABLE_SIZE_BUDGET):
-        """The per-firmware files the mROS v1 communication library includes."""
+        """The per-firmware files the mROS v1 communication library includes
+        (and the v1 delivery header, which message_headers.h includes)."""
+        types = [CppType(message.full_name) for message in messages]
         return {
+            V1_DELIVERY_HEADER: self._read(V1_DELIVERY_HEADER),
             'message_headers.h': _render(
-                self.template_dir, 'message_headers.h.em', messages=messages),
+                self.template_dir, 'message_headers.h.em', messages=types),
             'message_class_specialization.h': _render(
-                self.template_dir, 'message_class_specialization.h.em', messages=messages),
+                self.template_dir, 'message_class_specialization.h.em', messages=types),
             'msg_max_size.h': _render(
                 self.template_dir, 'msg_max_size.h.em', sizes=MaxSize(messages, variable_budget)),
         }
+
+
+def render_export_cmake(include_dir, types, cmake_module):
+    """An export dir's mros_export.cmake (see :mod:`colcon_mros.export_dir`)."""
+    return _render(TEMPLATE_DIR, 'mros_export.cmake.em', include_dir=include_dir, types=types,
+                   cmake_module=cmake_module)

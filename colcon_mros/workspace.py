@@ -12,6 +12,7 @@ same name.
 import os
 import re
 
+from colcon_mros.definition import Definition
 from colcon_mros.errors import GenmrosError
 
 
@@ -29,18 +30,13 @@ class Package:
     def service_files(self):
         return _files(self.srv_dirs, '.srv')
 
+    def definitions(self):
+        """The package's .msg and .srv files, as :class:`Definition` values."""
+        return [Definition(self.name, path) for path in self.message_files() + self.service_files()]
+
     def type_names(self):
         """Names of every type the package defines, services' halves included."""
-        names = {type_name_of(path) for path in self.message_files()}
-        for path in self.service_files():
-            stem = type_name_of(path)
-            names.update((stem, stem + 'Request', stem + 'Response'))
-        return names
-
-
-def type_name_of(path):
-    """The type a definition file declares: Point for .../msg/Point.msg."""
-    return os.path.splitext(os.path.basename(path))[0]
+        return {name for definition in self.definitions() for name in definition.type_names}
 
 
 def _files(directories, extension):

@@ -198,6 +198,7 @@ def target_side(type_set):
     classes and runs the checks of targets/target_check.h on them, through
     checkType(type index, seed, mode, report)."""
     lines = _includes(type_set) + [
+        '#include <mros_v1_delivery.h>  // memCopy, which the checks call',
         '#include "target_check.h"', '#include "harness_types.inc"', fill_functions(type_set),
         'void checkType(int type, uint32_t seed, int mode, target::Report& report) {',
         _dispatch(type_set, lambda n: 'target::checkInstance<%s>(fill_%s<%s>, kTypes[type], seed, mode, report); return;'

@@ -13,6 +13,7 @@ import shutil
 import pytest
 
 from fixtures.build_integration.tools import (
+    build_firmware_of_whole_export,
     FIRMWARE_FIXTURE,
     MESSAGE_PACKAGES, SUPPORT_HEADER, TEST_WS_SRC, compile_headers, expected_header_names, genmros_export,
     headers_under, new_workspace, package_headers, run, unwrapped, user_environment)
@@ -160,7 +161,8 @@ def test_export_dir_collects_every_package(build):
     exported = headers_under(os.path.join(build.export_dir, 'include'))
     # Every type of the workspace and every type they contain, installed
     # packages' included: what genmros export writes, less the per-firmware files.
-    aggregates = ('message_headers.h', 'message_class_specialization.h', 'msg_max_size.h')
+    aggregates = ('message_headers.h', 'message_class_specialization.h', 'msg_max_size.h',
+                  'mros_v1_delivery.h')
     assert exported == {path: text for path, text in headers_under(build.reference).items()
                         if path not in aggregates}
     assert 'std_msgs/Header.h' in exported
@@ -251,3 +253,9 @@ def test_export_dir_from_the_environment_holds_until_turned_off(tmp_path):
     assert "genmros: MROS_EXPORT_DIR in the environment ('%s') is ignored" % export_dir in unwrapped(log)
     assert os.path.isfile(os.path.join(workspace, 'devel', GENMROS_INCLUDE, 'mros_test_base', 'Later.h'))
     assert sorted(os.listdir(exported)) == ['Added.h', 'Vector3i.h']
+
+
+def test_a_firmware_imports_the_whole_export_with_its_services(build, tmp_path):
+    types = build_firmware_of_whole_export(build.export_dir, str(tmp_path))
+    assert {'mros_test/LookupPerson', 'mros_test/LookupPersonRequest',
+            'mros_test/LookupPersonResponse', 'std_msgs/Header'} <= set(types)

@@ -10,6 +10,7 @@ import os
 import pytest
 
 from fixtures.build_integration.tools import (
+    build_firmware_of_whole_export,
     FIRMWARE_FIXTURE, MESSAGE_PACKAGES, SUPPORT_HEADER, compile_headers,
     expected_header_names, genmros_export, headers_under, mtimes, new_workspace, run,
     unwrapped)
@@ -142,3 +143,9 @@ def test_unwritable_export_dir_fails_before_building(tmp_path):
     assert ('genmros: error: %s: output directory is not a directory: %s'
             % (export_dir, blocker)) in unwrapped(result.stdout)
     assert not os.path.exists(os.path.join(workspace.root, 'install', 'mros_test'))
+
+
+def test_a_firmware_imports_the_whole_export_with_its_services(workspace, tmp_path):
+    types = build_firmware_of_whole_export(workspace.export_dir, str(tmp_path))
+    assert {'mros_test/LookupPerson', 'mros_test/LookupPersonRequest',
+            'mros_test/LookupPersonResponse', 'std_msgs/Header'} <= set(types)

@@ -6,6 +6,8 @@
 
 #include <cstddef>
 
+#include <mros_v1_delivery.h>
+
 @[for msg in messages]@
 #include <@(msg.full_name).h>
 @[end for]@

@@ -685,62 +685,6 @@ template <class T> struct Codec {
   static bool read(Reader& in, T& value) { return Fields<T>::visit(value, in); }
 };
 
-// mROS v1 delivers a frame on the board it was published on straight from
-// the publisher's memory block, where the 4-byte length word before the
-// body has not been written (it is 0 or stale: the library writes it only
-// for outside nodes). memCopy notes where it put each body of type T and
-// how long it was; delivery believes the length word only for other frames,
-// which the library received from outside with that word (into blocks of
-// its outer pool, never one of the publishers' blocks). Either way no byte
-// past a known size is read. The last MROS_ONBOARD_FRAME_SLOTS bodies of
-// each type are remembered (4 unless the firmware defines it, a power of
-// two): at least the blocks of that type waiting for the subscriber task,
-// which its topics' queue sizes bound.
-#ifndef MROS_ONBOARD_FRAME_SLOTS
-#define MROS_ONBOARD_FRAME_SLOTS 4
-#endif
-template <class T> class OnBoardFrames {
- public:
-  // Size first, then the address: a reader that finds the address reads the
-  // size that belongs to it.
-  static void note(const char* body, uint32_t size) {
-    Slots& slots = table();
-    const unsigned slot = slots.next;
-    slots.next = (slot + 1) % kSlots;
-    slots.bodies[slot] = 0;
-    slots.sizes[slot] = size;
-    slots.bodies[slot] = body;
-  }
-
-  // The newest note of body: a block the pool hands out again is noted again.
-  static bool find(const char* body, uint32_t& size) {
-    const Slots& slots = table();
-    for (unsigned age = 1; age <= kSlots; ++age) {
-      const unsigned slot = (slots.next + kSlots - age) % kSlots;
-      if (slots.bodies[slot] == body) {
-        size = slots.sizes[slot];
-        return true;
-      }
-    }
-    return false;
-  }
-
- private:
-  static const unsigned kSlots = MROS_ONBOARD_FRAME_SLOTS;
-  struct Slots {
-    const char* volatile bodies[kSlots];
-    volatile uint32_t sizes[kSlots];
-    volatile unsigned next;
-  };
-
-  // A function's static, zero-filled before start-up (no constructor, no
-  // guard), and only in firmware that delivers or publishes T.
-  static Slots& table() {
-    static Slots slots;
-    return slots;
-  }
-};
-
 // The bodies of the interface every message shares.
 template <class T> int32_t serialize(const T& message, uint8_t* buffer, uint32_t capacity) {
   const uint32_t length = Codec<T>::length(message);
@@ -760,31 +704,11 @@ template <class T> int32_t deserialize(T& message, const uint8_t* buffer, uint32
   return static_cast<int32_t>(size - in.remaining);
 }
 
-template <class T> void memCopy(const T& message, char*& cursor) {
-  Writer out(reinterpret_cast<uint8_t*>(cursor));
-  Codec<T>::write(out, message);
-  const char* body = cursor;
-  cursor = reinterpret_cast<char*>(out.pos);
-  OnBoardFrames<T>::note(body, static_cast<uint32_t>(cursor - body));
-}
-
-// A frame as mROS v1 hands it to a subscriber: the length word, then the
-// body. The message is only delivered when the body decodes completely
-// within its known size.
-template <class T> void deliverFrame(void (*callback)(void*), const char* frame) {
-  const char* body = frame + 4;
-  uint32_t body_size;
-  if (!OnBoardFrames<T>::find(body, body_size)) {
-    const uint8_t* word = reinterpret_cast<const uint8_t*>(frame);
-    body_size = static_cast<uint32_t>(word[0]) | static_cast<uint32_t>(word[1]) << 8 |
-                static_cast<uint32_t>(word[2]) << 16 | static_cast<uint32_t>(word[3]) << 24;
-  }
-  T message;
-  Reader in(reinterpret_cast<const uint8_t*>(body), body_size);
-  if (Codec<T>::read(in, message)) {
-    callback(&message);
-  }
-}
+// mROS v1 delivery, defined in mros_v1_delivery.h, which message_headers.h
+// (the mROS v1 library's per-firmware aggregate) includes: only firmware
+// built with the v1 library instantiates it.
+template <class T> void memCopy(const T& message, char*& cursor);
+template <class T> void deliverFrame(void (*callback)(void*), const char* frame);
 
 }  // namespace wire
 
@@ -812,8 +736,8 @@ template <class T> struct Message {
   int dataSize() const { return static_cast<int>(serializedLength()); }
 
   // Writes the wire image at cursor, which the caller sized with dataSize(),
-  // and advances cursor past it.
-  void memCopy(char*& cursor) const { wire::memCopy(self(), cursor); }
+  // and advances cursor past it (defined in mros_v1_delivery.h).
+  void memCopy(char*& cursor) const;
 
   // Reads a wire image at cursor and advances cursor past it. The v1 call
   // carries no size, so it trusts the buffer; prefer deserialize(buf, size).

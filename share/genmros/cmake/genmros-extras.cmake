@@ -2,16 +2,14 @@
 #
 # genmsg's generate_messages() calls the three macros below for every package
 # (the language name is "mros": genmsg strips the "gen" of "genmros"):
-#   _generate_msg_mros / _generate_srv_mros  one custom command per .msg/.srv
+#   _generate_msg_mros / _generate_srv_mros  once per .msg/.srv: noted here
 #   _generate_module_mros                    once per package, after them
-# The headers go to ${CATKIN_DEVEL_PREFIX}/${genmros_INSTALL_DIR}/<pkg>/<Type>.h
-# and, when MROS_EXPORT_DIR is set (CMake variable or environment), also to
-# ${MROS_EXPORT_DIR}/include/<pkg>/<Type>.h, with the headers of every type
-# they contain (installed packages' too), and the .msg/.srv files and the
-# package.xml under ${MROS_EXPORT_DIR}/share/<pkg>/ (what mros_import_messages()
-# reads to write a firmware's aggregates), and ${MROS_EXPORT_DIR}/mros_export.cmake
-# for a firmware to include(). Headers and definitions no type needs any more
-# leave the export dir (genmros keeps its claims in ${MROS_EXPORT_DIR}/.genmros).
+# The last asks genmros once what each file's headers are (genmros
+# catkin-package, which also tidies up after removed files) and adds one
+# custom command per file. The headers go to
+# ${CATKIN_DEVEL_PREFIX}/${genmros_INSTALL_DIR}/<pkg>/<Type>.h and, when
+# MROS_EXPORT_DIR is set, also into that export dir for a firmware
+# (genmros owns its layout: see colcon_mros/export_dir.py).
 
 if(NOT GENMROS_BIN)
   message(FATAL_ERROR "genmros: the genmros program was not found; reinstall colcon-mros "
@@ -20,10 +18,6 @@ endif()
 
 # Not include/: the headers have the same names and namespaces as gencpp's.
 set(genmros_INSTALL_DIR share/genmros/include)
-
-# The support header every generated header includes; genmros writes it to
-# the include root, the parent of each package's output directory.
-set(GENMROS_SUPPORT_HEADER mros_message_support.h)
 
 # The export is a cache setting, so a later configure (a CMakeLists.txt edit,
 # a new package) keeps it until -DMROS_EXPORT_DIR= turns it off. The
@@ -44,154 +38,62 @@ elseif(NOT "$ENV{MROS_EXPORT_DIR}" STREQUAL "")
       "-DMROS_EXPORT_DIR=...")
   endif()
 endif()
-
-# Fail at configure time, naming the directory, if the export dir cannot
-# take the headers.
-function(_genmros_check_export_dir ARG_DIR)
-  set(probe "${ARG_DIR}")
-  while(NOT EXISTS "${probe}")
-    get_filename_component(probe "${probe}" DIRECTORY)
-  endwhile()
-  if(NOT IS_DIRECTORY "${probe}")
-    message(FATAL_ERROR "genmros: MROS_EXPORT_DIR '${ARG_DIR}' cannot be created: "
-      "'${probe}' is not a directory")
-  endif()
-  file(MAKE_DIRECTORY "${ARG_DIR}/include")
-  # DIR/share/<pkg>/package.xml must not look like a second copy of each
-  # package to catkin or colcon when DIR is inside the workspace.
-  file(TOUCH "${ARG_DIR}/COLCON_IGNORE")
-endfunction()
-
-# mros_generate.cmake, the firmware-side module, is installed beside this file.
-set(_GENMROS_CMAKE_DIR "${CMAKE_CURRENT_LIST_DIR}")
-
 if(MROS_EXPORT_DIR)
   get_filename_component(MROS_EXPORT_DIR "${MROS_EXPORT_DIR}" ABSOLUTE)
-  _genmros_check_export_dir("${MROS_EXPORT_DIR}")
-  # What a firmware include()s, as colcon build --mros-export writes it;
-  # rewritten only when its text changes.
-  configure_file("${_GENMROS_CMAKE_DIR}/mros_export.cmake.in" "${MROS_EXPORT_DIR}/mros_export.cmake" @ONLY)
 endif()
 
-# The header names one .msg or .srv file produces, relative to its package dir.
-function(_genmros_header_names ARG_FILE ARG_OUTPUT_VAR)
-  get_filename_component(type_name "${ARG_FILE}" NAME_WE)
-  set(names "${type_name}.h")
-  if(ARG_FILE MATCHES "\\.srv$")
-    list(APPEND names "${type_name}Request.h" "${type_name}Response.h")
-  endif()
-  set(${ARG_OUTPUT_VAR} ${names} PARENT_SCOPE)
-endfunction()
-
 macro(_generate_msg_mros ARG_PKG ARG_MSG ARG_IFLAGS ARG_MSG_DEPS ARG_GEN_OUTPUT_DIR)
-  _genmros_add_command("${ARG_PKG}" "${ARG_MSG}" "${ARG_IFLAGS}" "${ARG_MSG_DEPS}"
-    "${ARG_GEN_OUTPUT_DIR}" msg)
+  _genmros_note_file("${ARG_MSG}" "${ARG_IFLAGS}" "${ARG_MSG_DEPS}")
 endmacro()
 
 macro(_generate_srv_mros ARG_PKG ARG_SRV ARG_IFLAGS ARG_MSG_DEPS ARG_GEN_OUTPUT_DIR)
-  _genmros_add_command("${ARG_PKG}" "${ARG_SRV}" "${ARG_IFLAGS}" "${ARG_MSG_DEPS}"
-    "${ARG_GEN_OUTPUT_DIR}" srv)
+  _genmros_note_file("${ARG_SRV}" "${ARG_IFLAGS}" "${ARG_MSG_DEPS}")
 endmacro()
 
-# A macro, not a function: genmsg collects ALL_GEN_OUTPUT_FILES_mros in the
-# caller's scope.
-macro(_genmros_add_command ARG_PKG ARG_FILE ARG_IFLAGS ARG_FILE_DEPS ARG_GEN_OUTPUT_DIR ARG_KIND)
-  # Made now, not at build time: genmsg installs this directory only if it
-  # exists when the package is configured.
-  file(MAKE_DIRECTORY "${ARG_GEN_OUTPUT_DIR}")
-  _genmros_header_names("${ARG_FILE}" _genmros_names)
-  get_filename_component(_genmros_file_name "${ARG_FILE}" NAME)
-  set(_genmros_outputs "")
-  foreach(_genmros_name ${_genmros_names})
-    list(APPEND _genmros_outputs "${ARG_GEN_OUTPUT_DIR}/${_genmros_name}")
-  endforeach()
-
-  set(_genmros_export_args "")
-  if(MROS_EXPORT_DIR)
-    # The same genmros run fills the export dir: this file's headers, those
-    # of every type they contain (std_msgs/Header too, so the export needs no
-    # ROS installed beside it), and their definitions under share/. genmros
-    # writes atomically, so packages built in parallel can share the dir.
-    set(_genmros_export_args --export-dir "${MROS_EXPORT_DIR}")
-    foreach(_genmros_name ${_genmros_names})
-      list(APPEND _genmros_outputs "${MROS_EXPORT_DIR}/include/${ARG_PKG}/${_genmros_name}")
-    endforeach()
-    list(APPEND _genmros_outputs "${MROS_EXPORT_DIR}/share/${ARG_PKG}/${ARG_KIND}/${_genmros_file_name}")
-  endif()
-
-  # genmros leaves a header with unchanged content untouched; the touch tells
-  # make that this rule has run, so a build with nothing changed runs no
-  # generator at all.
-  add_custom_command(OUTPUT ${_genmros_outputs}
-    COMMAND "${GENMROS_BIN}" "${ARG_FILE}" ${ARG_IFLAGS} -p "${ARG_PKG}" -o "${ARG_GEN_OUTPUT_DIR}"
-      ${_genmros_export_args}
-    COMMAND "${CMAKE_COMMAND}" -E touch_nocreate ${_genmros_outputs}
-    DEPENDS "${GENMROS_BIN}" "${ARG_FILE}" ${ARG_FILE_DEPS}
-    COMMENT "Generating mROS headers from ${ARG_PKG}/${_genmros_file_name}"
-    VERBATIM)
-  list(APPEND ALL_GEN_OUTPUT_FILES_mros ${_genmros_outputs})
+# Macros, not functions: the notes and genmsg's ALL_GEN_OUTPUT_FILES_mros
+# live in the package's scope.
+macro(_genmros_note_file ARG_FILE ARG_IFLAGS ARG_FILE_DEPS)
+  list(APPEND _genmros_files "${ARG_FILE}")
+  list(LENGTH _genmros_files _genmros_count)
+  set(_genmros_depends_${_genmros_count} "${ARG_FILE_DEPS}")
+  set(_genmros_iflags "${ARG_IFLAGS}")
 endmacro()
-
-# Remove the genmros headers in ARG_DIR that the package no longer defines,
-# and, in an export dir, the .msg/.srv copies they came from and their
-# claims (genmros' record of what each definition put into the dir). Only
-# files that carry genmros' marker are removed. Sets ARG_REMOVED_VAR when it
-# removed a header.
-function(_genmros_remove_stale ARG_DIR ARG_KEEP ARG_DEFINITIONS_DIR ARG_CLAIMS_DIR ARG_REMOVED_VAR)
-  set(removed FALSE)
-  file(GLOB headers "${ARG_DIR}/*.h")
-  foreach(header ${headers})
-    get_filename_component(name "${header}" NAME)
-    list(FIND ARG_KEEP "${name}" index)
-    if(index EQUAL -1)
-      file(STRINGS "${header}" marker LIMIT_COUNT 1 LIMIT_INPUT 512 REGEX "Generated by genmros")
-      if(marker)
-        file(REMOVE "${header}")
-        set(removed TRUE)
-        if(ARG_DEFINITIONS_DIR)
-          get_filename_component(type_name "${name}" NAME_WE)
-          file(REMOVE "${ARG_DEFINITIONS_DIR}/msg/${type_name}.msg"
-                      "${ARG_DEFINITIONS_DIR}/srv/${type_name}.srv"
-                      "${ARG_CLAIMS_DIR}/msg/${type_name}.msg"
-                      "${ARG_CLAIMS_DIR}/srv/${type_name}.srv")
-        endif()
-      endif()
-    endif()
-  endforeach()
-  set(${ARG_REMOVED_VAR} ${removed} PARENT_SCOPE)
-endfunction()
 
 macro(_generate_module_mros ARG_PKG ARG_GEN_OUTPUT_DIR ARG_GENERATED_FILES)
-  # The names of the headers (and exported definitions) the package has now.
-  set(_genmros_keep "")
-  foreach(_genmros_output ${ARG_GENERATED_FILES})
-    get_filename_component(_genmros_name "${_genmros_output}" NAME)
-    list(APPEND _genmros_keep "${_genmros_name}")
-  endforeach()
-  # A .msg removed from the package: its header goes on the next configure.
-  _genmros_remove_stale("${ARG_GEN_OUTPUT_DIR}" "${_genmros_keep}" "" "" _genmros_removed)
+  set(_genmros_export_args "")
   if(MROS_EXPORT_DIR)
-    _genmros_remove_stale("${MROS_EXPORT_DIR}/include/${ARG_PKG}" "${_genmros_keep}"
-      "${MROS_EXPORT_DIR}/share/${ARG_PKG}" "${MROS_EXPORT_DIR}/.genmros/claims/${ARG_PKG}"
-      _genmros_removed)
-    if(_genmros_removed)
-      # The types only the removed definitions contained leave too.
-      execute_process(COMMAND "${GENMROS_BIN}" prune-export "${MROS_EXPORT_DIR}"
-        RESULT_VARIABLE _genmros_result)
-      if(NOT _genmros_result EQUAL 0)
-        message(FATAL_ERROR "genmros: could not prune MROS_EXPORT_DIR '${MROS_EXPORT_DIR}'")
-      endif()
-    endif()
-    # Built, not configured: an export dir removed by hand comes back whole.
-    set(_genmros_manifest "${MROS_EXPORT_DIR}/share/${ARG_PKG}/package.xml")
-    add_custom_command(OUTPUT "${_genmros_manifest}"
-      COMMAND "${CMAKE_COMMAND}" -E copy "${PROJECT_SOURCE_DIR}/package.xml" "${_genmros_manifest}"
-      DEPENDS "${PROJECT_SOURCE_DIR}/package.xml"
+    set(_genmros_export_args --export-dir "${MROS_EXPORT_DIR}")
+  endif()
+  set(_genmros_outputs_file "${CMAKE_CURRENT_BINARY_DIR}/genmros/${ARG_PKG}-outputs.cmake")
+  execute_process(
+    COMMAND "${GENMROS_BIN}" catkin-package -p "${ARG_PKG}" -o "${ARG_GEN_OUTPUT_DIR}"
+      --cmake-file "${_genmros_outputs_file}" ${_genmros_export_args} ${_genmros_files}
+    RESULT_VARIABLE _genmros_result ERROR_VARIABLE _genmros_error)
+  if(NOT _genmros_result EQUAL 0)
+    string(STRIP "${_genmros_error}" _genmros_error)
+    message(FATAL_ERROR "${_genmros_error}")
+  endif()
+  include("${_genmros_outputs_file}")
+
+  set(_genmros_index 0)
+  foreach(_genmros_file ${_genmros_files})
+    math(EXPR _genmros_index "${_genmros_index} + 1")
+    get_filename_component(_genmros_file_name "${_genmros_file}" NAME)
+    # genmros leaves a header with unchanged content untouched; the touch
+    # tells make that this rule has run, so a build with nothing changed runs
+    # no generator at all. genmros writes the export dir atomically and under
+    # its lock, so packages built in parallel can share it.
+    add_custom_command(OUTPUT ${_genmros_outputs_${_genmros_index}}
+      COMMAND "${GENMROS_BIN}" "${_genmros_file}" ${_genmros_iflags} -p "${ARG_PKG}"
+        -o "${ARG_GEN_OUTPUT_DIR}" ${_genmros_export_args}
+      COMMAND "${CMAKE_COMMAND}" -E touch_nocreate ${_genmros_outputs_${_genmros_index}}
+      DEPENDS "${GENMROS_BIN}" "${_genmros_file}" ${_genmros_depends_${_genmros_index}}
+      COMMENT "Generating mROS headers from ${ARG_PKG}/${_genmros_file_name}"
       VERBATIM)
-    list(APPEND ALL_GEN_OUTPUT_FILES_mros "${_genmros_manifest}")
+    list(APPEND ALL_GEN_OUTPUT_FILES_mros ${_genmros_outputs_${_genmros_index}})
+  endforeach()
+  if(_genmros_files)
+    install(FILES ${_genmros_support_header} DESTINATION "${genmros_INSTALL_DIR}")
   endif()
-  if(NOT "${ARG_GENERATED_FILES}" STREQUAL "")
-    install(FILES "${CATKIN_DEVEL_PREFIX}/${genmros_INSTALL_DIR}/${GENMROS_SUPPORT_HEADER}"
-      DESTINATION "${genmros_INSTALL_DIR}")
-  endif()
+  unset(_genmros_files)
 endmacro()

@@ -1,0 +1,35 @@
+"""colcon_mros.names: the reserved names are an explicit list, held equal
+here to what the support headers declare."""
+
+import os
+import re
+
+from colcon_mros.names import SUPPORT_HEADER_NAMES, member_identifier
+
+TEMPLATES = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'colcon_mros',
+                         'templates')
+# A template's parameter list, nested template arguments included.
+_TEMPLATE_HEAD = re.compile(r'template\s*<(?:[^<>]|<[^<>]*>)*>')
+_DECLARATION = re.compile(r'\b(?:struct|class|namespace|using)\s+([A-Za-z_]\w*)')
+
+
+def _declared(name):
+    with open(os.path.join(TEMPLATES, name)) as stream:
+        text = _TEMPLATE_HEAD.sub('template <>', stream.read())
+    return set(_DECLARATION.findall(text))
+
+
+def test_reserved_names_are_what_the_support_headers_declare():
+    declared = _declared('mros_message_support.h') | _declared('mros_v1_delivery.h')
+    assert declared == SUPPORT_HEADER_NAMES
+
+
+def test_template_parameters_are_not_reserved():
+    assert not {'T', 'Word', 'Text', 'Number', 'Bits', 'Sequence', 'Byte'} & SUPPORT_HEADER_NAMES
+
+
+def test_members_are_escaped_until_free():
+    assert member_identifier('class', 'Thing') == 'class_'
+    assert member_identifier('EOF', 'Thing') == 'EOF_'
+    assert member_identifier('Thing', 'Thing') == 'Thing_'
+    assert member_identifier('value', 'Thing') == 'value'
