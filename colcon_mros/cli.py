@@ -23,6 +23,9 @@ Generator mode, with gencpp's arguments (catkin runs it for every message):
   genmros FILE.msg|FILE.srv -p PKG -o OUTDIR [-I PKG:DIR ...] [-e TEMPLATE_DIR]
           [--export-dir DIR]
 
+Export mode, what one firmware needs:
+  genmros export [--workspace WS ...] [--package PKG ...] [--type PKG/TYPE ...] -o DIR ...
+
 Every subcommand has --help.'''
 
 
@@ -193,8 +196,9 @@ def _prune_export(options):
 
 def _catkin_package(options):
     from colcon_mros.catkin_package import configure_package
-    configure_package(options.package, options.output_dir, options.files, options.cmake_file,
-                      options.export_dir)
+    for path in configure_package(options.package, options.output_dir, options.files,
+                                  options.cmake_file, options.export_dir):
+        print('genmros: removed %s' % path)
 
 
 def main(argv=None):

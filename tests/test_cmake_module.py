@@ -131,7 +131,8 @@ def test_aggregates_hold_exactly_the_listed_types(firmware, workspace):
     headers = firmware.aggregate('message_headers.h')
     assert '#include <mros_test_base/Vector3i.h>' in headers
     assert '#include <std_msgs/ColorRGBA.h>' in headers
-    assert headers.count('#include <') == 3  # the two types and <cstddef>
+    # The two types, <cstddef> and the v1 delivery header.
+    assert headers.count('#include <') == 4 and '#include <mros_v1_delivery.h>' in headers
 
 
 def test_generate_fails_at_configure_time_for_an_unknown_type(firmware, workspace):
@@ -168,7 +169,7 @@ def test_import_builds_the_firmware_from_a_catkin_export(firmware, catkin_export
     # The headers come from the export dir; only the aggregates are the firmware's.
     generated = os.listdir(os.path.join(firmware.build_dir, 'mros_messages', 'firmware'))
     assert sorted(generated) == ['message_class_specialization.h', 'message_headers.h',
-                                 'msg_max_size.h']
+                                 'mros_v1_delivery.h', 'msg_max_size.h']
 
 
 def test_import_rebuilds_when_the_export_changes(firmware, catkin_export, tmp_path):

@@ -22,9 +22,12 @@ import cpp_harness
 from conftest import DEBIAN_MESSAGE_PACKAGES, REPO, TEST_WS, run_genmros
 from test_target_cpus import BINARY, COMPACT, TARGETS_DIR, TEXT, _gencpp_headers, _search_path
 
+from colcon_mros.export_dir import ExportDir
 from colcon_mros.identity import compact_text
+from colcon_mros.installed_files import CMAKE_MODULE, installed_file
 from colcon_mros.model import gencpp_definition_text
 from colcon_mros.parse import SpecLoader
+from colcon_mros.workspace import installed_packages
 
 SEEDS = 6  # per type: binary, text and compact instances, twice
 
@@ -186,13 +189,12 @@ def test_cmake_module_and_make_fragment_take_the_choice(tmp_path):
         'add_executable(bad main.cpp)\n'
         'if(BAD)\n  mros_generate_messages(TARGET bad TYPES std_msgs/Header DEFINITION_TEXT short)\nendif()\n'
         % (REPO, tmp_path / 'export'))
-    # An export dir as catkin writes it: full-text headers and the definitions.
-    run_genmros('export', '--underlay', '/usr', '--type', 'std_msgs/Header', '-o',
-                str(tmp_path / 'export' / 'include'))
-    os.makedirs(str(tmp_path / 'export' / 'share' / 'std_msgs' / 'msg'))
-    for relative in ('msg/Header.msg', 'package.xml'):
-        with open('/usr/share/std_msgs/' + relative) as source:
-            (tmp_path / 'export' / 'share' / 'std_msgs' / relative).write_text(source.read())
+    # An export dir as colcon writes it: full-text headers and the definitions.
+    export = ExportDir(str(tmp_path / 'export'))
+    run_genmros('export', '--underlay', '/usr', '--package', 'std_msgs', '--only', 'headers', '-o',
+                export.include_dir)
+    export.replace_packages({'std_msgs': installed_packages(['/usr'])['std_msgs']},
+                            installed_file(CMAKE_MODULE))
     build = tmp_path / 'build'
     subprocess.run(['cmake', '-S', str(project), '-B', str(build)], check=True, capture_output=True)
     subprocess.run(['cmake', '--build', str(build)], check=True, capture_output=True)
