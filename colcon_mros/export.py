@@ -6,7 +6,8 @@ aggregates, which cover the selected types only, under the output directory::
 
     OUT/mros_message_support.h
     OUT/<pkg>/<Type>.h
-    OUT/message_headers.h, OUT/message_class_specialization.h, OUT/msg_max_size.h
+    OUT/message_headers.h, OUT/message_class_specialization.h, OUT/msg_max_size.h,
+    OUT/mros_v1_delivery.h (which message_headers.h includes)
 
 Everything is rendered before anything is written, so a bad definition
 leaves OUT as it was, and OUT is switched to the new export in one step
@@ -111,8 +112,6 @@ def _check_type_ids(messages):
         if other != message.full_name:
             raise GenmrosError('type ID %d is shared by %s and %s; rename one type'
                                % (message.type_id, other, message.full_name))
-
-
 
 
 def _depfile_text(target, inputs):
