@@ -9,7 +9,6 @@ export, the CMake module and the make fragment carry the choice into headers.
 """
 
 import glob
-import io
 import os
 import re
 import subprocess
@@ -20,7 +19,8 @@ from genpy.dynamic import generate_dynamic
 
 import cpp_harness
 from conftest import DEBIAN_MESSAGE_PACKAGES, REPO, TEST_WS, run_genmros
-from test_target_cpus import BINARY, COMPACT, TARGETS_DIR, TEXT, _gencpp_headers, _search_path
+from test_genpy_compat import _encode
+from test_target_cpus import BINARY, COMPACT, TEXT, _search_path, expected_bytes_program
 
 from colcon_mros.export_dir import ExportDir
 from colcon_mros.identity import compact_text
@@ -71,17 +71,7 @@ def roscpp_images(tmp_path_factory):
                        for f in sorted(glob.glob('/usr/share/%s/srv/*.srv' % p))]
     type_set = cpp_harness.TypeSet(search_path, [n for n in names if not n.endswith(('Request', 'Response'))],
                                    debian_services + test_ws_services)
-    gencpp = _gencpp_headers(search_path, str(root / 'gencpp'))
-    directory = str(root / 'sources')
-    os.makedirs(directory)
-    sources = cpp_harness.write_sources(directory, type_set)
-    objects = [
-        cpp_harness.compile_object(sources['roscpp_side.cpp'], directory, [gencpp, directory], strict=False),
-        cpp_harness.compile_object(os.path.join(TARGETS_DIR, 'expected_bytes.cpp'), directory,
-                                   [directory, TARGETS_DIR]),
-    ]
-    program = cpp_harness.link_program(objects, os.path.join(directory, 'expected_bytes'),
-                                       libraries=cpp_harness.ROSCPP_LIBRARIES)
+    _, program = expected_bytes_program(type_set, search_path, root)
     output = subprocess.run([program, str(SEEDS), str(BINARY), str(TEXT), str(COMPACT)], check=True,
                             capture_output=True, text=True).stdout
     images = {}
@@ -101,12 +91,6 @@ def _values(message):
     if isinstance(message, float):
         return repr(message)
     return message
-
-
-def _serialized(message):
-    buffer = io.BytesIO()
-    message.serialize(buffer)
-    return buffer.getvalue()
 
 
 def _class(name, text):
@@ -135,7 +119,7 @@ def test_compact_text_is_the_same_type_to_genpy(roscpp_images):
             assert _values(from_compact) == _values(from_full), name
             # genpy decodes strings as UTF-8, replacing what is not: binary
             # strings come back changed, the same way from either class.
-            assert _serialized(from_compact) == _serialized(from_full), name
+            assert _encode(from_compact) == _encode(from_full), name
             compared += 1
     assert compared == len(names) * SEEDS
 

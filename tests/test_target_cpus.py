@@ -135,18 +135,26 @@ def target_sources(tmp_path_factory):
     bounds = root / 'compact.options'
     bounds.write_text('* max_size:4 max_count:4\n')
     run_genmros(*arguments, '-o', exports['bounded'], '--storage', 'bounded', '--options', str(bounds))
+    sources, expected = expected_bytes_program(type_set, search_path, root, for_targets=True)
+    return type_set, exports, sources, expected
+
+
+def expected_bytes_program(type_set, search_path, root, for_targets=False):
+    """The harness's sources for type_set under root/sources, and the host
+    program that prints roscpp's wire images of their instances (gencpp's
+    headers of the test_ws types, Debian's of the others)."""
     gencpp = _gencpp_headers(search_path, str(root / 'gencpp'))
     directory = str(root / 'sources')
     os.makedirs(directory)
-    sources = cpp_harness.write_sources(directory, type_set, for_targets=True)
+    sources = cpp_harness.write_sources(directory, type_set, for_targets=for_targets)
     objects = [
         cpp_harness.compile_object(sources['roscpp_side.cpp'], directory, [gencpp, directory], strict=False),
         cpp_harness.compile_object(os.path.join(TARGETS_DIR, 'expected_bytes.cpp'), directory,
                                    [directory, TARGETS_DIR]),
     ]
-    expected = cpp_harness.link_program(objects, os.path.join(directory, 'expected_bytes'),
-                                        libraries=cpp_harness.ROSCPP_LIBRARIES)
-    return type_set, exports, sources, expected
+    program = cpp_harness.link_program(objects, os.path.join(directory, 'expected_bytes'),
+                                       libraries=cpp_harness.ROSCPP_LIBRARIES)
+    return sources, program
 
 
 def test_type_set_covers_the_issue(target_sources):
