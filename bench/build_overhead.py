@@ -1,19 +1,25 @@
 #!/usr/bin/python3
-"""What genmros adds to a catkin build: build time with genmros enabled
-divided by build time with it disabled (ROS_LANG_DISABLE=genmros), measured
-side by side on the same workspace.
+"""What genmros adds to a catkin or colcon build: build time with genmros
+enabled divided by build time with it disabled (ROS_LANG_DISABLE=genmros),
+measured side by side on the same workspace.
 
 Two workspaces: test_ws as it is in the repository, and a synthetic one of
 24 message packages (8 messages each, nesting std_msgs, geometry_msgs and
-each other's types in a tree, so catkin can build several at once).
+each other's types in a tree, so a build can run several at once).
 
-For each, --runs rounds of: a clean `catkin_make -j2` (build/ and devel/
+For each build tool (catkin_make -j2; catkin build -j2 -p2; colcon build
+--parallel-workers 2, with --mros-export when enabled) and workspace,
+--runs rounds of: a clean build (build, devel, install and log spaces
 removed) and a no-change rebuild, once enabled and once disabled, in
 alternating order. The table shows medians of wall time and of CPU time
 (user + system of every process the build ran; less sensitive to other load
-on the machine), and how many genmros runs the no-change rebuild made.
+on the machine), and, for the enabled builds, how many genmros processes
+the build started and the CPU seconds they took (genmros runs through a
+wrapper that counts them). Last, the start-up of genmros' two catkin
+subcommands: the modules each imports (python3 -X importtime).
 
-    /usr/bin/python3 bench/build_overhead.py [--runs 3] [--keep DIR]
+    /usr/bin/python3 bench/build_overhead.py [--runs 3] [--tools catkin_make,catkin_build,colcon]
+                                             [--keep DIR]
 """
 
 import argparse
@@ -27,7 +33,14 @@ import tempfile
 import time
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-GENERATOR_LOG_LINE = 'Generating mROS headers from'
+TOOLS = ('catkin_make', 'catkin_build', 'colcon')
+# Wraps genmros to count its processes and their CPU time (bash's times).
+WRAPPER = '''#!/bin/bash
+{genmros} "$@"
+status=$?
+{{ echo "run $1"; times | tail -1; }} >> "$GENMROS_BENCH_LOG"
+exit $status
+'''
 SYNTHETIC_PACKAGES = 24
 SYNTHETIC_MESSAGES = 8
 
@@ -94,42 +107,75 @@ def count_messages(workspace):
                for name in names if name.endswith(('.msg', '.srv')))
 
 
-def build_environment(workspace, genmros_enabled):
+def build_environment(workspace, genmros_enabled, log):
     env = {key: value for key, value in os.environ.items()
            if key not in ('ROS_LANG_DISABLE', 'MROS_EXPORT_DIR', 'CMAKE_PREFIX_PATH')}
     # Debian's catkin needs the Python that has catkin_pkg and genmsg.
     env['PATH'] = '/usr/local/bin:/usr/bin:/bin'
     env['PWD'] = workspace
+    env['GENMROS_BENCH_LOG'] = log
     if not genmros_enabled:
         env['ROS_LANG_DISABLE'] = 'genmros'
     return env
 
 
-def timed_build(workspace, env):
-    """(wall seconds, CPU seconds, genmros runs) of one catkin_make."""
+def build_command(tool, workspace, wrapper, enabled):
+    """The build command of tool, with genmros run through wrapper."""
+    cmake_args = ['-DGENMROS_BIN=%s' % wrapper]
+    if tool == 'catkin_make':
+        return ['catkin_make', '-j2'] + cmake_args
+    if tool == 'catkin_build':
+        return ['catkin', 'build', '-j2', '-p2', '--no-status', '--no-notify', '--cmake-args'] + cmake_args
+    export = ['--mros-export', os.path.join(workspace, 'mros_export')] if enabled else []
+    return ['colcon', 'build', '--parallel-workers', '2'] + export + ['--cmake-args'] + cmake_args
+
+
+def genmros_runs(log):
+    """(processes, CPU seconds) the wrapper logged."""
+    runs, cpu = 0, 0.0
+    if os.path.exists(log):
+        with open(log) as stream:
+            lines = stream.read().splitlines()
+        for line in lines:
+            if line.startswith('run '):
+                runs += 1
+            else:  # times: children's user and system time, e.g. "0m0.081s 0m0.012s"
+                for field in line.split():
+                    minutes, seconds = field.rstrip('s').split('m')
+                    cpu += int(minutes) * 60 + float(seconds)
+        os.remove(log)
+    return runs, cpu
+
+
+def timed_build(command, workspace, env):
+    """(wall seconds, CPU seconds, genmros processes, their CPU seconds) of one build."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.monotonic()
-    result = subprocess.run(['catkin_make', '-j2'], cwd=workspace, env=env,
+    result = subprocess.run(command, cwd=workspace, env=env,
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     wall = time.monotonic() - start
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if result.returncode != 0:
-        sys.exit('catkin_make failed in %s:\n%s' % (workspace, result.stdout[-4000:]))
+        sys.exit('%s failed in %s:\n%s' % (' '.join(command), workspace, result.stdout[-4000:]))
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    return wall, cpu, result.stdout.count(GENERATOR_LOG_LINE)
+    return (wall, cpu) + genmros_runs(env['GENMROS_BENCH_LOG'])
 
 
-def measure(workspace, runs):
-    """{(enabled, 'clean'|'rebuild'): [(wall, cpu, generator runs), ...]}."""
+def measure(tool, workspace, runs, wrapper):
+    """{(enabled, 'clean'|'rebuild'): [(wall, cpu, genmros runs, their cpu), ...]}."""
+    if tool == 'catkin_build':
+        subprocess.run(['catkin', 'init'], cwd=workspace, check=True, capture_output=True)
     samples = {}
+    log = os.path.join(workspace, 'genmros-runs.log')
     for round_number in range(runs):
         order = (True, False) if round_number % 2 == 0 else (False, True)
         for enabled in order:
-            env = build_environment(workspace, enabled)
-            for space in ('build', 'devel'):
+            env = build_environment(workspace, enabled, log)
+            command = build_command(tool, workspace, wrapper, enabled)
+            for space in ('build', 'devel', 'install', 'log', 'logs', 'mros_export'):
                 shutil.rmtree(os.path.join(workspace, space), ignore_errors=True)
-            samples.setdefault((enabled, 'clean'), []).append(timed_build(workspace, env))
-            samples.setdefault((enabled, 'rebuild'), []).append(timed_build(workspace, env))
+            samples.setdefault((enabled, 'clean'), []).append(timed_build(command, workspace, env))
+            samples.setdefault((enabled, 'rebuild'), []).append(timed_build(command, workspace, env))
     return samples
 
 
@@ -137,42 +183,82 @@ def median(samples, column):
     return statistics.median(sample[column] for sample in samples)
 
 
-def report_rows(name, workspace, samples):
+def report_rows(tool, name, workspace, samples):
     rows = []
     for kind in ('clean', 'rebuild'):
         with_samples, without_samples = samples[(True, kind)], samples[(False, kind)]
         wall_with, wall_without = median(with_samples, 0), median(without_samples, 0)
         cpu_with, cpu_without = median(with_samples, 1), median(without_samples, 1)
-        rows.append((name, count_messages(workspace), kind,
+        rows.append((tool, name, count_messages(workspace), kind,
                      '%.2f' % wall_without, '%.2f' % wall_with,
                      '%.2fx' % (wall_with / wall_without),
                      '%.2fx' % (cpu_with / cpu_without),
-                     str(max(sample[2] for sample in with_samples))))
+                     '%d' % median(with_samples, 2), '%.2f' % median(with_samples, 3)))
     return rows
 
 
 def print_table(rows):
-    header = ('workspace', 'msg+srv', 'build', 'without s', 'with s', 'wall ratio',
-              'CPU ratio', 'genmros runs')
+    header = ('tool', 'workspace', 'msg+srv', 'build', 'without s', 'with s', 'wall ratio',
+              'CPU ratio', 'genmros runs', 'genmros CPU s')
     widths = [max(len(str(row[i])) for row in rows + [header]) for i in range(len(header))]
     for row in [header, tuple('-' * width for width in widths)] + rows:
         print('  '.join(str(cell).ljust(width) for cell, width in zip(row, widths)))
 
 
+def print_start_up(workspace):
+    """The modules genmros' catkin subcommands import, as -X importtime sees them."""
+    package = os.path.join(workspace, 'src', 'bench_msgs_01')
+    files = sorted(os.path.join(package, 'msg', name) for name in os.listdir(os.path.join(package, 'msg')))
+    scratch = os.path.join(workspace, 'start_up')
+    include_flags = ['-I', 'bench_msgs_01:%s' % os.path.join(package, 'msg'),
+                     '-I', 'bench_msgs_00:%s' % os.path.join(workspace, 'src', 'bench_msgs_00', 'msg'),
+                     '-I', 'std_msgs:/usr/share/std_msgs/msg', '-I', 'geometry_msgs:/usr/share/geometry_msgs/msg']
+    commands = {
+        'catkin-package (configure, once per package)': [
+            'catkin-package', '-p', 'bench_msgs_01', '-o', os.path.join(scratch, 'bench_msgs_01'),
+            '--cmake-file', os.path.join(scratch, 'outputs.cmake')] + files,
+        'generator run (build, once per package)': files + [
+            '-p', 'bench_msgs_01', '-o', os.path.join(scratch, 'bench_msgs_01')] + include_flags,
+    }
+    print('\ngenmros start-up (python3 -X importtime; total import time and the largest imports):')
+    for name, arguments in commands.items():
+        result = subprocess.run(['/usr/bin/python3', '-X', 'importtime', '-m', 'colcon_mros'] + arguments,
+                                cwd=REPO, capture_output=True, text=True, check=True)
+        imports = []
+        for line in result.stderr.splitlines():
+            fields = line.split('|')
+            if line.startswith('import time:') and fields[1].strip().isdigit():
+                imports.append((int(fields[1]), fields[2].rstrip()))
+        top_level = [(cumulative, module.strip()) for cumulative, module in imports
+                     if not module.startswith('  ')]
+        total = sum(cumulative for cumulative, _ in top_level)
+        largest = sorted(top_level, reverse=True)[:5]
+        print('  %s: %.1f ms of imports; %s' % (name, total / 1000.0, ', '.join(
+            '%s %.1f ms' % (module, cumulative / 1000.0) for cumulative, module in largest)))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
     parser.add_argument('--runs', type=int, default=3, help='rounds per workspace (default 3)')
+    parser.add_argument('--tools', default=','.join(TOOLS),
+                        help='build tools, comma-separated (default: %(default)s)')
     parser.add_argument('--keep', metavar='DIR', help='build in DIR and keep it')
     options = parser.parse_args()
     root = options.keep or tempfile.mkdtemp(prefix='genmros-bench-')
+    wrapper = os.path.join(root, 'genmros-counted')
+    with open(wrapper, 'w') as stream:
+        stream.write(WRAPPER.format(genmros=shutil.which('genmros')))
+    os.chmod(wrapper, 0o755)
     try:
         rows = []
-        for name, make in (('test_ws', test_ws_copy), ('24 packages', synthetic_workspace)):
-            workspace = make(os.path.join(root, name.replace(' ', '_')))
-            rows += report_rows(name, workspace, measure(workspace, options.runs))
-        print('catkin_make -j2, medians of %d runs; "with" = genmros enabled, '
+        for tool in options.tools.split(','):
+            for name, make in (('test_ws', test_ws_copy), ('24 packages', synthetic_workspace)):
+                workspace = make(os.path.join(root, tool, name.replace(' ', '_')))
+                rows += report_rows(tool, name, workspace, measure(tool, workspace, options.runs, wrapper))
+        print('Medians of %d runs; "with" = genmros enabled (colcon: with --mros-export), '
               '"without" = ROS_LANG_DISABLE=genmros' % options.runs)
         print_table(rows)
+        print_start_up(synthetic_workspace(os.path.join(root, 'start_up')))
     finally:
         if not options.keep:
             shutil.rmtree(root)

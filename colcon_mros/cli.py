@@ -19,8 +19,8 @@ from colcon_mros.errors import GenmrosError
 DESCRIPTION = '''\
 Generate mROS message headers from ROS 1 .msg and .srv files.
 
-Generator mode, with gencpp's arguments (catkin runs it for every message):
-  genmros FILE.msg|FILE.srv -p PKG -o OUTDIR [-I PKG:DIR ...] [-e TEMPLATE_DIR]
+Generator mode, with gencpp's arguments (catkin runs it for every package):
+  genmros FILE.msg|FILE.srv ... -p PKG -o OUTDIR [-I PKG:DIR ...] [-e TEMPLATE_DIR]
           [--export-dir DIR]
 
 Export mode, what one firmware needs:
@@ -31,11 +31,11 @@ Every subcommand has --help.'''
 
 def _add_generate(subparsers):
     parser = subparsers.add_parser(
-        'generate', help='the headers of one .msg or .srv file (generator mode, the default)',
-        description='The headers of one .msg or .srv file, with gencpp\'s arguments; "genmros '
-                    'FILE ..." without a subcommand is the same.')
-    parser.add_argument('file', metavar='FILE', help='a .msg or .srv file')
-    parser.add_argument('-p', dest='package', required=True, help='package of FILE')
+        'generate', help='the headers of .msg and .srv files (generator mode, the default)',
+        description='The headers of .msg and .srv files of one package, with gencpp\'s '
+                    'arguments; "genmros FILE ..." without a subcommand is the same.')
+    parser.add_argument('files', nargs='+', metavar='FILE', help='a .msg or .srv file')
+    parser.add_argument('-p', dest='package', required=True, help='package of the files')
     parser.add_argument('-o', dest='output_dir', required=True,
                         help='output directory, <include root>/<package>')
     parser.add_argument('-I', dest='include_paths', action='append', default=[],
@@ -45,7 +45,18 @@ def _add_generate(subparsers):
                         help='also put the headers of the types of FILE and of every type they '
                              "contain, and their definitions, into the export dir DIR (catkin's "
                              'MROS_EXPORT_DIR)')
+    _add_catkin_arguments(parser)
+    parser.add_argument('--stamp', dest='stamps', action='append', default=[], metavar='FILE',
+                        help='a file that marks the run as done (repeatable): only the files '
+                             'whose definitions changed since the stamps were written are '
+                             'generated again (catkin gives one per package)')
     parser.set_defaults(run=_generate)
+
+
+def _add_catkin_arguments(parser):
+    parser.add_argument('--cmake-module', metavar='FILE',
+                        help="the mros_generate.cmake an export dir's mros_export.cmake includes "
+                             "(default: this install's)")
 
 
 def _add_export(subparsers):
@@ -126,6 +137,7 @@ def _add_export_dir_commands(subparsers):
     parser.add_argument('-o', dest='output_dir', required=True)
     parser.add_argument('--cmake-file', required=True, metavar='FILE')
     parser.add_argument('--export-dir', metavar='DIR')
+    _add_catkin_arguments(parser)
     parser.add_argument('files', nargs='*', metavar='FILE', help='the .msg and .srv files')
     parser.set_defaults(run=_catkin_package)
 
@@ -145,11 +157,11 @@ def _parser():
 def _generate(options):
     from colcon_mros.ros_environment import require_ros_python
     require_ros_python()
-    from colcon_mros.generate import generate_file  # needs genmsg and empy
+    from colcon_mros.generate import generate_files  # needs genmsg and empy
     from colcon_mros.workspace import parse_include_flags
-    generate_file(options.file, options.package, options.output_dir,
-                  parse_include_flags(options.include_paths), options.template_dir,
-                  options.export_dir)
+    generate_files(options.files, options.package, options.output_dir,
+                   parse_include_flags(options.include_paths), options.template_dir,
+                   options.export_dir, options.stamps, options.cmake_module)
 
 
 def export_request(options):
@@ -197,7 +209,7 @@ def _prune_export(options):
 def _catkin_package(options):
     from colcon_mros.catkin_package import configure_package
     for path in configure_package(options.package, options.output_dir, options.files,
-                                  options.cmake_file, options.export_dir):
+                                  options.cmake_file, options.export_dir, options.cmake_module):
         print('genmros: removed %s' % path)
 
 

@@ -16,10 +16,11 @@ reads one. This module is the only code that knows its layout::
 Every type ``mros_export.cmake`` lists (messages, services and their
 Request/Response halves) can be imported by name.
 
-catkin runs genmros once per definition file; each run puts into the dir the
-headers and definitions of every type the file contains, from any package.
-When a file stops containing a type, no run writes that type any more, yet
-it would stay. So every run records its claim, the paths it wrote, under
+catkin's generator run for a package puts into the dir, for each definition
+file it generates, the headers and definitions of every type the file
+contains, from any package. When a file stops containing a type, no run
+writes that type any more, yet it would stay. So each file's generation
+records its claim, the paths it wrote, under
 ``.genmros/``, and files that were claimed once and are claimed by no
 definition now leave the dir; files genmros never claimed are never removed.
 Runs for packages built in parallel share the dir, so writing, claiming and
@@ -42,6 +43,7 @@ _STATE_DIR = '.genmros'
 _CLAIMS_DIR = 'claims'
 _LEDGER = 'ledger'
 _LOCK = 'lock'
+_STAMPS_DIR = 'stamps'
 
 
 def _read(path):
@@ -113,6 +115,11 @@ class ExportDir:
 
     def holds_export(self):
         return os.path.isfile(self.cmake_file)
+
+    def stamp_of(self, package):
+        """The file whose time says when catkin last generated package here:
+        when the dir is removed, the package is generated again."""
+        return os.path.join(self._state_dir, _STAMPS_DIR, package)
 
     def outputs_of(self, definition):
         """The paths a catkin generator run for definition writes here (its

@@ -1,54 +1,165 @@
-"""Generator mode: one .msg or .srv file in, its headers out (as gencpp does).
+"""Generator mode: a package's .msg and .srv files in, their headers out.
 
-This is what catkin calls per file, with gencpp's arguments. OUTDIR is the
-package's directory under the include root (``<root>/<pkg>``); the support
-headers go to the include root beside it.
+catkin runs it once per package, with gencpp's arguments and every file of
+the package (``genmros FILE... -p PKG -o OUTDIR -I ...``); one file at a time
+works as well. OUTDIR is the package's directory under the include root
+(``<root>/<pkg>``); the support header goes to the include root beside it.
 
 With an export dir (catkin's MROS_EXPORT_DIR), the same run also fills that
-dir for a firmware (:mod:`colcon_mros.export_dir`): the headers of the file's
+dir for a firmware (:mod:`colcon_mros.export_dir`): the headers of the files'
 types and of every type they contain, from whichever package, and the
 definitions they come from.
+
+Every file is loaded and every header rendered before anything is written,
+so one bad file leaves the package's headers as they were. With stamps (the
+outputs make knows the run by), only the files whose definition, or the
+definition of a type they contain, changed since the stamps were written are
+generated again: their headers are rewritten where their text changed and
+touched otherwise, as a per-file rule would; the other headers keep their
+modification times, so nothing downstream rebuilds for nothing.
 """
 
+import hashlib
 import os
+import time
 
+from colcon_mros import __version__
 from colcon_mros.definition import Definition
 from colcon_mros.errors import GenmrosError
 from colcon_mros.export_dir import ExportDir
-from colcon_mros.installed_files import CMAKE_MODULE, installed_file
 from colcon_mros.model import ModelBuilder
 from colcon_mros.output import write_files
 from colcon_mros.parse import SpecLoader
 from colcon_mros.render import Renderer
 
+GENERATED_LOG = 'Generating mROS headers from %s/%s'
 
-def generate_file(path, package, output_dir, search_path, template_dir=None, export_dir=None):
-    """Generate the headers of one definition file; returns the paths written."""
-    definition = Definition(package, path)
+
+class _Generated:
+    """One definition file, loaded and (when stale) rendered."""
+
+    def __init__(self, definition, model, contained):
+        self.definition = definition
+        self.model = model
+        self.contained = contained  # the messages its types contain
+        self.headers = None  # {include-relative path: text}, once rendered
+        self.export_headers = None  # the same, with the contained types' and the support header
+
+    def sources(self):
+        return [self.definition.path] + [message.source for message in self.contained]
+
+    def outputs(self, output_dir, exports):
+        paths = [os.path.join(output_dir, name + '.h') for name in self.definition.type_names]
+        return paths + (exports.outputs_of(self.definition) if exports else [])
+
+
+def _load(loader, builder, definition):
+    if definition.kind == 'msg':
+        model = builder.message(loader.load_message_file(definition.path, definition.package).full_name)
+    elif definition.kind == 'srv':
+        model = builder.service(loader.load_service_file(definition.path, definition.package))
+    else:
+        raise GenmrosError('expected a .msg or .srv file', definition.path)
+    return _Generated(definition, model, builder.closure(model.dependencies))
+
+
+def _fingerprint(renderer, arguments):
+    """What the stamps hold: the genmros version, the templates and the run's
+    arguments; another fingerprint makes every file stale."""
+    digest = hashlib.sha256(('%s\n%r\n' % (__version__, arguments)).encode())
+    for name in sorted(os.listdir(renderer.template_dir)):
+        with open(os.path.join(renderer.template_dir, name), 'rb') as stream:
+            digest.update(name.encode() + b'\0' + stream.read())
+    return 'genmros %s\n' % digest.hexdigest()
+
+
+def _stamped_time(stamps, fingerprint):
+    """When the stamps were written, or None when one is missing or another
+    run's (different fingerprint)."""
+    times = []
+    for stamp in stamps:
+        try:
+            with open(stamp) as stream:
+                if stream.read() != fingerprint:
+                    return None
+            times.append(os.stat(stamp).st_mtime)
+        except OSError:
+            return None
+    return min(times) if times else None
+
+
+def _is_stale(generated, since, outputs):
+    """Whether a file needs generating: no stamps, an output missing, or a
+    definition it reads changed since the stamps."""
+    if since is None or not all(os.path.exists(path) for path in outputs):
+        return True
+    for source in generated.sources():
+        try:
+            if os.stat(source).st_mtime >= since:
+                return True
+        except OSError:
+            return True
+    return False
+
+
+def _touch(paths, moment):
+    for path in paths:
+        if os.path.exists(path):
+            os.utime(path, (moment, moment))
+
+
+def generate_files(paths, package, output_dir, search_path, template_dir=None, export_dir=None,
+                   stamps=(), cmake_module=None, log=print):
+    """Generate the headers of a package's definition files; returns the
+    paths written. log receives one line per file generated."""
+    started = time.time()
     loader = SpecLoader(search_path)
     builder = ModelBuilder(loader)
     renderer = Renderer(template_dir)
-    if definition.kind == 'msg':
-        generated = builder.message(loader.load_message_file(path, package).full_name)
-        headers = renderer.message(generated)
-    elif definition.kind == 'srv':
-        generated = builder.service(loader.load_service_file(path, package))
-        headers = renderer.service(generated)
-    else:
-        raise GenmrosError('expected a .msg or .srv file', path)
-    support = renderer.support_header()
+    loaded = [_load(loader, builder, Definition(package, path)) for path in paths]
+    fingerprint = _fingerprint(renderer, (package, sorted(paths), sorted(search_path.items()),
+                                          export_dir))
+    since = _stamped_time(stamps, fingerprint)
+    exports = ExportDir(export_dir) if export_dir else None
+    stale = [generated for generated in loaded
+             if _is_stale(generated, since, generated.outputs(output_dir, exports))]
     # Rendered in full before anything is written: a bad file changes nothing.
-    if export_dir:
-        contained = builder.closure(generated.dependencies)
-        export_headers = dict(headers)
-        export_headers.update(support)
-        for message in contained:
-            export_headers.update(renderer.message(message))
-    package_files = {os.path.basename(relative): text for relative, text in headers.items()}
+    support = renderer.support_header()
+    rendered = {}  # full name: headers, as many files contain the same types
+
+    def message_headers(message):
+        if message.full_name not in rendered:
+            rendered[message.full_name] = renderer.message(message)
+        return rendered[message.full_name]
+
+    for generated in stale:
+        if generated.definition.is_service:
+            generated.headers = renderer.service(generated.model)
+        else:
+            generated.headers = message_headers(generated.model)
+        if export_dir:
+            generated.export_headers = dict(generated.headers)
+            generated.export_headers.update(support)
+            for message in generated.contained:
+                generated.export_headers.update(message_headers(message))
+
     include_root = os.path.dirname(os.path.abspath(output_dir))
-    written = write_files(output_dir, package_files) + write_files(include_root, support)
-    if export_dir:
-        written += ExportDir(export_dir).add_generated(
-            definition, export_headers, [message.definition_file for message in contained],
-            installed_file(CMAKE_MODULE))
+    written = write_files(include_root, support) if stale else []
+    if exports and cmake_module is None:
+        from colcon_mros.installed_files import CMAKE_MODULE, installed_file
+        cmake_module = installed_file(CMAKE_MODULE)
+    for generated in stale:
+        definition = generated.definition
+        log(GENERATED_LOG % (package, definition.file_name))
+        files = {os.path.basename(relative): text for relative, text in generated.headers.items()}
+        written += write_files(output_dir, files)
+        if exports:
+            written += exports.add_generated(
+                definition, generated.export_headers,
+                [message.definition_file for message in generated.contained], cmake_module)
+        # As a per-file rule's touch: the outputs of a regenerated file are newer than its inputs.
+        _touch(generated.outputs(output_dir, exports), time.time())
+    for stamp in stamps:
+        write_files(os.path.dirname(os.path.abspath(stamp)), {os.path.basename(stamp): fingerprint})
+        _touch([stamp], started)
     return written

@@ -8,7 +8,7 @@ modules that generate cannot even be imported; this says so in one line
 instead of a traceback.
 """
 
-import importlib
+import importlib.util
 import sys
 
 from colcon_mros.errors import GenmrosError
@@ -23,10 +23,14 @@ REQUIRED_MODULES = (
 
 
 def require_ros_python():
-    """Raise a one-line GenmrosError if this interpreter cannot import genmsg or empy."""
+    """Raise a one-line GenmrosError if this interpreter cannot import genmsg,
+    empy or rospkg. Finding them is enough (importing rospkg would cost a
+    generator run, which never needs it, a tenth of its start-up)."""
     for module, what in REQUIRED_MODULES:
         try:
-            importlib.import_module(module)
-        except ImportError:
+            found = importlib.util.find_spec(module) is not None
+        except (ImportError, ValueError):
+            found = False
+        if not found:
             raise GenmrosError('%s cannot import %s; install or source %s, or run genmros with '
                                'the Python that has it' % (sys.executable, module, what))

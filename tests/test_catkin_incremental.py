@@ -1,8 +1,11 @@
 """Rebuilds with genmros in catkin: nothing runs when nothing changed, a
 touched .msg regenerates its type and the types that include it, an edited
 .msg reaches the devel space and the export dir, a removed export dir comes
-back, a deleted .msg loses its headers in both, and a type that no definition
-contains any more leaves the export dir.
+back, a deleted .msg loses its headers in both, a type that no definition
+contains any more leaves the export dir, and a broken .msg stops its package
+only, whose headers stay as they were. catkin runs one genmros process per
+package, and after an edit it generates only the files whose definitions
+changed (a package of eight messages shows it).
 
 The steps share one catkin_make workspace and run in file order.
 """
@@ -160,3 +163,78 @@ def test_type_of_a_deleted_msg_leaves_the_export_dir(workspace):
     assert os.path.join('include', 'mros_test', 'Painted.h') not in exported
     assert STILL_NEEDED <= exported
     assert 'genmros: removed %s' % os.path.join(workspace.export_dir, 'include', 'std_msgs', 'ColorRGBA.h') in log
+
+
+EIGHT_MESSAGES = {'msg/M%d.msg' % index: 'uint32 value_%d\nstring label\n' % index for index in range(8)}
+EIGHT_MESSAGES['msg/M4.msg'] = 'M3 inner\nuint32 value_4\n'  # M4 contains M3
+EIGHT_CMAKE = '''cmake_minimum_required(VERSION 3.0.2)
+project(eight)
+find_package(catkin REQUIRED COMPONENTS message_generation std_msgs)
+add_message_files(DIRECTORY msg)
+generate_messages(DEPENDENCIES std_msgs)
+catkin_package(CATKIN_DEPENDS message_runtime)
+'''
+EIGHT_PACKAGE = '''<?xml version="1.0"?>
+<package format="2">
+  <name>eight</name><version>0.0.1</version><description>Eight messages.</description>
+  <maintainer email="dev@colcon-mros.invalid">colcon-mros developers</maintainer>
+  <license>BSD</license><buildtool_depend>catkin</buildtool_depend>
+  <build_depend>message_generation</build_depend><depend>std_msgs</depend>
+  <exec_depend>message_runtime</exec_depend>
+</package>
+'''
+
+
+def test_one_run_per_package_rewrites_only_the_headers_whose_text_changes(tmp_path):
+    root = str(tmp_path)
+    package = os.path.join(root, 'src', 'eight')
+    os.makedirs(os.path.join(package, 'msg'))
+    for relative, text in dict(EIGHT_MESSAGES, **{'CMakeLists.txt': EIGHT_CMAKE,
+                                                  'package.xml': EIGHT_PACKAGE}).items():
+        with open(os.path.join(package, relative), 'w') as stream:
+            stream.write(text)
+    export_dir = os.path.join(root, 'mros_export')
+    build = ['catkin_make', '-DMROS_EXPORT_DIR=%s' % export_dir]
+    log = run(build, root).stdout
+    assert log.count('Generating mROS headers for package eight') == 1  # one genmros run
+    assert len(_generated_types(log)) == 8
+    devel = os.path.join(root, 'devel', 'share', 'genmros', 'include')
+    exported = os.path.join(export_dir, 'include')
+    before = mtimes(devel), mtimes(exported)
+    time.sleep(0.01)
+    with open(os.path.join(package, 'msg', 'M3.msg'), 'a') as stream:
+        stream.write('float64 added\n')
+    log = run(build, root).stdout
+    assert log.count('Generating mROS headers for package eight') == 1
+    assert _generated_types(log) == ['eight/M3.msg', 'eight/M4.msg']
+    for root_dir, old in zip((devel, exported), before):
+        new = mtimes(root_dir)
+        assert {path for path in old if new[path] != old[path]} == {
+            os.path.join('eight', 'M3.h'), os.path.join('eight', 'M4.h')}
+        with open(os.path.join(root_dir, 'eight', 'M3.h')) as stream:
+            assert 'double added;' in stream.read()
+    assert _generated_types(run(build, root).stdout) == []
+
+
+def test_a_broken_msg_stops_its_package_only_and_leaves_its_headers(workspace):
+    before = headers_under(workspace.devel)
+    for relative, added in ((('mros_test', 'msg', 'BuiltinTypes.msg'), 'uint8 added_field\n'),
+                            (('mros_test_base', 'msg', 'Vector3i.msg'), 'int32 w\n'),
+                            (('mros_test', 'msg', 'Empty.msg'), 'float32 TOO_BIG=1e39\n')):
+        with open(workspace.source(*relative), 'a') as stream:
+            stream.write(added)
+    path = workspace.source('mros_test', 'msg', 'Empty.msg')
+    with open(path) as stream:
+        line = len(stream.read().splitlines())
+    result = run(['catkin_make', '-k', '-DMROS_EXPORT_DIR=%s' % workspace.export_dir], workspace.root,
+                 check=False)
+    assert result.returncode != 0
+    errors = [text for text in result.stdout.splitlines() if text.startswith('genmros: error:')]
+    assert errors == ['genmros: error: %s:%d: float32 constant 1e39 is beyond the range of float32 '
+                      '(largest finite value 3.4028234663852886e+38)' % (path, line)]
+    after = headers_under(workspace.devel)
+    # The other package was generated; the broken one kept every header as it was.
+    assert b'int32_t w;' in after[os.path.join('mros_test_base', 'Vector3i.h')]
+    for header, text in before.items():
+        if header.startswith('mros_test' + os.sep):
+            assert after[header] == text, header

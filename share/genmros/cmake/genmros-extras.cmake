@@ -4,9 +4,11 @@
 # (the language name is "mros": genmsg strips the "gen" of "genmros"):
 #   _generate_msg_mros / _generate_srv_mros  once per .msg/.srv: noted here
 #   _generate_module_mros                    once per package, after them
-# The last asks genmros once what each file's headers are (genmros
+# The last asks genmros what the package's headers are (genmros
 # catkin-package, which also tidies up after removed files) and adds one
-# custom command per file. The headers go to
+# custom command for the whole package: one genmros process generates every
+# header the package has, and after a change only those of the files whose
+# definitions changed. The headers go to
 # ${CATKIN_DEVEL_PREFIX}/${genmros_INSTALL_DIR}/<pkg>/<Type>.h and, when
 # MROS_EXPORT_DIR is set, also into that export dir for a firmware
 # (genmros owns its layout: see colcon_mros/export_dir.py).
@@ -42,6 +44,10 @@ if(MROS_EXPORT_DIR)
   get_filename_component(MROS_EXPORT_DIR "${MROS_EXPORT_DIR}" ABSOLUTE)
 endif()
 
+# mros_generate.cmake, the firmware-side module an export dir's
+# mros_export.cmake includes, is installed beside this file.
+set(_GENMROS_CMAKE_DIR "${CMAKE_CURRENT_LIST_DIR}")
+
 macro(_generate_msg_mros ARG_PKG ARG_MSG ARG_IFLAGS ARG_MSG_DEPS ARG_GEN_OUTPUT_DIR)
   _genmros_note_file("${ARG_MSG}" "${ARG_IFLAGS}" "${ARG_MSG_DEPS}")
 endmacro()
@@ -54,15 +60,15 @@ endmacro()
 # live in the package's scope.
 macro(_genmros_note_file ARG_FILE ARG_IFLAGS ARG_FILE_DEPS)
   list(APPEND _genmros_files "${ARG_FILE}")
-  list(LENGTH _genmros_files _genmros_count)
-  set(_genmros_depends_${_genmros_count} "${ARG_FILE_DEPS}")
+  list(APPEND _genmros_depends ${ARG_FILE_DEPS})
   set(_genmros_iflags "${ARG_IFLAGS}")
 endmacro()
 
 macro(_generate_module_mros ARG_PKG ARG_GEN_OUTPUT_DIR ARG_GENERATED_FILES)
   set(_genmros_export_args "")
   if(MROS_EXPORT_DIR)
-    set(_genmros_export_args --export-dir "${MROS_EXPORT_DIR}")
+    set(_genmros_export_args --export-dir "${MROS_EXPORT_DIR}"
+      --cmake-module "${_GENMROS_CMAKE_DIR}/mros_generate.cmake")
   endif()
   set(_genmros_outputs_file "${CMAKE_CURRENT_BINARY_DIR}/genmros/${ARG_PKG}-outputs.cmake")
   execute_process(
@@ -76,25 +82,28 @@ macro(_generate_module_mros ARG_PKG ARG_GEN_OUTPUT_DIR ARG_GENERATED_FILES)
   endif()
   include("${_genmros_outputs_file}")
 
-  set(_genmros_index 0)
-  foreach(_genmros_file ${_genmros_files})
-    math(EXPR _genmros_index "${_genmros_index} + 1")
-    get_filename_component(_genmros_file_name "${_genmros_file}" NAME)
-    # genmros leaves a header with unchanged content untouched; the touch
-    # tells make that this rule has run, so a build with nothing changed runs
-    # no generator at all. genmros writes the export dir atomically and under
-    # its lock, so packages built in parallel can share it.
-    add_custom_command(OUTPUT ${_genmros_outputs_${_genmros_index}}
-      COMMAND "${GENMROS_BIN}" "${_genmros_file}" ${_genmros_iflags} -p "${ARG_PKG}"
-        -o "${ARG_GEN_OUTPUT_DIR}" ${_genmros_export_args}
-      COMMAND "${CMAKE_COMMAND}" -E touch_nocreate ${_genmros_outputs_${_genmros_index}}
-      DEPENDS "${GENMROS_BIN}" "${_genmros_file}" ${_genmros_depends_${_genmros_index}}
-      COMMENT "Generating mROS headers from ${ARG_PKG}/${_genmros_file_name}"
-      VERBATIM)
-    list(APPEND ALL_GEN_OUTPUT_FILES_mros ${_genmros_outputs_${_genmros_index}})
-  endforeach()
   if(_genmros_files)
+    if(_genmros_depends)
+      list(REMOVE_DUPLICATES _genmros_depends)
+    endif()
+    # make and ninja know the run by its stamps; the headers are byproducts,
+    # which genmros rewrites only where their text changes. genmros writes
+    # the export dir atomically and under its lock, so packages built in
+    # parallel can share it.
+    set(_genmros_stamp_args "")
+    foreach(_genmros_stamp ${_genmros_stamps})
+      list(APPEND _genmros_stamp_args --stamp "${_genmros_stamp}")
+    endforeach()
+    add_custom_command(OUTPUT ${_genmros_stamps}
+      BYPRODUCTS ${_genmros_outputs}
+      COMMAND "${GENMROS_BIN}" ${_genmros_files} ${_genmros_iflags} -p "${ARG_PKG}"
+        -o "${ARG_GEN_OUTPUT_DIR}" ${_genmros_export_args} ${_genmros_stamp_args}
+      DEPENDS "${GENMROS_BIN}" ${_genmros_files} ${_genmros_depends}
+      COMMENT "Generating mROS headers for package ${ARG_PKG}"
+      VERBATIM)
+    list(APPEND ALL_GEN_OUTPUT_FILES_mros ${_genmros_stamps})
     install(FILES ${_genmros_support_header} DESTINATION "${genmros_INSTALL_DIR}")
   endif()
   unset(_genmros_files)
+  unset(_genmros_depends)
 endmacro()
