@@ -38,7 +38,7 @@ TOOLS = ('catkin_make', 'catkin_build', 'colcon')
 WRAPPER = '''#!/bin/bash
 {genmros} "$@"
 status=$?
-{{ echo "run $1"; times | tail -1; }} >> "$GENMROS_BENCH_LOG"
+{{ echo "run $1"; times; }} >> "$GENMROS_BENCH_LOG"
 exit $status
 '''
 SYNTHETIC_PACKAGES = 24
@@ -139,7 +139,7 @@ def genmros_runs(log):
         for line in lines:
             if line.startswith('run '):
                 runs += 1
-            else:  # times: children's user and system time, e.g. "0m0.081s 0m0.012s"
+            else:  # times: the shell's, then genmros' user and system time: "0m0.081s 0m0.012s"
                 for field in line.split():
                     minutes, seconds = field.rstrip('s').split('m')
                     cpu += int(minutes) * 60 + float(seconds)
