@@ -19,9 +19,10 @@ from colcon_mros.errors import GenmrosError
 DESCRIPTION = '''\
 Generate mROS message headers from ROS 1 .msg and .srv files.
 
-Generator mode, with gencpp's arguments (catkin runs it for every package):
-  genmros FILE.msg|FILE.srv ... -p PKG -o OUTDIR [-I PKG:DIR ...] [-e TEMPLATE_DIR]
-          [--export-dir DIR]
+Generator mode, with gencpp's arguments and one or more files of a package
+(catkin runs it once per package, with all its files):
+  genmros FILE.msg|FILE.srv -p PKG -o OUTDIR [-I PKG:DIR ...] [-e TEMPLATE_DIR]
+          [--export-dir DIR] [--stamp FILE ...]
 
 Export mode, what one firmware needs:
   genmros export [--workspace WS ...] [--package PKG ...] [--type PKG/TYPE ...] -o DIR ...

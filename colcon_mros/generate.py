@@ -144,20 +144,23 @@ def generate_files(paths, package, output_dir, search_path, template_dir=None, e
                 generated.export_headers.update(message_headers(message))
 
     include_root = os.path.dirname(os.path.abspath(output_dir))
-    written = write_files(include_root, support) if stale else []
-    if exports and cmake_module is None:
-        from colcon_mros.installed_files import CMAKE_MODULE, installed_file
-        cmake_module = installed_file(CMAKE_MODULE)
+    written = []
     for generated in stale:
-        definition = generated.definition
-        log(GENERATED_LOG % (package, definition.file_name))
-        files = {os.path.basename(relative): text for relative, text in generated.headers.items()}
-        written += write_files(output_dir, files)
-        if exports:
+        log(GENERATED_LOG % (package, generated.definition.file_name))
+        written += write_files(output_dir, {os.path.basename(relative): text
+                                            for relative, text in generated.headers.items()})
+    if stale:
+        written += write_files(include_root, support)
+    if exports:
+        if cmake_module is None:
+            from colcon_mros.installed_files import CMAKE_MODULE, installed_file
+            cmake_module = installed_file(CMAKE_MODULE)
+        for generated in stale:
             written += exports.add_generated(
-                definition, generated.export_headers,
+                generated.definition, generated.export_headers,
                 [message.definition_file for message in generated.contained], cmake_module)
-        # As a per-file rule's touch: the outputs of a regenerated file are newer than its inputs.
+    # As a per-file rule's touch: the outputs of a regenerated file are newer than its inputs.
+    for generated in stale:
         _touch(generated.outputs(output_dir, exports), time.time())
     for stamp in stamps:
         write_files(os.path.dirname(os.path.abspath(stamp)), {os.path.basename(stamp): fingerprint})
