@@ -113,17 +113,14 @@ class ExportDir:
                 messages.add(definition.full_name)
         return sorted(messages) + sorted(services)
 
-    def holds_export(self):
-        return os.path.isfile(self.cmake_file)
-
     def stamp_of(self, package):
         """The file whose time says when catkin last generated package here:
         when the dir is removed, the package is generated again."""
         return os.path.join(self._state_dir, _STAMPS_DIR, package)
 
     def outputs_of(self, definition):
-        """The paths a catkin generator run for definition writes here (its
-        own headers and its copy; the types it contains vary with the build)."""
+        """The paths generating definition for catkin writes here (its own
+        headers and its copy; the types it contains vary with the build)."""
         headers = [os.path.join(self.include_dir, definition.package, name + '.h')
                    for name in definition.type_names]
         return headers + [os.path.join(self.share_dir, definition.key)]
@@ -137,10 +134,11 @@ class ExportDir:
             self._write_tables(cmake_module)
 
     def add_generated(self, definition, headers, contained, cmake_module):
-        """What one catkin generator run puts here: the headers it rendered
-        ({include-relative path: text}) and the definitions of the file and of
-        every type contained (Definitions); the run's former claim is replaced,
-        and what no definition claims any more leaves."""
+        """What generating one definition file for catkin puts here: the
+        headers rendered ({include-relative path: text}) and the definitions
+        of the file and of every type contained (Definitions); the file's
+        former claim is replaced, and what no definition claims any more
+        leaves."""
         files = {os.path.join(INCLUDE_DIR, relative): text for relative, text in headers.items()}
         for source in [definition] + list(contained):
             files.update(self._definition_files(source))
