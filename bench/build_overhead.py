@@ -8,7 +8,8 @@ Two workspaces: test_ws as it is in the repository, and a synthetic one of
 each other's types in a tree, so a build can run several at once).
 
 For each build tool (catkin_make -j2; catkin build -j2 -p2; colcon build
---parallel-workers 2, with --mros-export when enabled) and workspace,
+--executor parallel --parallel-workers 2, with --mros-export when enabled)
+and workspace,
 --runs rounds of: a clean build (build, devel, install and log spaces
 removed) and a no-change rebuild, once enabled and once disabled, in
 alternating order. The table shows medians of wall time and of CPU time
@@ -127,7 +128,7 @@ def build_command(tool, workspace, wrapper, enabled):
     if tool == 'catkin_build':
         return ['catkin', 'build', '-j2', '-p2', '--no-status', '--no-notify', '--cmake-args'] + cmake_args
     export = ['--mros-export', os.path.join(workspace, 'mros_export')] if enabled else []
-    return ['colcon', 'build', '--parallel-workers', '2'] + export + ['--cmake-args'] + cmake_args
+    return ['colcon', 'build', '--executor', 'parallel', '--parallel-workers', '2'] + export + ['--cmake-args'] + cmake_args
 
 
 def genmros_runs(log):

@@ -13,7 +13,7 @@ import sys
 
 from colcon_mros import __version__
 from colcon_mros.defaults import (DEFAULT_VARIABLE_SIZE_BUDGET, DEFINITION_TEXTS, EXPORT_PARTS,
-                                  STORAGE_KINDS)
+                                  PC_TARGETS, STORAGE_KINDS)
 from colcon_mros.errors import GenmrosError
 
 DESCRIPTION = '''\
@@ -143,6 +143,39 @@ def _add_export_dir_commands(subparsers):
     parser.set_defaults(run=_catkin_package)
 
 
+def _add_mros_v1_pc(subparsers):
+    parser = subparsers.add_parser(
+        'mros-v1-pc', help='build an unmodified mROS v1 app and library for this PC',
+        description='Build an mROS v1 app (mros_ws/<app>) with the mROS v1 library of its '
+                    'checkout, unchanged, and genmros\' headers, to run on this PC against a ROS '
+                    'master: the PC target stands in for TOPPERS/ASP (with its scheduling), lwIP '
+                    'and mbed. The message types come from the app\'s app.json (the old '
+                    'generator\'s file) unless --type is given. The node finds the master in '
+                    'ROS_MASTER_URI and its address in ROS_IP/ROS_HOSTNAME.')
+    parser.add_argument('app_dir', metavar='APP_DIR', help="the app's directory (with app.cfg)")
+    parser.add_argument('--mros-root', metavar='DIR',
+                        help='the mROS v1 checkout (default: the one APP_DIR is in, ../..)')
+    parser.add_argument('--target', choices=PC_TARGETS, default='arm',
+                        help='arm: 32-bit ARM Linux, the board\'s instruction set, a static '
+                             'program run with qemu-arm (default); native: this PC')
+    parser.add_argument('-o', dest='build_dir', metavar='DIR',
+                        help='build directory (default: APP_DIR/build-pc-TARGET)')
+    parser.add_argument('--type', dest='types', action='append', default=[],
+                        metavar='PKG/TYPE', help='a message type the app uses (repeatable; '
+                                                 'default: those of app.json)')
+    parser.add_argument('--msg-path', dest='msg_paths', action='append', default=[],
+                        metavar='DIR', help='where packages are: source trees or installed '
+                                            "prefixes (default: app.json's catkin_ws_dir and "
+                                            'the ROS environment)')
+    parser.add_argument('--definition-text', choices=DEFINITION_TEXTS, default='full',
+                        help='the definition text of the headers (see genmros export --help)')
+    parser.add_argument('-j', dest='jobs', type=int, default=os.cpu_count() or 1,
+                        help='parallel make jobs (default: the number of CPUs)')
+    parser.add_argument('--run', dest='run_program', action='store_true',
+                        help='run the program once it is built (under qemu-arm for arm)')
+    parser.set_defaults(run=_mros_v1_pc)
+
+
 def _parser():
     parser = argparse.ArgumentParser(prog='genmros', description=DESCRIPTION,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -152,6 +185,7 @@ def _parser():
     _add_export(subparsers)
     _add_printers(subparsers)
     _add_export_dir_commands(subparsers)
+    _add_mros_v1_pc(subparsers)
     return parser, set(subparsers.choices)
 
 
@@ -205,6 +239,16 @@ def _prune_export(options):
         raise GenmrosError('export dir is not a directory', options.export_dir)
     for relative in ExportDir(options.export_dir).prune(installed_file(CMAKE_MODULE)):
         print('genmros: removed %s' % os.path.join(options.export_dir, relative))
+
+
+def _mros_v1_pc(options):
+    from colcon_mros import mros_v1_pc
+    program = mros_v1_pc.build(options)
+    print('genmros: built %s (run it: %s)'
+          % (program, ' '.join(mros_v1_pc.runner(options.target) + [program])))
+    if options.run_program:
+        sys.stdout.flush()
+        mros_v1_pc.run_program(program, options.target)
 
 
 def _catkin_package(options):

@@ -17,3 +17,5 @@ STORAGE_KINDS = ('heap', 'bounded')
 # Which definition text the headers carry (colcon_mros.identity): gencpp's,
 # or the same declarations without comments, for a firmware's flash.
 DEFINITION_TEXTS = ('full', 'compact')
+# genmros mros-v1-pc: 32-bit ARM Linux (the board's instruction set) or this PC.
+PC_TARGETS = ('arm', 'native')

@@ -32,13 +32,14 @@ def sourced_environment(setup_bash):
 class Process:
     """A started process whose merged stdout/stderr is collected as lines."""
 
-    def __init__(self, name, argv, env):
+    def __init__(self, name, argv, env, interactive=False):
         self.name = name
         self.argv = argv
         self._lines = []
         self._changed = threading.Condition()
         self.popen = subprocess.Popen(argv, env=env, stdout=subprocess.PIPE,
-                                      stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
+                                      stderr=subprocess.STDOUT,
+                                      stdin=subprocess.PIPE if interactive else subprocess.DEVNULL,
                                       start_new_session=True)
         self._reader = threading.Thread(target=self._read, daemon=True)
         self._reader.start()
@@ -50,6 +51,11 @@ class Process:
                 self._changed.notify_all()
         with self._changed:
             self._changed.notify_all()
+
+    def type(self, text):
+        """Writes text to the standard input of an interactive process."""
+        self.popen.stdin.write(text.encode())
+        self.popen.stdin.flush()
 
     def lines(self):
         with self._changed:
@@ -130,8 +136,10 @@ class RosGraph:
     def __exit__(self, *exc_info):
         self.stop_all()
 
-    def start(self, name, argv):
-        process = Process(name, argv, self.env)
+    def start(self, name, argv, extra_env=None, interactive=False):
+        """Starts argv as node `name`, with extra_env added to the graph's
+        environment (and a standard input to type into if interactive)."""
+        process = Process(name, argv, dict(self.env, **(extra_env or {})), interactive)
         self.processes.append(process)
         return process
 

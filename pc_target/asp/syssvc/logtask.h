@@ -1,0 +1,6 @@
+/* TOPPERS/ASP's syssvc/logtask.h on a PC: nothing to declare (the log goes
+ * to stderr through syslog() in t_syslog.h; there is no serial port). */
+#ifndef MROS_PC_TARGET_SYSSVC_LOGTASK_H
+#define MROS_PC_TARGET_SYSSVC_LOGTASK_H
+#include "t_syslog.h"
+#endif

@@ -1,0 +1,6 @@
+/* TOPPERS/ASP's syssvc/syslog.h on a PC: nothing to declare (the log goes
+ * to stderr through syslog() in t_syslog.h; there is no serial port). */
+#ifndef MROS_PC_TARGET_SYSSVC_SYSLOG_H
+#define MROS_PC_TARGET_SYSSVC_SYSLOG_H
+#include "t_syslog.h"
+#endif

@@ -1,0 +1,255 @@
+/*
+ * lwIP on a PC: its socket calls on the host's sockets, its network
+ * interface and DHCP client standing for the PC's own address. Every socket
+ * call is a host call (pc_target.h): the task gives up the CPU and takes it
+ * back in priority order, as it waits for lwIP's tcpip thread on the board.
+ */
+#define _GNU_SOURCE
+#include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/ioctl.h>
+#include <unistd.h>
+
+#include "lwip/dhcp.h"
+#include "lwip/inet.h"
+#include "lwip/init.h"
+#include "lwip/netdb.h"
+#include "lwip/netif.h"
+#include "lwip/sockets.h"
+#include "lwip/tcpip.h"
+#include "eth_arch.h"
+#include "pc_target.h"
+
+/* A host call that keeps the host's errno for the caller. */
+#define HOST_CALL(type, call)        \
+  do {                               \
+    type result_;                    \
+    int errno_;                      \
+    pc_host_call_begin();            \
+    result_ = (call);                \
+    errno_ = errno;                  \
+    pc_host_call_end();              \
+    errno = errno_;                  \
+    return result_;                  \
+  } while (0)
+
+int lwip_accept(int s, struct sockaddr *addr, socklen_t *addrlen) {
+  HOST_CALL(int, accept(s, addr, addrlen));
+}
+
+/* The slave and publisher ports are fixed; a PC restarts the node far more
+ * often than a board, and a port in TIME_WAIT must not stop it. */
+int lwip_bind(int s, const struct sockaddr *name, socklen_t namelen) {
+  int reuse = 1;
+  setsockopt(s, SOL_SOCKET, SO_REUSEADDR, &reuse, sizeof reuse);
+  HOST_CALL(int, bind(s, name, namelen));
+}
+
+int lwip_shutdown(int s, int how) { HOST_CALL(int, shutdown(s, how)); }
+
+int lwip_getpeername(int s, struct sockaddr *name, socklen_t *namelen) {
+  HOST_CALL(int, getpeername(s, name, namelen));
+}
+
+int lwip_getsockname(int s, struct sockaddr *name, socklen_t *namelen) {
+  HOST_CALL(int, getsockname(s, name, namelen));
+}
+
+int lwip_getsockopt(int s, int level, int optname, void *optval, socklen_t *optlen) {
+  HOST_CALL(int, getsockopt(s, level, optname, optval, optlen));
+}
+
+int lwip_setsockopt(int s, int level, int optname, const void *optval, socklen_t optlen) {
+  HOST_CALL(int, setsockopt(s, level, optname, optval, optlen));
+}
+
+int lwip_close(int s) { HOST_CALL(int, close(s)); }
+
+int lwip_connect(int s, const struct sockaddr *name, socklen_t namelen) {
+  HOST_CALL(int, connect(s, name, namelen));
+}
+
+int lwip_listen(int s, int backlog) { HOST_CALL(int, listen(s, backlog)); }
+
+int lwip_recv(int s, void *mem, size_t len, int flags) {
+  HOST_CALL(int, (int)recv(s, mem, len, flags));
+}
+
+int lwip_read(int s, void *mem, size_t len) { HOST_CALL(int, (int)read(s, mem, len)); }
+
+int lwip_recvfrom(int s, void *mem, size_t len, int flags, struct sockaddr *from,
+                  socklen_t *fromlen) {
+  HOST_CALL(int, (int)recvfrom(s, mem, len, flags, from, fromlen));
+}
+
+/* A peer that has gone away gives an error, not SIGPIPE. */
+int lwip_send(int s, const void *dataptr, size_t size, int flags) {
+  HOST_CALL(int, (int)send(s, dataptr, size, flags | MSG_NOSIGNAL));
+}
+
+int lwip_sendto(int s, const void *dataptr, size_t size, int flags, const struct sockaddr *to,
+                socklen_t tolen) {
+  HOST_CALL(int, (int)sendto(s, dataptr, size, flags | MSG_NOSIGNAL, to, tolen));
+}
+
+int lwip_socket(int domain, int type, int protocol) {
+  HOST_CALL(int, socket(domain, type, protocol));
+}
+
+int lwip_write(int s, const void *dataptr, size_t size) {
+  HOST_CALL(int, (int)send(s, dataptr, size, MSG_NOSIGNAL));
+}
+
+int lwip_select(int maxfdp1, fd_set *readset, fd_set *writeset, fd_set *exceptset,
+                struct timeval *timeout) {
+  HOST_CALL(int, select(maxfdp1, readset, writeset, exceptset, timeout));
+}
+
+int lwip_ioctl(int s, long cmd, void *argp) { HOST_CALL(int, ioctl(s, (unsigned long)cmd, argp)); }
+
+int lwip_fcntl(int s, int cmd, int val) { HOST_CALL(int, fcntl(s, cmd, val)); }
+
+void lwip_init(void) {}
+
+/* ---- names and addresses ---- */
+
+char *ipaddr_ntoa(const ip_addr_t *addr) {
+  static char text[16];
+  const unsigned char *bytes = (const unsigned char *)&addr->addr;
+  snprintf(text, sizeof text, "%u.%u.%u.%u", bytes[0], bytes[1], bytes[2], bytes[3]);
+  return text;
+}
+
+int ipaddr_aton(const char *text, ip_addr_t *addr) {
+  struct in_addr host;
+  if (inet_pton(AF_INET, text, &host) != 1) return 0;
+  if (addr != NULL) addr->addr = host.s_addr;
+  return 1;
+}
+
+/* The IPv4 address of name from /etc/hosts, as the board has no DNS either. */
+static int address_from_hosts(const char *name, ip_addr_t *address) {
+  char line[512];
+  int found = 0;
+  FILE *hosts = fopen("/etc/hosts", "r");
+  if (hosts == NULL) return 0;
+  while (!found && fgets(line, sizeof line, hosts) != NULL) {
+    char *rest = NULL;
+    char *field = strtok_r(line, " \t\r\n", &rest);
+    ip_addr_t candidate;
+    if (field == NULL || field[0] == '#' || !ipaddr_aton(field, &candidate)) continue;
+    while (!found && (field = strtok_r(NULL, " \t\r\n", &rest)) != NULL && field[0] != '#') {
+      if (strcasecmp(field, name) == 0) {
+        *address = candidate;
+        found = 1;
+      }
+    }
+  }
+  fclose(hosts);
+  return found;
+}
+
+static int address_of(const char *name, ip_addr_t *address) {
+  if (ipaddr_aton(name, address)) return 1;
+  if (strcasecmp(name, "localhost") == 0) return ipaddr_aton("127.0.0.1", address);
+  return address_from_hosts(name, address);
+}
+
+struct hostent *lwip_gethostbyname(const char *name) {
+  static ip_addr_t address;
+  static char *addresses[2];
+  static struct hostent entry;
+  if (!address_of(name, &address)) return NULL;
+  addresses[0] = (char *)&address.addr;
+  addresses[1] = NULL;
+  entry.h_name = (char *)name;
+  entry.h_aliases = NULL;
+  entry.h_addrtype = AF_INET;
+  entry.h_length = 4;
+  entry.h_addr_list = addresses;
+  return &entry;
+}
+
+static void unusable(const char *variable, const char *value) {
+  fprintf(stderr, "mROS PC target: %s=%s: not an IPv4 address or a name in /etc/hosts\n",
+          variable, value);
+  exit(2);
+}
+
+const char *pc_node_address(void) {
+  static char text[16];
+  const char *ros_ip = getenv("ROS_IP");
+  const char *ros_hostname = getenv("ROS_HOSTNAME");
+  ip_addr_t address;
+  if (text[0] != '\0') return text;
+  if (ros_ip != NULL && ros_ip[0] != '\0') {
+    if (!ipaddr_aton(ros_ip, &address)) unusable("ROS_IP", ros_ip);
+  } else if (ros_hostname != NULL && ros_hostname[0] != '\0') {
+    if (!address_of(ros_hostname, &address)) unusable("ROS_HOSTNAME", ros_hostname);
+  } else {
+    ipaddr_aton("127.0.0.1", &address);
+  }
+  snprintf(text, sizeof text, "%s", ipaddr_ntoa(&address));
+  return text;
+}
+
+/* ---- the network interface ---- */
+
+static void bring_up(struct netif *netif) {
+  netif->flags |= NETIF_FLAG_UP | NETIF_FLAG_LINK_UP;
+  if (netif->link_callback != NULL) netif->link_callback(netif);
+  if (netif->status_callback != NULL) netif->status_callback(netif);
+}
+
+struct netif *netif_add(struct netif *netif, ip_addr_t *ipaddr, ip_addr_t *netmask,
+                        ip_addr_t *gw, void *state, netif_init_fn init, netif_input_fn input) {
+  (void)ipaddr;
+  (void)input;
+  /* The address the app configured is the board's; on the PC it is the PC's. */
+  ipaddr_aton(pc_node_address(), &netif->ip_addr);
+  netif->netmask.addr = netmask != NULL ? netmask->addr : htonl(0xff000000u);
+  netif->gw.addr = gw != NULL ? gw->addr : 0;
+  netif->state = state;
+  if (init != NULL) init(netif);
+  return netif;
+}
+
+void netif_set_default(struct netif *netif) { (void)netif; }
+
+void netif_set_up(struct netif *netif) { bring_up(netif); }
+
+void netif_set_status_callback(struct netif *netif, netif_status_callback_fn callback) {
+  netif->status_callback = callback;
+}
+
+void netif_set_link_callback(struct netif *netif, netif_status_callback_fn callback) {
+  netif->link_callback = callback;
+}
+
+err_t dhcp_start(struct netif *netif) {
+  bring_up(netif);
+  return ERR_OK;
+}
+
+void tcpip_init(tcpip_init_done_fn initfunc, void *arg) {
+  if (initfunc != NULL) initfunc(arg);
+}
+
+err_t tcpip_input(struct pbuf *p, struct netif *inp) {
+  (void)p;
+  (void)inp;
+  return ERR_OK;
+}
+
+err_t eth_arch_enetif_init(struct netif *netif) {
+  (void)netif;
+  return ERR_OK;
+}
+
+void eth_arch_enable_interrupts(void) {}
+
+void eth_arch_disable_interrupts(void) {}

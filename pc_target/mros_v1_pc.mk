@@ -1,0 +1,77 @@
+# mros_v1_pc.mk: an unmodified mROS v1 app and library, built for a PC.
+#
+# `genmros mros-v1-pc APP_DIR` runs this with the variables below, read
+# from the app's Makefile, app.json and app.cfg; it has also written the
+# kernel configuration (kernel_cfg.h/.c) from app.cfg into $(BUILD)/cfg.
+#
+#   MROS_ROOT     the mROS v1 checkout (mros-lib/ and mros_ws/)
+#   APP_NAME      the program's name
+#   APP_DIRS      the app's source directories (its Makefile's APPLDIR)
+#   APP_OBJS      its objects (APPLNAME.o, APPL_COBJS, APPL_CXXOBJS)
+#   APP_CXXFLAGS  its extra C++ flags (APPL_CXXFLAGS)
+#   TARGET        arm: 32-bit ARM Linux (the board's ISA, static, run with
+#                 qemu-arm); native: this PC
+#   BUILD         the output directory
+#   MROS_MSG_TYPES, MROS_MSG_PATHS, GENMROS, GENMROS_MK: the message headers,
+#                 written into $(BUILD)/include by genmros' make fragment
+#
+# The library's own Makefile.m lists its sources and include directories.
+# The app's include/ (the old generator's headers) is not used.
+
+PC_TARGET := $(patsubst %/,%,$(dir $(lastword $(MAKEFILE_LIST))))
+
+all: $(BUILD)/$(APP_NAME)
+
+MROS_DIR := $(MROS_ROOT)/mros-lib
+include $(MROS_DIR)/Makefile.m
+
+MROS_MSG_INCLUDE_DIR := $(BUILD)/include
+include $(GENMROS_MK)
+
+ifeq ($(TARGET),arm)
+CROSS := arm-linux-gnueabihf-
+CPU_FLAGS := -mcpu=cortex-a9 -marm -mfpu=vfpv3 -mfloat-abi=hard -mno-unaligned-access
+LINK_FLAGS := -static
+else ifeq ($(TARGET),native)
+CROSS :=
+CPU_FLAGS :=
+LINK_FLAGS :=
+else
+$(error mros_v1_pc.mk: TARGET is '$(TARGET)', not arm or native)
+endif
+CC := $(CROSS)gcc
+CXX := $(CROSS)g++
+
+OBJ_DIR := $(BUILD)/obj
+PC_SOURCE_DIRS := $(PC_TARGET)/asp $(PC_TARGET)/lwip $(PC_TARGET)/mbed $(PC_TARGET)/config
+# The app's sources first: its mros_config/ replaces the library's config/.
+VPATH := $(APP_DIRS) $(BUILD)/cfg $(VPATH) $(PC_SOURCE_DIRS)
+
+# genmros' headers first, then the PC's mros_sys_config.h before the app's
+# (it includes the app's and replaces the board's addresses and ports).
+INCLUDES := -I$(BUILD)/include -I$(PC_TARGET)/config $(addprefix -I,$(APP_DIRS)) \
+            $(MROS_INCLUDE_PATHS) -I$(BUILD)/cfg -I$(PC_TARGET)/asp -I$(PC_TARGET)/lwip \
+            -I$(PC_TARGET)/mbed
+COMMON_FLAGS := $(CPU_FLAGS) -O2 -g -pthread -MMD -MP $(CDEFS) $(INCLUDES)
+CFLAGS := $(COMMON_FLAGS)
+# mROS v1's flags for C++ (Makefile.mbd), and the app's own.
+CXXFLAGS := $(COMMON_FLAGS) -std=gnu++98 -fno-rtti -fno-exceptions -fno-builtin $(APP_CXXFLAGS)
+
+PC_OBJS := kernel.o kernel_cfg.o lwip.o ros_environment.o mbed.o
+OBJS := $(addprefix $(OBJ_DIR)/,$(APP_OBJS) $(MROS_CXX_OBJ) $(MROS_C_OBJ) $(PC_OBJS))
+
+$(BUILD)/$(APP_NAME): $(OBJS)
+	$(CXX) $(CPU_FLAGS) -pthread $(LINK_FLAGS) -o $@ $(OBJS)
+
+$(OBJ_DIR)/%.o: %.c | $(OBJ_DIR)
+	$(CC) $(CFLAGS) -c $< -o $@
+
+$(OBJ_DIR)/%.o: %.cpp | $(OBJ_DIR)
+	$(CXX) $(CXXFLAGS) -c $< -o $@
+
+$(OBJ_DIR):
+	mkdir -p $@
+
+-include $(wildcard $(OBJ_DIR)/*.d)
+
+.PHONY: all

@@ -1,0 +1,81 @@
+"""colcon_mros.asp_cfg: the PC target's TOPPERS/ASP configurator, on
+app.cfg files of its own and on the real mROS v1 kernel configuration when a
+checkout is there (MROS_V1_ROOT, default ../shared/mros_v1)."""
+
+import os
+
+import pytest
+
+from conftest import REPO
+from colcon_mros.asp_cfg import read_config, write_kernel_config
+from colcon_mros.errors import GenmrosError
+
+PC_CFG = os.path.join(REPO, 'pc_target', 'cfg', 'asp')
+MROS_V1_ROOT = os.environ.get('MROS_V1_ROOT') or os.path.join(os.path.dirname(REPO), 'shared',
+                                                              'mros_v1')
+
+
+def _write(directory, name, text):
+    path = os.path.join(str(directory), name)
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, 'w') as stream:
+        stream.write(text)
+    return path
+
+
+def test_objects_are_numbered_in_order_of_creation_across_includes(tmp_path):
+    _write(tmp_path, 'lib/base.cfg', 'CRE_TSK(FIRST, { TA_ACT, 0, first, 5, 1024, NULL });\n'
+                                     'CRE_SEM(READY, { TA_NULL, 0, 1 });\n')
+    cfg = _write(tmp_path, 'app/app.cfg', '/* an app */\nINCLUDE("../lib/base.cfg");\n'
+                                          '#include "app.h"\n'
+                                          '// two more\nCRE_TSK(SECOND, { TA_NULL, 7, second,\n'
+                                          '  PRI(1, 2), 2 * 1024, NULL });\n'
+                                          'CRE_CYC(TICK, { TA_STA, 0, tick, 100, 0 });\n'
+                                          'DEF_KMM({ 1024, NULL });\n')
+    _write(tmp_path, 'app/app.h', '')
+    config = read_config(cfg, [])
+    assert [(o.api, o.name) for o in config.objects] == [
+        ('CRE_TSK', 'FIRST'), ('CRE_SEM', 'READY'), ('CRE_TSK', 'SECOND'), ('CRE_CYC', 'TICK')]
+    assert config.objects[2].fields['priority'] == 'PRI(1, 2)'
+    assert config.objects[2].fields['stack_size'] == '2 * 1024'
+    assert config.objects[2].line == 5
+    write_kernel_config(config, str(tmp_path / 'out'))
+    header = (tmp_path / 'out' / 'kernel_cfg.h').read_text()
+    assert '#define FIRST 1\n#define SECOND 2\n' in header
+    assert '#define TNUM_SEMID 1\n#define READY 1\n' in header
+    source = (tmp_path / 'out' / 'kernel_cfg.c').read_text()
+    assert '#include "%s"' % os.path.join(str(tmp_path), 'app', 'app.h') in source
+    assert '{"SECOND", TA_NULL, (intptr_t)(7), (TASK)(second), PRI(1, 2), 2 * 1024},' in source
+
+
+@pytest.mark.parametrize('text, line, problem', [
+    ('CRE_DTQ(QUEUE, { TA_NULL, 4, NULL });', 2, 'CRE_DTQ is not supported by the PC target'),
+    ('CRE_TSK(T, { TA_NULL, 0, t, 5 });', 2, 'CRE_TSK: 4 fields in { ... }, expected 6'),
+    ('CRE_TSK(T, { TA_NULL, 0, t, 5, 1, NULL });\nCRE_TSK(T, { TA_NULL, 0, t, 5, 1, NULL });',
+     3, 'T is created twice (first at '),
+    ('INCLUDE("missing.cfg");', 2, 'INCLUDE: missing.cfg not found'),
+    ('#ifdef BOARD\nCRE_SEM(S, { TA_NULL, 0, 1 });\n#endif', 2, '#ifdef: the PC target'),
+    ('CRE_SEM(S, { TA_NULL, 0, 1 };', 2, 'static API call without its closing ")"'),
+    ('CRE_SEM(S, { TA_NULL, 0, 1 );', 2, 'unbalanced brackets'),
+    ('stray text', 2, "expected a static API call, found 'stray text'"),
+])
+def test_bad_cfg_stops_with_file_line_and_problem(tmp_path, text, line, problem):
+    cfg = _write(tmp_path, 'app.cfg', '\n' + text + '\n')
+    with pytest.raises(GenmrosError) as error:
+        read_config(cfg, [])
+    assert str(error.value).startswith('%s:%d: ' % (cfg, line)), str(error.value)
+    assert problem in str(error.value)
+
+
+@pytest.mark.skipif(not os.path.isdir(MROS_V1_ROOT), reason='no mROS v1 checkout at %s'
+                    % MROS_V1_ROOT)
+def test_the_real_mros_cfg_and_a_sample_apps_cfg(tmp_path):
+    app_cfg = os.path.join(MROS_V1_ROOT, 'mros_ws', 'string_pubsub', 'app.cfg')
+    config = read_config(app_cfg, [PC_CFG])
+    assert [o.name for o in config.of_api('CRE_TSK')] == [
+        'MAIN_TASK', 'PUB_TASK', 'SUB_TASK', 'XML_SLV_TASK', 'XML_MAS_TASK', 'USR_TASK1',
+        'USR_TASK2']
+    # The board's EthernetInterface.cfg, as the PC target has it.
+    assert [o.name for o in config.of_api('CRE_SEM')] == ['TCPIP_INITED', 'NETIF_LINKED',
+                                                          'NETIF_UP']
+    assert [o.fields['handler'] for o in config.of_api('CRE_CYC')] == ['cyclic_handler']

@@ -1,0 +1,349 @@
+"""The real mROS v1 library, unchanged, with genmros' headers, on the PC
+target (issue 14): `genmros mros-v1-pc` builds the sample apps
+custom_pubsub and string_pubsub from their own sources and the checkout's
+mros-lib for 32-bit ARM Linux (the board's instruction set), and they run
+under qemu-arm against a real rosmaster, the sample's own roscpp nodes
+(ros_catkin_ws, built here with catkin_make) and rospy.
+
+The checkout is MROS_V1_ROOT, default ../shared/mros_v1 beside this
+repository; without one these tests are skipped, saying so. Nothing of it is
+copied: builds and workspaces are in temporary directories.
+
+The library needs its peers on another address than its own (it ignores a
+publisher at its own IP), so the ROS nodes here run with ROS_IP=127.0.0.2
+and the apps with 127.0.0.1. The library's limits that a user meets are
+pinned by the tests at the end.
+"""
+
+import os
+import socket
+import struct
+import subprocess
+import sys
+import textwrap
+import time
+import xmlrpc.client
+
+import pytest
+
+from conftest import REPO, run_genmros
+from ros_processes import RosGraph, free_port, sourced_environment
+from tcpros_peer import encode_header, read_header, receive_exactly
+
+MROS_V1_ROOT = os.environ.get('MROS_V1_ROOT') or os.path.join(os.path.dirname(REPO), 'shared',
+                                                              'mros_v1')
+pytestmark = pytest.mark.skipif(
+    not os.path.isfile(os.path.join(MROS_V1_ROOT, 'mros-lib', 'Makefile.m')),
+    reason='no mROS v1 checkout at %s (set MROS_V1_ROOT)' % MROS_V1_ROOT)
+
+APPS = ('string_pubsub', 'custom_pubsub')
+PEER_IP = '127.0.0.2'
+STRING_MD5 = '992ce8a1687cec8c8bd883ec73ca41d1'
+# How long a message may take through qemu, the library's 100 ms polling
+# and a loaded machine.
+DELIVERY_TIMEOUT = 30
+
+
+@pytest.fixture(scope='module')
+def ros_side(tmp_path_factory):
+    """The sample apps' ROS packages (ros_catkin_ws/src, linked, unchanged)
+    built with catkin_make: their roscpp nodes and genpy messages."""
+    workspace = str(tmp_path_factory.mktemp('ros_catkin_ws'))
+    os.mkdir(os.path.join(workspace, 'src'))
+    for package in APPS:
+        os.symlink(os.path.join(MROS_V1_ROOT, 'ros_catkin_ws', 'src', package),
+                   os.path.join(workspace, 'src', package))
+    build = subprocess.run(['catkin_make'], cwd=workspace, capture_output=True, text=True)
+    assert build.returncode == 0, build.stdout[-3000:] + build.stderr[-3000:]
+    return sourced_environment(os.path.join(workspace, 'devel', 'setup.bash'))
+
+
+@pytest.fixture(scope='module')
+def programs(tmp_path_factory):
+    """The sample apps, built for ARM Linux by genmros mros-v1-pc."""
+    build_root = str(tmp_path_factory.mktemp('mros_v1_pc'))
+    built = {}
+    for app in APPS:
+        output = os.path.join(build_root, app)
+        run_genmros('mros-v1-pc', os.path.join(MROS_V1_ROOT, 'mros_ws', app), '-o', output,
+                    '--target', 'arm', '-j2')
+        built[app] = os.path.join(output, app)
+    return built
+
+
+class Board:
+    """An app on the PC target in a ROS graph: its log, its pins."""
+
+    def __init__(self, graph, program, directory):
+        self.inputs = os.path.join(directory, 'inputs')
+        self.outputs = os.path.join(directory, 'outputs')
+        self.set_inputs(P6_0=1)
+        self.slave_port = free_port()
+        self.publisher_port = free_port()
+        self.process = graph.start(os.path.basename(program), ['qemu-arm', program], {
+            'ROS_IP': '127.0.0.1', 'MROS_V1_SLAVE_PORT': str(self.slave_port),
+            'MROS_V1_PUBLISHER_PORT': str(self.publisher_port), 'MROS_PC_INPUTS': self.inputs,
+            'MROS_PC_OUTPUT_LOG': self.outputs})
+
+    def set_inputs(self, **pins):
+        with open(self.inputs + '.new', 'w') as stream:
+            stream.writelines('%s %d\n' % item for item in sorted(pins.items()))
+        os.replace(self.inputs + '.new', self.inputs)
+
+    def output_lines(self):
+        if not os.path.exists(self.outputs):
+            return []
+        with open(self.outputs) as stream:
+            return stream.read().splitlines()
+
+    def wait_for_output(self, line, timeout=DELIVERY_TIMEOUT):
+        deadline = time.monotonic() + timeout
+        while line not in self.output_lines():
+            assert time.monotonic() < deadline, 'no output %r; outputs: %s; log:\n%s' % (
+                line, self.output_lines()[-20:], self.process.output())
+            time.sleep(0.1)
+
+    @property
+    def slave_uri(self):
+        return 'http://127.0.0.1:%d/' % self.slave_port
+
+
+def ros_node(graph, name, argv, **options):
+    """A ROS node on the peer address."""
+    return graph.start(name, argv, {'ROS_IP': PEER_IP}, **options)
+
+
+def rospy_script(graph, name, code, ros_ip=PEER_IP):
+    script = textwrap.dedent(code)
+    return graph.start(name, [sys.executable, '-c', script], {'ROS_IP': ros_ip})
+
+
+class RawSubscriber:
+    """A TCPROS subscriber that keeps the bytes: asks the app's slave for the
+    topic, connects, and reads the reply header and whole frames."""
+
+    def __init__(self, board, topic, message_type, md5sum):
+        deadline = time.monotonic() + DELIVERY_TIMEOUT
+        while True:
+            try:
+                code, message, protocol = xmlrpc.client.ServerProxy(board.slave_uri).requestTopic(
+                    '/raw_subscriber', topic, [['TCPROS']])
+                if code == 1:
+                    break
+            except OSError:
+                message = 'slave not up'
+            assert time.monotonic() < deadline, 'requestTopic %s: %s' % (topic, message)
+            time.sleep(0.5)
+        self.connection = socket.create_connection((protocol[1], protocol[2]), timeout=DELIVERY_TIMEOUT)
+        self.connection.sendall(encode_header({
+            'callerid': '/raw_subscriber', 'topic': topic, 'type': message_type,
+            'md5sum': md5sum, 'tcp_nodelay': '1'}))
+        self.header = read_header(self.connection)
+
+    def next_body(self):
+        (length,) = struct.unpack('<I', receive_exactly(self.connection, 4))
+        return receive_exactly(self.connection, length)
+
+    def close(self):
+        self.connection.close()
+
+
+def genpy_bytes(environment, statement):
+    """genpy's serialization of the message `statement` builds, in the
+    sample's devel space."""
+    code = textwrap.dedent('''
+        import io, sys
+        from std_msgs.msg import String
+        from custom_pubsub.msg import UserTypeTest, PersonName, LEDValues
+        buffer = io.BytesIO()
+        (%s).serialize(buffer)
+        sys.stdout.write(buffer.getvalue().hex())
+    ''') % statement
+    result = subprocess.run([sys.executable, '-c', code], env=environment, capture_output=True,
+                            text=True, check=True)
+    return bytes.fromhex(result.stdout)
+
+
+def test_string_pubsub_publishes_to_roscpp_rospy_byte_equal_to_genpy(ros_side, programs, tmp_path):
+    with RosGraph(ros_side) as graph:
+        board = Board(graph, programs['string_pubsub'], str(tmp_path))
+        board.process.wait_for(r'Data Publish Start', timeout=DELIVERY_TIMEOUT)
+        roscpp = ros_node(graph, 'ultrasonic_subscriber', ['rosrun', 'string_pubsub',
+                                                           'ultrasonic_subscriber'])
+        rospy = rospy_script(graph, 'rospy_listener', '''
+            import rospy
+            from std_msgs.msg import String
+            rospy.init_node('rospy_listener')
+            rospy.Subscriber('mros_msg', String, lambda m: print('rospy heard %r' % m.data, flush=True))
+            rospy.spin()
+        ''')
+        graph.wait_for_graph(subscribers=[('/mros_msg', '/ultrasonic_subscriber'),
+                                          ('/mros_msg', '/rospy_listener')])
+        raw = RawSubscriber(board, '/mros_msg', 'std_msgs/String', STRING_MD5)
+        # An echo pulse of 100 ms on the ultrasonic sensor's pin (InterruptIn
+        # rise and fall), then the user button pressed and released: the
+        # app starts publishing the distance once a second.
+        board.set_inputs(P6_0=1, P2_15=1)
+        time.sleep(0.1)
+        board.set_inputs(P6_0=1, P2_15=0)
+        time.sleep(0.3)
+        board.set_inputs(P6_0=0)
+        time.sleep(0.3)
+        board.set_inputs(P6_0=1)
+        body = raw.next_body()
+        raw.close()
+        text = body[4:].decode()
+        distance = int(text[len('Distance['):-len(']cm')])
+        # 100 ms at 0.0170 cm/us, give or take the 10 ms input polling and load.
+        assert 1500 <= distance <= 5000, text
+        assert body == genpy_bytes(ros_side, 'String(data=%r)' % text)
+        roscpp.wait_for(r'I heard \[%s\]' % text.replace('[', r'\[').replace(']', r'\]'),
+                        timeout=DELIVERY_TIMEOUT)
+        rospy.wait_for(r'rospy heard %r' % text, timeout=DELIVERY_TIMEOUT)
+        # The ultrasonic trigger, a Ticker at interrupt level, pulses its pin.
+        assert {'P2_14 1', 'P2_14 0'} <= set(board.output_lines())
+
+
+def test_string_pubsub_callback_gets_what_roscpp_and_rospy_publish(ros_side, programs, tmp_path):
+    with RosGraph(ros_side) as graph:
+        board = Board(graph, programs['string_pubsub'], str(tmp_path))
+        roscpp = ros_node(graph, 'led_switch_publisher',
+                          ['rosrun', 'string_pubsub', 'led_switch_publisher'], interactive=True)
+        graph.wait_for_graph(publishers=[('/test_string', '/led_switch_publisher')],
+                             subscribers=[('/test_string', '/mros_node2')])
+        board.process.wait_for(r'sub connected', timeout=DELIVERY_TIMEOUT)
+        roscpp.type('red\n')
+        board.process.wait_for(r'I heard \[red\]', timeout=DELIVERY_TIMEOUT)
+        board.wait_for_output('P6_13 0.78125')
+        rospy_script(graph, 'rospy_talker', '''
+            import rospy
+            from std_msgs.msg import String
+            rospy.init_node('rospy_talker')
+            publisher = rospy.Publisher('test_string', String, queue_size=1)
+            while publisher.get_num_connections() == 0:
+                rospy.sleep(0.1)
+            rospy.sleep(0.5)
+            publisher.publish(String(data='blue'))
+            rospy.spin()
+        ''')
+        board.process.wait_for(r'I heard \[blue\]', timeout=DELIVERY_TIMEOUT)
+        board.wait_for_output('P6_15 0.78125')
+
+
+def test_custom_pubsub_round_trip_with_the_samples_roscpp_nodes_and_rospy(ros_side, programs,
+                                                                         tmp_path):
+    with RosGraph(ros_side) as graph:
+        board = Board(graph, programs['custom_pubsub'], str(tmp_path))
+        subscriber = ros_node(graph, 'custom_subscriber',
+                              ['rosrun', 'custom_pubsub', 'custom_subscriber'])
+        publisher = ros_node(graph, 'custom_publisher',
+                             ['rosrun', 'custom_pubsub', 'custom_publisher'], interactive=True)
+        subscriber.wait_for(r'I heard from \[Charlie Parker\]', timeout=DELIVERY_TIMEOUT)
+        graph.wait_for_graph(publishers=[('/test_msg', '/custom_publisher')],
+                             subscribers=[('/test_msg', '/mros_node2')])
+        board.process.wait_for(r'sub connected', timeout=DELIVERY_TIMEOUT)
+        # The sample publisher reads a name and LED values 0..128 (red 32 = 0.25).
+        publisher.type('Phil Woods 32 64 96\n')
+        board.process.wait_for(r'recieved name: Phil Woods', timeout=DELIVERY_TIMEOUT)
+        for line in ('P6_13 0.25', 'P6_14 0.5', 'P6_15 0.75'):
+            board.wait_for_output(line)
+        # The app publishes what it received: back at roscpp, every field.
+        start = len(subscriber.lines())
+        subscriber.wait_for(r'I heard from \[Phil Woods\]', start=start, timeout=DELIVERY_TIMEOUT)
+        subscriber.wait_for(r'red value \[0\.250000\]', start=start)
+        subscriber.wait_for(r'green value \[0\.500000\]', start=start)
+        subscriber.wait_for(r'blue value \[0\.750000\]', start=start)
+
+        rospy_script(graph, 'rospy_talker', '''
+            import rospy
+            from custom_pubsub.msg import UserTypeTest
+            rospy.init_node('rospy_talker')
+            publisher = rospy.Publisher('test_msg', UserTypeTest, queue_size=1)
+            while publisher.get_num_connections() == 0:
+                rospy.sleep(0.1)
+            rospy.sleep(0.5)
+            message = UserTypeTest()
+            message.nameVal.firstName, message.nameVal.lastName = 'Dizzy', 'Gillespie'
+            message.ledVal.red, message.ledVal.green, message.ledVal.blue = 0.125, 0.375, 0.625
+            publisher.publish(message)
+            rospy.spin()
+        ''')
+        board.process.wait_for(r'recieved name: Dizzy Gillespie', timeout=DELIVERY_TIMEOUT)
+        expected = genpy_bytes(ros_side, 'UserTypeTest(ledVal=LEDValues(0.125, 0.375, 0.625), '
+                                         "nameVal=PersonName('Dizzy', 'Gillespie'))")
+        raw = RawSubscriber(board, '/mros_msg', 'custom_pubsub/UserTypeTest',
+                            raw_md5(ros_side, 'UserTypeTest'))
+        try:
+            assert raw.next_body() == expected
+        finally:
+            raw.close()
+
+
+def raw_md5(environment, name):
+    code = 'import custom_pubsub.msg as m, sys; sys.stdout.write(m.%s._md5sum)' % name
+    return subprocess.run([sys.executable, '-c', code], env=environment, capture_output=True,
+                          text=True, check=True).stdout
+
+
+# ---- the library's own limits, as it behaves today (see the README) ----
+
+def test_limit_a_publisher_at_the_nodes_own_address_is_ignored(ros_side, programs, tmp_path):
+    with RosGraph(ros_side) as graph:
+        board = Board(graph, programs['string_pubsub'], str(tmp_path))
+        talker = '''
+            import rospy
+            from std_msgs.msg import String
+            rospy.init_node('rospy_talker_%s')
+            publisher = rospy.Publisher('test_string', String, queue_size=1)
+            rate = rospy.Rate(2)
+            while not rospy.is_shutdown():
+                publisher.publish(String(data='%s'))
+                rate.sleep()
+        '''
+        rospy_script(graph, 'same_address', talker % ('same', 'green'), ros_ip='127.0.0.1')
+        graph.wait_for_graph(publishers=[('/test_string', '/rospy_talker_same')],
+                             subscribers=[('/test_string', '/mros_node2')])
+        rospy_script(graph, 'other_address', talker % ('other', 'blue'))
+        board.process.wait_for(r'I heard \[blue\]', timeout=DELIVERY_TIMEOUT)
+        time.sleep(3)
+        assert 'I heard [green]' not in board.process.output()
+
+
+def test_limit_no_message_definition_and_no_data_for_anymsg(ros_side, programs, tmp_path):
+    with RosGraph(ros_side) as graph:
+        board = Board(graph, programs['custom_pubsub'], str(tmp_path))
+        board.process.wait_for(r'pub accepted|mROS Main task finish', timeout=DELIVERY_TIMEOUT)
+        md5 = raw_md5(ros_side, 'UserTypeTest')
+        raw = RawSubscriber(board, '/mros_msg', 'custom_pubsub/UserTypeTest', md5)
+        try:
+            assert raw.header['type'] == 'custom_pubsub/UserTypeTest'
+            assert raw.header['md5sum'] == md5
+            assert 'message_definition' not in raw.header
+            raw.next_body()
+        finally:
+            raw.close()
+        anymsg = rospy_script(graph, 'anymsg_listener', '''
+            import rospy
+            rospy.init_node('anymsg_listener')
+            rospy.Subscriber('mros_msg', rospy.AnyMsg,
+                             lambda m: print('anymsg got %d bytes' % len(m._buff), flush=True))
+            rospy.spin()
+        ''')
+        graph.wait_for_graph(subscribers=[('/mros_msg', '/anymsg_listener')])
+        time.sleep(5)
+        assert 'anymsg got' not in anymsg.output()
+
+
+def test_limit_publisher_update_gets_no_reply(ros_side, programs, tmp_path):
+    with RosGraph(ros_side) as graph:
+        board = Board(graph, programs['string_pubsub'], str(tmp_path))
+        graph.wait_for_graph(subscribers=[('/test_string', '/mros_node2')])
+        slave = xmlrpc.client.ServerProxy(board.slave_uri)
+        socket.setdefaulttimeout(3)
+        try:
+            with pytest.raises((socket.timeout, xmlrpc.client.ProtocolError, ConnectionError,
+                                OSError)):
+                slave.publisherUpdate('/master', '/test_string', [])
+        finally:
+            socket.setdefaulttimeout(None)
+        assert board.process.alive()

@@ -1,0 +1,77 @@
+"""genmros mros-v1-pc on bad input: one `genmros: error:` line naming the
+file (and line) and the problem, exit 1, nothing built. The cases with an
+app of the real checkout use MROS_V1_ROOT (default ../shared/mros_v1) and
+write only to temporary directories."""
+
+import os
+
+import pytest
+
+from conftest import REPO, run_genmros
+
+MROS_V1_ROOT = os.environ.get('MROS_V1_ROOT') or os.path.join(os.path.dirname(REPO), 'shared',
+                                                              'mros_v1')
+needs_checkout = pytest.mark.skipif(
+    not os.path.isfile(os.path.join(MROS_V1_ROOT, 'mros-lib', 'Makefile.m')),
+    reason='no mROS v1 checkout at %s (set MROS_V1_ROOT)' % MROS_V1_ROOT)
+
+
+def _error_line(*arguments):
+    result = run_genmros('mros-v1-pc', *arguments, check=False)
+    assert result.returncode == 1, result.stdout + result.stderr
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith('genmros: error: '), result.stderr
+    return lines[0][len('genmros: error: '):]
+
+
+def _app(root, cfg, source='', makefile=''):
+    app = os.path.join(str(root), 'mros_ws', 'app')
+    os.makedirs(app)
+    for name, text in (('app.cfg', cfg), ('app.cpp', source), ('Makefile', makefile)):
+        with open(os.path.join(app, name), 'w') as stream:
+            stream.write(text)
+    return app
+
+
+def test_no_such_directory(tmp_path):
+    missing = str(tmp_path / 'nowhere')
+    assert _error_line(missing) == '%s: no such directory' % missing
+
+
+def test_a_directory_without_app_cfg_is_not_an_app(tmp_path):
+    assert _error_line(str(tmp_path)) == '%s: no app.cfg: not an mROS v1 app' % tmp_path
+
+
+def test_an_app_outside_a_checkout_needs_mros_root(tmp_path):
+    app = _app(tmp_path, '')
+    assert _error_line(app) == ('%s: no mROS v1 checkout here (no mros-lib/Makefile.m); give '
+                                '--mros-root' % os.path.normpath(os.path.join(app, '..', '..')))
+    assert _error_line(app, '--mros-root', str(tmp_path)) == (
+        '%s: no mROS v1 checkout here (no mros-lib/Makefile.m)' % tmp_path)
+
+
+@needs_checkout
+def test_a_task_the_app_does_not_define(tmp_path):
+    # The library's own tasks are in the sample app's mros_config/; this
+    # app's cfg names one more task, which its app.cpp lacks.
+    sample_config = os.path.relpath(
+        os.path.join(MROS_V1_ROOT, 'mros_ws', 'string_pubsub', 'mros_config'),
+        os.path.join(str(tmp_path), 'mros_ws'))
+    mros_cfg = os.path.join(MROS_V1_ROOT, 'mros-lib', 'mros.cfg')
+    app = _app(tmp_path,
+               'INCLUDE("%s");\n#include "app.h"\n\n'
+               'CRE_TSK(USR_TASK1, { TA_NULL, 0, usr_task1, 8, 1024, NULL });\n' % mros_cfg,
+               source='void usr_task2() {\n}\n',
+               makefile='APPLDIR = app %s %s/os/target/os_asp\n' % (sample_config, sample_config))
+    assert _error_line(app, '--mros-root', MROS_V1_ROOT, '--type', 'std_msgs/String') == (
+        "%s:4: USR_TASK1 runs usr_task1(), which no source in the app's APPLDIR defines "
+        "(app %s %s/os/target/os_asp)"
+        % (os.path.join(app, 'app.cfg'), sample_config, sample_config))
+
+
+@needs_checkout
+def test_an_unsupported_static_api(tmp_path):
+    app = _app(tmp_path, '\nCRE_MBX(BOX, { TA_NULL, 0, NULL });\n')
+    problem = _error_line(app, '--mros-root', MROS_V1_ROOT)
+    assert problem.startswith('%s:2: CRE_MBX is not supported by the PC target'
+                              % os.path.join(app, 'app.cfg'))
