@@ -37,12 +37,14 @@ class App:
         variables = _make_variables(os.path.join(self.dir, 'Makefile'))
         self.name = variables.get('APPNAME') or os.path.basename(self.dir)
         main_source = variables.get('APPLNAME', 'app')
-        # APPLDIR is relative to mros_ws/, the directory above the app.
-        self.source_dir_names = variables.get('APPLDIR', '').split() or \
-            [os.path.basename(self.dir)]
-        workspace = os.path.dirname(self.dir)
-        self.source_dirs = [os.path.normpath(os.path.join(workspace, directory))
-                            for directory in self.source_dir_names]
+        # APPLDIR is relative to the app's directory, where its make runs;
+        # the sample apps also name a directory that is not there.
+        self.source_dir_names = variables.get('APPLDIR', '').split()
+        self.source_dirs = [self.dir]
+        for name in self.source_dir_names:
+            directory = os.path.normpath(os.path.join(self.dir, name))
+            if os.path.isdir(directory) and directory not in self.source_dirs:
+                self.source_dirs.append(directory)
         self.objects = ['%s.o' % main_source] + variables.get('APPL_COBJS', '').split() + \
             variables.get('APPL_CXXOBJS', '').split()
         self.cxx_flags = [flag for flag in variables.get('APPL_CXXFLAGS', '').split()
@@ -120,8 +122,9 @@ def check_tasks(app, config):
         if function is None or not re.match(r'[A-Za-z_]\w*\Z', function):
             continue
         if not re.search(r'\b%s\s*\([^;{)]*\)\s*\{' % re.escape(function), text):
-            raise GenmrosError('%s runs %s(), which no source in the app\'s APPLDIR defines (%s)'
-                               % (kernel_object.name, function, ' '.join(app.source_dir_names)),
+            raise GenmrosError('%s runs %s(), which no source of the app defines (%s)'
+                               % (kernel_object.name, function,
+                                  ' '.join(['.'] + app.source_dir_names)),
                                kernel_object.path, kernel_object.line)
 
 

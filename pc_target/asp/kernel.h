@@ -95,4 +95,13 @@ bool_t sns_ctx(void);
 }
 #endif
 
+/* The library's ros.cpp names task IDs (SUB_TASK) with nothing but this
+ * header included, as it does on GR-PEACH's ASP: the IDs the configurator
+ * wrote for the app come with it. */
+#if defined(__has_include)
+#if __has_include("kernel_cfg.h")
+#include "kernel_cfg.h"
+#endif
+#endif
+
 #endif /* MROS_PC_TARGET_KERNEL_H */
