@@ -39,9 +39,8 @@ class App:
         main_source = variables.get('APPLNAME', 'app')
         # APPLDIR is relative to the app's directory, where its make runs;
         # the sample apps also name a directory that is not there.
-        self.source_dir_names = variables.get('APPLDIR', '').split()
         self.source_dirs = [self.dir]
-        for name in self.source_dir_names:
+        for name in variables.get('APPLDIR', '').split():
             directory = os.path.normpath(os.path.join(self.dir, name))
             if os.path.isdir(directory) and directory not in self.source_dirs:
                 self.source_dirs.append(directory)
@@ -124,7 +123,8 @@ def check_tasks(app, config):
         if not re.search(r'\b%s\s*\([^;{)]*\)\s*\{' % re.escape(function), text):
             raise GenmrosError('%s runs %s(), which no source of the app defines (%s)'
                                % (kernel_object.name, function,
-                                  ' '.join(['.'] + app.source_dir_names)),
+                                  ' '.join(os.path.relpath(directory, app.dir)
+                                           for directory in app.source_dirs)),
                                kernel_object.path, kernel_object.line)
 
 

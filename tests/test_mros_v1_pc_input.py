@@ -56,7 +56,7 @@ def test_a_task_the_app_does_not_define(tmp_path):
     # app's cfg names one more task, which its app.cpp lacks.
     sample_config = os.path.relpath(
         os.path.join(MROS_V1_ROOT, 'mros_ws', 'string_pubsub', 'mros_config'),
-        os.path.join(str(tmp_path), 'mros_ws'))
+        os.path.join(str(tmp_path), 'mros_ws', 'app'))
     mros_cfg = os.path.join(MROS_V1_ROOT, 'mros-lib', 'mros.cfg')
     app = _app(tmp_path,
                'INCLUDE("%s");\n#include "app.h"\n\n'
@@ -64,8 +64,8 @@ def test_a_task_the_app_does_not_define(tmp_path):
                source='void usr_task2() {\n}\n',
                makefile='APPLDIR = app %s %s/os/target/os_asp\n' % (sample_config, sample_config))
     assert _error_line(app, '--mros-root', MROS_V1_ROOT, '--type', 'std_msgs/String') == (
-        "%s:4: USR_TASK1 runs usr_task1(), which no source in the app's APPLDIR defines "
-        "(app %s %s/os/target/os_asp)"
+        "%s:4: USR_TASK1 runs usr_task1(), which no source of the app defines "
+        "(. %s %s/os/target/os_asp)"
         % (os.path.join(app, 'app.cfg'), sample_config, sample_config))
 
 
