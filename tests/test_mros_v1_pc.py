@@ -87,13 +87,13 @@ def programs(tmp_path_factory):
 class Board:
     """An app on the PC target in a ROS graph: its log, its pins."""
 
-    def __init__(self, graph, program, directory):
+    def __init__(self, graph, program, directory, runner=('qemu-arm',)):
         self.inputs = os.path.join(directory, 'inputs')
         self.outputs = os.path.join(directory, 'outputs')
         self.set_inputs(P6_0=1)
         self.slave_port = free_port()
         self.publisher_port = free_port()
-        self.process = graph.start(os.path.basename(program), ['qemu-arm', program], {
+        self.process = graph.start(os.path.basename(program), list(runner) + [program], {
             'ROS_IP': BOARD_IP, 'MROS_V1_SLAVE_PORT': str(self.slave_port),
             'MROS_V1_PUBLISHER_PORT': str(self.publisher_port), 'MROS_PC_INPUTS': self.inputs,
             'MROS_PC_OUTPUT_LOG': self.outputs})
@@ -125,6 +125,21 @@ def ros_node(graph, name, argv, **options):
     """A ROS node on the peer address, its log lines written as they come."""
     return graph.start(name, argv, {'ROS_IP': PEER_IP, 'ROSCONSOLE_STDOUT_LINE_BUFFERED': '1'},
                        **options)
+
+
+def type_until_heard(publisher, line, board, pattern):
+    """Types line into a sample publisher once a second until the app logs
+    pattern: a roscpp publisher drops what it publishes before it has taken
+    the library's connection header."""
+    deadline = time.monotonic() + DELIVERY_TIMEOUT
+    while True:
+        start = len(board.process.lines())
+        publisher.type(line)
+        try:
+            return board.process.wait_for(pattern, timeout=1.0, start=start)
+        except AssertionError:
+            if time.monotonic() > deadline:
+                raise
 
 
 def rospy_script(graph, name, code, ros_ip=PEER_IP):
@@ -227,8 +242,7 @@ def test_string_pubsub_callback_gets_what_roscpp_and_rospy_publish(ros_side, pro
         graph.wait_for_graph(publishers=[('/test_string', '/led_switch_publisher')],
                              subscribers=[('/test_string', '/mros_node2')])
         board.process.wait_for(r'sub connected', timeout=DELIVERY_TIMEOUT)
-        roscpp.type('red\n')
-        board.process.wait_for(r'I heard \[red\]', timeout=DELIVERY_TIMEOUT)
+        type_until_heard(roscpp, 'red\n', board, r'I heard \[red\]')
         board.wait_for_output('P6_13 0.78125')
     # A new graph: with one publisher connected, the library reads no
     # other on the same topic (a limit of its own, see the end).
@@ -261,8 +275,7 @@ def test_custom_pubsub_round_trip_with_the_samples_roscpp_nodes_and_rospy(ros_si
                              subscribers=[('/test_msg', '/mros_node2')])
         board.process.wait_for(r'sub connected', timeout=DELIVERY_TIMEOUT)
         # The sample publisher reads a name and LED values 0..128 (red 32 = 0.25).
-        publisher.type('Phil Woods 32 64 96\n')
-        board.process.wait_for(r'recieved name: Phil Woods', timeout=DELIVERY_TIMEOUT)
+        type_until_heard(publisher, 'Phil Woods 32 64 96\n', board, r'recieved name: Phil Woods')
         for line in ('P6_13 0.25', 'P6_14 0.5', 'P6_15 0.75'):
             board.wait_for_output(line)
         # The app publishes what it received: back at roscpp, every field.
@@ -298,6 +311,33 @@ def test_custom_pubsub_round_trip_with_the_samples_roscpp_nodes_and_rospy(ros_si
             raw.close()
 
 
+def test_native_target_runs_custom_pubsub_against_roscpp(ros_side, tmp_path):
+    output = str(tmp_path / 'native')
+    run_genmros('mros-v1-pc', os.path.join(MROS_V1_ROOT, 'mros_ws', 'custom_pubsub'), '-o',
+                output, '--target', 'native', '-j2')
+    with RosGraph(ros_side) as graph:
+        Board(graph, os.path.join(output, 'custom_pubsub'), str(tmp_path), runner=[])
+        subscriber = ros_node(graph, 'custom_subscriber',
+                              sample_node(ros_side, 'custom_pubsub', 'custom_subscriber'))
+        subscriber.wait_for(r'I heard from \[Charlie Parker\]', timeout=DELIVERY_TIMEOUT)
+
+
+@pytest.mark.parametrize('variable, value, problem', [
+    ('ROS_MASTER_URI', 'localhost:11311', 'not http://HOST:PORT'),
+    ('ROS_IP', 'not-an-address', 'not an IPv4 address or a name in /etc/hosts'),
+    ('MROS_V1_SLAVE_PORT', '70000', 'not a TCP port (1 to 65535)'),
+])
+def test_an_unusable_ros_environment_stops_the_node_with_one_line(programs, variable, value,
+                                                                  problem):
+    environment = dict(os.environ, ROS_MASTER_URI='http://127.0.0.1:1/', ROS_IP=BOARD_IP)
+    environment[variable] = value
+    result = subprocess.run(['qemu-arm', programs['string_pubsub']], env=environment,
+                            capture_output=True, text=True, timeout=DELIVERY_TIMEOUT)
+    assert result.returncode == 2
+    assert 'mROS PC target: %s=%s: %s\n' % (variable, value, problem) in result.stderr
+    assert result.stderr.count('mROS PC target:') == 1
+
+
 def raw_md5(environment, name):
     code = 'import custom_pubsub.msg as m, sys; sys.stdout.write(m.%s._md5sum)' % name
     return subprocess.run([sys.executable, '-c', code], env=environment, capture_output=True,
@@ -325,6 +365,30 @@ def test_limit_a_publisher_at_the_nodes_own_address_is_ignored(ros_side, program
         board.process.wait_for(r'publisher update', timeout=DELIVERY_TIMEOUT)
         time.sleep(8)
         assert 'I heard' not in board.process.output()
+
+
+def test_limit_with_one_publisher_connected_no_other_is_read(ros_side, programs, tmp_path):
+    with RosGraph(ros_side) as graph:
+        board = Board(graph, programs['string_pubsub'], str(tmp_path))
+        roscpp = ros_node(graph, 'led_switch_publisher',
+                          sample_node(ros_side, 'string_pubsub', 'led_switch_publisher'),
+                          interactive=True)
+        board.process.wait_for(r'sub connected', timeout=DELIVERY_TIMEOUT)
+        type_until_heard(roscpp, 'red\n', board, r'I heard \[red\]')
+        rospy_script(graph, 'rospy_talker', '''
+            import rospy
+            from std_msgs.msg import String
+            rospy.init_node('rospy_talker')
+            publisher = rospy.Publisher('test_string', String, queue_size=1)
+            rate = rospy.Rate(2)
+            while not rospy.is_shutdown():
+                publisher.publish(String(data='blue'))
+                rate.sleep()
+        ''')
+        graph.wait_for_graph(publishers=[('/test_string', '/rospy_talker')])
+        time.sleep(8)
+        assert 'I heard [blue]' not in board.process.output()
+        type_until_heard(roscpp, 'green\n', board, r'I heard \[green\]')
 
 
 def test_limit_no_message_definition_and_no_data_for_anymsg(ros_side, programs, tmp_path):
