@@ -153,7 +153,9 @@ def build(options):
     app = App(app_dir, find_mros_root(app_dir, options.mros_root))
     check_tools(options.target)
     pc_target = os.path.dirname(installed_file(PC_TARGET_MAKEFILE))
-    config = read_config(app.cfg, [os.path.join(pc_target, 'cfg', 'asp')])
+    # The library's mros.cfg is on the search path, as in ASP's own build.
+    config = read_config(app.cfg, [os.path.join(app.mros_root, 'mros-lib'),
+                                   os.path.join(pc_target, 'cfg', 'asp')])
     check_tasks(app, config)
     types, paths = app.message_types()
     types = options.types or types

@@ -28,7 +28,8 @@ import xmlrpc.client
 
 import pytest
 
-from conftest import REPO, run_genmros
+from conftest import REPO, TEST_WS, run_genmros
+from posix_evaluation import ROS_HEARD, Direction, parse_mros_listener
 from fixtures.build_integration.tools import run
 from ros_processes import RosGraph, free_port, sourced_environment
 from tcpros_peer import encode_header, read_header, receive_exactly
@@ -336,6 +337,67 @@ def test_an_unusable_ros_environment_stops_the_node_with_one_line(programs, vari
     assert result.returncode == 2
     assert 'mROS PC target: %s=%s: %s\n' % (variable, value, problem) in result.stderr
     assert result.stderr.count('mROS PC target:') == 1
+
+
+@pytest.fixture(scope='module')
+def evaluation_app(tmp_path_factory):
+    """The paper's evaluation as an mROS v1 app (tests/fixtures/mros_v1_pc_app)
+    with custom_pubsub's mros_config/ linked in, built for ARM Linux."""
+    root = tmp_path_factory.mktemp('evaluation_app')
+    app = os.path.join(str(root), 'personal_data')
+    os.mkdir(app)
+    fixture = os.path.join(REPO, 'tests', 'fixtures', 'mros_v1_pc_app')
+    for name in os.listdir(fixture):
+        os.symlink(os.path.join(fixture, name), os.path.join(app, name))
+    os.symlink(os.path.join(MROS_V1_ROOT, 'mros_ws', 'custom_pubsub', 'mros_config'),
+               os.path.join(app, 'mros_config'))
+    output = os.path.join(str(root), 'build')
+    run_genmros('mros-v1-pc', app, '--mros-root', MROS_V1_ROOT, '--type', 'mros_test/PersonalData',
+                '--msg-path', os.path.join(TEST_WS, 'src'), '-o', output, '-j2')
+    return os.path.join(output, 'personal_data')
+
+
+def _direction(title, name, age, first_score, received, count=5):
+    direction = Direction(title, name, age, first_score)
+    direction.received = received[:count]
+    direction.check(count)
+    assert direction.problem is None, direction.summary()
+
+
+def test_paper_evaluation_mros_to_ros_and_on_board(ros_workspace, evaluation_app, tmp_path):
+    with RosGraph(sourced_environment(ros_workspace.setup_bash)) as graph:
+        listeners = [
+            ('mROS -> rospy', graph.start('rospy listener',
+                                          ros_workspace.rospy('personal_data_listener.py'))),
+            ('mROS -> roscpp', graph.start('roscpp listener',
+                                           ros_workspace.roscpp('personal_data_listener'))),
+        ]
+        graph.wait_for_graph(subscribers=[('/mros_str', '/rospy_personal_listener'),
+                                          ('/mros_str', '/ros_personal_listener')])
+        board = Board(graph, evaluation_app, str(tmp_path))
+        for title, listener in listeners:
+            matches = listener.wait_for(ROS_HEARD.pattern, timeout=DELIVERY_TIMEOUT, count=5)
+            _direction(title, 'Phil Woods', 83, 100000, [
+                ('%s %s' % (m.group(1), m.group(2)), int(m.group(3)), int(m.group(4)))
+                for m in matches])
+        matches = board.process.wait_for(r'on board: (\S+ \S+) (\d+) (-?\d+)',
+                                         timeout=DELIVERY_TIMEOUT, count=5)
+        _direction('mROS -> mROS on board', 'Phil Woods', 83, 100000,
+                   [(m.group(1), int(m.group(2)), int(m.group(3))) for m in matches])
+
+
+@pytest.mark.parametrize('talker', ['rospy', 'roscpp'])
+def test_paper_evaluation_ros_to_mros(ros_workspace, evaluation_app, tmp_path, talker):
+    # One talker per graph: the library reads one publisher per topic.
+    with RosGraph(sourced_environment(ros_workspace.setup_bash)) as graph:
+        board = Board(graph, evaluation_app, str(tmp_path))
+        graph.wait_for_graph(subscribers=[('/test_msg', '/mros_node2')])
+        start = len(board.process.lines())
+        graph.start(talker + ' talker', ros_workspace.rospy('personal_data_talker.py')
+                    if talker == 'rospy' else ros_workspace.roscpp('personal_data_talker'))
+        board.process.wait_for(r'\] score:', timeout=DELIVERY_TIMEOUT, start=start, count=5)
+        _direction('%s -> mROS' % talker, 'Charlie Parker', 32, 100100,
+                   parse_mros_listener(board.process.lines()[start:]))
 
 
 def raw_md5(environment, name):
