@@ -17,7 +17,8 @@ TEST_WS = os.path.join(REPO, 'test_ws')
 PYTHON = '/usr/bin/python3'  # the interpreter that has genmsg, catkin_pkg, rospy
 
 
-def _scratch(prefix):
+def scratch(prefix):
+    """A temporary directory removed when the process exits."""
     path = tempfile.mkdtemp(prefix=prefix)
     atexit.register(shutil.rmtree, path, True)
     return path
@@ -60,7 +61,7 @@ class Firmware:
 
 @functools.lru_cache(maxsize=None)
 def workspace(root=None):
-    root = root or _scratch('mros_test_ws_')
+    root = root or scratch('mros_test_ws_')
     shutil.copytree(os.path.join(TEST_WS, 'src'), os.path.join(root, 'src'), dirs_exist_ok=True)
     built = Workspace(root)
     _run(['catkin_make', '-C', root, '-DPYTHON_EXECUTABLE=' + PYTHON, '-DCMAKE_BUILD_TYPE=Release',
@@ -72,7 +73,7 @@ def workspace(root=None):
 @functools.lru_cache(maxsize=None)
 def firmware(mros_export, root=None):
     """Built against mros_export, the genmros export of a built Workspace."""
-    root = root or _scratch('mros_firmware_')
+    root = root or scratch('mros_firmware_')
     log = os.path.join(root, 'build.log')
     _run(['cmake', '-S', os.path.join(TEST_WS, 'firmware'), '-B', root,
           '-DCMAKE_BUILD_TYPE=Release', '-DMROS_EXPORT_DIR=' + mros_export], log)

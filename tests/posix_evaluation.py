@@ -9,7 +9,9 @@ every direction delivered the right values in order.
   posix_evaluation.py [--messages N] [--build-dir DIR]
 
 Builds test_ws (catkin_make) and the sample firmware (CMake) first, in
-DIR or in a temporary directory."""
+DIR or in a temporary directory. With an mROS v1 checkout (MROS_V1_ROOT,
+default ../shared/mros_v1) it also runs the evaluation as an mROS v1 app on
+the real library (tests/mros_v1_pc_evaluation.py) and prints both tables."""
 
 import argparse
 import os
@@ -168,11 +170,26 @@ def main():
     print('building the sample firmware (POSIX target) with CMake and '
           'cmake/mros_generate.cmake ...', flush=True)
     firmware = posix_builds.firmware(workspace.mros_export, fw_root)
-    directions = run(workspace, firmware, args.messages)
-    print('\n==== mROS POSIX evaluation (paper section 6.2) ====')
-    for direction in directions:
-        print(direction.summary())
-    passed = all(direction.problem is None for direction in directions)
+    tables = [('mROS POSIX evaluation (paper section 6.2)',
+               run(workspace, firmware, args.messages))]
+    # Imported here: it imports this module's checks.
+    import mros_v1_pc_evaluation
+    if mros_v1_pc_evaluation.checkout_found():
+        print('building the evaluation as an mROS v1 app with the real library of %s '
+              '(genmros mros-v1-pc) ...' % mros_v1_pc_evaluation.MROS_V1_ROOT, flush=True)
+        scratch = posix_builds.scratch('mros_v1_pc_')
+        program = mros_v1_pc_evaluation.build_app(mros_v1_pc_evaluation.MROS_V1_ROOT, scratch)
+        tables.append(('the real mROS v1 library on the PC target (qemu-arm)',
+                       mros_v1_pc_evaluation.run(workspace, program, args.messages, scratch)))
+    else:
+        print('\nno mROS v1 checkout at %s: set MROS_V1_ROOT=<checkout> to also run the '
+              'evaluation on the real mROS v1 library' % mros_v1_pc_evaluation.MROS_V1_ROOT)
+    passed = True
+    for title, directions in tables:
+        print('\n==== %s ====' % title)
+        for direction in directions:
+            print(direction.summary())
+        passed = passed and all(direction.problem is None for direction in directions)
     print('RESULT: %s' % ('PASS' if passed else 'FAIL'))
     return 0 if passed else 1
 

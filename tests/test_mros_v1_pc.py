@@ -28,25 +28,19 @@ import xmlrpc.client
 
 import pytest
 
-from conftest import REPO, TEST_WS, run_genmros
-from posix_evaluation import ROS_HEARD, Direction, parse_mros_listener
+import mros_v1_pc_evaluation
+from conftest import run_genmros
 from fixtures.build_integration.tools import run
-from ros_processes import RosGraph, free_port, sourced_environment
+from mros_v1_pc_evaluation import BOARD_IP, DELIVERY_TIMEOUT, MROS_V1_ROOT, PEER_IP, Board
+from ros_processes import RosGraph, sourced_environment
 from tcpros_peer import encode_header, read_header, receive_exactly
 
-MROS_V1_ROOT = os.environ.get('MROS_V1_ROOT') or os.path.join(os.path.dirname(REPO), 'shared',
-                                                              'mros_v1')
 pytestmark = pytest.mark.skipif(
     not os.path.isfile(os.path.join(MROS_V1_ROOT, 'mros-lib', 'Makefile.m')),
     reason='no mROS v1 checkout at %s (set MROS_V1_ROOT)' % MROS_V1_ROOT)
 
 APPS = ('string_pubsub', 'custom_pubsub')
-BOARD_IP = '127.0.0.2'
-PEER_IP = '127.0.0.1'
 STRING_MD5 = '992ce8a1687cec8c8bd883ec73ca41d1'
-# How long a message may take through qemu, the library's 100 ms polling
-# and a loaded machine.
-DELIVERY_TIMEOUT = 30
 
 
 @pytest.fixture(scope='module')
@@ -83,43 +77,6 @@ def programs(tmp_path_factory):
                     '--target', 'arm', '-j2')
         built[app] = os.path.join(output, app)
     return built
-
-
-class Board:
-    """An app on the PC target in a ROS graph: its log, its pins."""
-
-    def __init__(self, graph, program, directory, runner=('qemu-arm',)):
-        self.inputs = os.path.join(directory, 'inputs')
-        self.outputs = os.path.join(directory, 'outputs')
-        self.set_inputs(P6_0=1)
-        self.slave_port = free_port()
-        self.publisher_port = free_port()
-        self.process = graph.start(os.path.basename(program), list(runner) + [program], {
-            'ROS_IP': BOARD_IP, 'MROS_V1_SLAVE_PORT': str(self.slave_port),
-            'MROS_V1_PUBLISHER_PORT': str(self.publisher_port), 'MROS_PC_INPUTS': self.inputs,
-            'MROS_PC_OUTPUT_LOG': self.outputs})
-
-    def set_inputs(self, **pins):
-        with open(self.inputs + '.new', 'w') as stream:
-            stream.writelines('%s %d\n' % item for item in sorted(pins.items()))
-        os.replace(self.inputs + '.new', self.inputs)
-
-    def output_lines(self):
-        if not os.path.exists(self.outputs):
-            return []
-        with open(self.outputs) as stream:
-            return stream.read().splitlines()
-
-    def wait_for_output(self, line, timeout=DELIVERY_TIMEOUT):
-        deadline = time.monotonic() + timeout
-        while line not in self.output_lines():
-            assert time.monotonic() < deadline, 'no output %r; outputs: %s; log:\n%s' % (
-                line, self.output_lines()[-20:], self.process.output())
-            time.sleep(0.1)
-
-    @property
-    def slave_uri(self):
-        return 'http://%s:%d/' % (BOARD_IP, self.slave_port)
 
 
 def ros_node(graph, name, argv, **options):
@@ -341,63 +298,16 @@ def test_an_unusable_ros_environment_stops_the_node_with_one_line(programs, vari
 
 @pytest.fixture(scope='module')
 def evaluation_app(tmp_path_factory):
-    """The paper's evaluation as an mROS v1 app (tests/fixtures/mros_v1_pc_app)
-    with custom_pubsub's mros_config/ linked in, built for ARM Linux."""
-    root = tmp_path_factory.mktemp('evaluation_app')
-    app = os.path.join(str(root), 'personal_data')
-    os.mkdir(app)
-    fixture = os.path.join(REPO, 'tests', 'fixtures', 'mros_v1_pc_app')
-    for name in os.listdir(fixture):
-        os.symlink(os.path.join(fixture, name), os.path.join(app, name))
-    os.symlink(os.path.join(MROS_V1_ROOT, 'mros_ws', 'custom_pubsub', 'mros_config'),
-               os.path.join(app, 'mros_config'))
-    output = os.path.join(str(root), 'build')
-    run_genmros('mros-v1-pc', app, '--mros-root', MROS_V1_ROOT, '--type', 'mros_test/PersonalData',
-                '--msg-path', os.path.join(TEST_WS, 'src'), '-o', output, '-j2')
-    return os.path.join(output, 'personal_data')
+    return mros_v1_pc_evaluation.build_app(MROS_V1_ROOT, str(tmp_path_factory.mktemp('evaluation')))
 
 
-def _direction(title, name, age, first_score, received, count=5):
-    direction = Direction(title, name, age, first_score)
-    direction.received = received[:count]
-    direction.check(count)
-    assert direction.problem is None, direction.summary()
-
-
-def test_paper_evaluation_mros_to_ros_and_on_board(ros_workspace, evaluation_app, tmp_path):
-    with RosGraph(sourced_environment(ros_workspace.setup_bash)) as graph:
-        listeners = [
-            ('mROS -> rospy', graph.start('rospy listener',
-                                          ros_workspace.rospy('personal_data_listener.py'))),
-            ('mROS -> roscpp', graph.start('roscpp listener',
-                                           ros_workspace.roscpp('personal_data_listener'))),
-        ]
-        graph.wait_for_graph(subscribers=[('/mros_str', '/rospy_personal_listener'),
-                                          ('/mros_str', '/ros_personal_listener')])
-        board = Board(graph, evaluation_app, str(tmp_path))
-        for title, listener in listeners:
-            matches = listener.wait_for(ROS_HEARD.pattern, timeout=DELIVERY_TIMEOUT, count=5)
-            _direction(title, 'Phil Woods', 83, 100000, [
-                ('%s %s' % (m.group(1), m.group(2)), int(m.group(3)), int(m.group(4)))
-                for m in matches])
-        matches = board.process.wait_for(r'on board: (\S+ \S+) (\d+) (-?\d+)',
-                                         timeout=DELIVERY_TIMEOUT, count=5)
-        _direction('mROS -> mROS on board', 'Phil Woods', 83, 100000,
-                   [(m.group(1), int(m.group(2)), int(m.group(3))) for m in matches])
-
-
-@pytest.mark.parametrize('talker', ['rospy', 'roscpp'])
-def test_paper_evaluation_ros_to_mros(ros_workspace, evaluation_app, tmp_path, talker):
-    # One talker per graph: the library reads one publisher per topic.
-    with RosGraph(sourced_environment(ros_workspace.setup_bash)) as graph:
-        board = Board(graph, evaluation_app, str(tmp_path))
-        graph.wait_for_graph(subscribers=[('/test_msg', '/mros_node2')])
-        start = len(board.process.lines())
-        graph.start(talker + ' talker', ros_workspace.rospy('personal_data_talker.py')
-                    if talker == 'rospy' else ros_workspace.roscpp('personal_data_talker'))
-        board.process.wait_for(r'\] score:', timeout=DELIVERY_TIMEOUT, start=start, count=5)
-        _direction('%s -> mROS' % talker, 'Charlie Parker', 32, 100100,
-                   parse_mros_listener(board.process.lines()[start:]))
+def test_paper_evaluation_on_the_real_library(ros_workspace, evaluation_app, tmp_path):
+    directions = mros_v1_pc_evaluation.run(ros_workspace, evaluation_app, 5, str(tmp_path))
+    assert [direction.title for direction in directions] == [
+        'mROS -> rospy listener', 'mROS -> roscpp listener', 'mROS -> mROS on board',
+        'rospy talker -> mROS', 'roscpp talker -> mROS']
+    for direction in directions:
+        assert direction.problem is None, direction.summary()
 
 
 def raw_md5(environment, name):
