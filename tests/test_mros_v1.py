@@ -4,7 +4,8 @@ mROS v1 apps build with make at -std=gnu++98 for ARM boards; the headers must
 compile there and in every later standard, deliver frames the way the v1
 library hands them over, and come from genmros through the make fragment.
 The library itself is stood in for by tests/fixtures/mros_v1, which behaves
-as mROS-base/mROS's ros.cpp and topic code do (see its comments).
+as mROS-base/mROS's ros.cpp and topic code do (see its comments), for fault
+injection under sanitizers; the real library runs in test_mros_v1_pc.py.
 """
 
 import filecmp
