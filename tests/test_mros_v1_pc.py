@@ -33,7 +33,7 @@ from conftest import run_genmros
 from fixtures.build_integration.tools import run
 from mros_v1_pc_evaluation import BOARD_IP, DELIVERY_TIMEOUT, MROS_V1_ROOT, PEER_IP, Board
 from ros_processes import RosGraph, sourced_environment
-from tcpros_peer import encode_header, read_header, receive_exactly
+from tcpros_peer import HostilePublisher, encode_header, read_header, receive_exactly
 
 pytestmark = pytest.mark.skipif(
     not os.path.isfile(os.path.join(MROS_V1_ROOT, 'mros-lib', 'Makefile.m')),
@@ -399,3 +399,65 @@ def test_limit_publisher_update_gets_no_response(ros_side, programs, tmp_path):
         with pytest.raises(http.client.RemoteDisconnected):
             slave.publisherUpdate('/master', '/test_string', [])
         assert board.process.alive()
+
+
+# ---- bad input from outside: the PC target keeps running ----
+
+@pytest.mark.parametrize('frame', [
+    pytest.param(struct.pack('<I', 100) + b'\x04\x00\x00\x00red', id='cut-short'),
+    pytest.param(struct.pack('<I', 0x7fffffff) + b'\x04\x00\x00\x00red', id='length-beyond'),
+    pytest.param(b'\x05\x00', id='closed-in-the-length'),
+])
+def test_a_frame_cut_short_or_oversized_leaves_the_app_running(ros_side, programs, tmp_path,
+                                                                 frame):
+    with RosGraph(ros_side) as graph:
+        board = Board(graph, programs['string_pubsub'], str(tmp_path))
+        graph.wait_for_graph(subscribers=[('/test_string', '/mros_node2')])
+        with HostilePublisher(graph, '/hostile', '/test_string', 'std_msgs/String') as hostile:
+            # The library may connect twice (see the publisherUpdate limit):
+            # every connection gets the header and the frames.
+            connections = []
+            deadline = time.monotonic() + DELIVERY_TIMEOUT
+            while 'I heard [blue]' not in board.process.output():
+                assert time.monotonic() < deadline, board.process.output()
+                try:
+                    connection, header = hostile.accept(timeout=0.5)
+                    assert header['md5sum'] == STRING_MD5
+                    connection.sendall(encode_header({
+                        'callerid': '/hostile', 'md5sum': STRING_MD5,
+                        'type': 'std_msgs/String', 'topic': '/test_string'}))
+                    connections.append(connection)
+                except socket.timeout:
+                    pass
+                for connection in connections:
+                    connection.sendall(struct.pack('<I', 8) + b'\x04\x00\x00\x00blue')
+            for connection in connections:
+                connection.sendall(frame)
+                connection.close()
+            time.sleep(3)
+        assert board.process.alive(), board.process.output()
+        assert 'I heard [red]' not in board.process.output()
+        # The app still serves: a subscriber gets its publisher's header.
+        raw = RawSubscriber(board, '/mros_msg', 'std_msgs/String', STRING_MD5)
+        raw.close()
+        assert raw.header['md5sum'] == STRING_MD5
+
+
+def test_a_master_that_goes_away_and_comes_back(ros_side, programs, tmp_path):
+    with RosGraph(ros_side) as graph:
+        board = Board(graph, programs['string_pubsub'], str(tmp_path))
+        graph.wait_for_graph(subscribers=[('/test_string', '/mros_node2')],
+                             publishers=[('/mros_msg', '/mros_node')])
+        graph.master.stop()
+        time.sleep(3)
+        assert board.process.alive(), board.process.output()
+        graph.master = graph.start('rosmaster again', ['rosmaster', '--core', '-p',
+                                                       str(graph.port)])
+        graph._wait_for_master()
+        time.sleep(5)
+        assert board.process.alive(), board.process.output()
+        # What the library does: it registers once, at start, and does not
+        # register again with a master that restarted.
+        publishers, subscribers = graph.system_state()
+        assert '/mros_node' not in publishers.get('/mros_msg', set())
+        assert '/mros_node2' not in subscribers.get('/test_string', set())
