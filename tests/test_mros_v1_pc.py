@@ -100,6 +100,23 @@ def type_until_heard(publisher, line, board, pattern):
                 raise
 
 
+STRING_TALKER = '''
+    import rospy
+    from std_msgs.msg import String
+    rospy.init_node(%r)
+    publisher = rospy.Publisher('test_string', String, queue_size=1)
+    rate = rospy.Rate(2)
+    while not rospy.is_shutdown():
+        publisher.publish(String(data=%r))
+        rate.sleep()
+'''
+
+
+def rospy_string_talker(graph, node, text, ros_ip=PEER_IP):
+    """A rospy node publishing text on test_string twice a second."""
+    return rospy_script(graph, node, STRING_TALKER % (node, text), ros_ip)
+
+
 def rospy_script(graph, name, code, ros_ip=PEER_IP):
     script = textwrap.dedent(code)
     return graph.start(name, [sys.executable, '-c', script], {'ROS_IP': ros_ip})
@@ -206,16 +223,7 @@ def test_string_pubsub_callback_gets_what_roscpp_and_rospy_publish(ros_side, pro
     # other on the same topic (a limit of its own, see the end).
     with RosGraph(ros_side) as graph:
         board = Board(graph, programs['string_pubsub'], str(tmp_path))
-        rospy_script(graph, 'rospy_talker', '''
-            import rospy
-            from std_msgs.msg import String
-            rospy.init_node('rospy_talker')
-            publisher = rospy.Publisher('test_string', String, queue_size=1)
-            rate = rospy.Rate(2)
-            while not rospy.is_shutdown():
-                publisher.publish(String(data='blue'))
-                rate.sleep()
-        ''')
+        rospy_string_talker(graph, 'rospy_talker', 'blue')
         board.process.wait_for(r'I heard \[blue\]', timeout=DELIVERY_TIMEOUT)
         board.wait_for_output('P6_15 0.78125')
 
@@ -321,17 +329,7 @@ def raw_md5(environment, name):
 def test_limit_a_publisher_at_the_nodes_own_address_is_ignored(ros_side, programs, tmp_path):
     with RosGraph(ros_side) as graph:
         board = Board(graph, programs['string_pubsub'], str(tmp_path))
-        talker = '''
-            import rospy
-            from std_msgs.msg import String
-            rospy.init_node('rospy_talker_%s')
-            publisher = rospy.Publisher('test_string', String, queue_size=1)
-            rate = rospy.Rate(2)
-            while not rospy.is_shutdown():
-                publisher.publish(String(data='%s'))
-                rate.sleep()
-        '''
-        rospy_script(graph, 'same_address', talker % ('same', 'green'), ros_ip=BOARD_IP)
+        rospy_string_talker(graph, 'rospy_talker_same', 'green', ros_ip=BOARD_IP)
         graph.wait_for_graph(publishers=[('/test_string', '/rospy_talker_same')],
                              subscribers=[('/test_string', '/mros_node2')])
         board.process.wait_for(r'publisher update', timeout=DELIVERY_TIMEOUT)
@@ -347,16 +345,7 @@ def test_limit_with_one_publisher_connected_no_other_is_read(ros_side, programs,
                           interactive=True)
         board.process.wait_for(r'sub connected', timeout=DELIVERY_TIMEOUT)
         type_until_heard(roscpp, 'red\n', board, r'I heard \[red\]')
-        rospy_script(graph, 'rospy_talker', '''
-            import rospy
-            from std_msgs.msg import String
-            rospy.init_node('rospy_talker')
-            publisher = rospy.Publisher('test_string', String, queue_size=1)
-            rate = rospy.Rate(2)
-            while not rospy.is_shutdown():
-                publisher.publish(String(data='blue'))
-                rate.sleep()
-        ''')
+        rospy_string_talker(graph, 'rospy_talker', 'blue')
         graph.wait_for_graph(publishers=[('/test_string', '/rospy_talker')])
         time.sleep(8)
         assert 'I heard [blue]' not in board.process.output()
