@@ -100,8 +100,15 @@ static unsigned raised_first, raised_count;
 static struct timespec start_time;
 static __thread struct tcb *current;
 
+static pthread_once_t clock_started = PTHREAD_ONCE_INIT;
+
+static void start_clock(void) { clock_gettime(CLOCK_MONOTONIC, &start_time); }
+
+/* Also right for a ticker an app starts from a static constructor, before
+ * main(). */
 uint64_t pc_now_us(void) {
   struct timespec now;
+  pthread_once(&clock_started, start_clock);
   clock_gettime(CLOCK_MONOTONIC, &now);
   return (uint64_t)(now.tv_sec - start_time.tv_sec) * 1000000u +
          (uint64_t)((now.tv_nsec - start_time.tv_nsec) / 1000);
@@ -712,7 +719,7 @@ static void init_cond(pthread_cond_t *cond, int monotonic) {
 int main(void) {
   uint_t index;
   signal(SIGPIPE, SIG_IGN);
-  clock_gettime(CLOCK_MONOTONIC, &start_time);
+  pthread_once(&clock_started, start_clock);
   init_cond(&timer_wakeup, 1);
 
   tasks = calloc(pc_task_count + 1, sizeof *tasks);
