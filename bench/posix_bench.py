@@ -3,7 +3,11 @@
 side in one run: an mROS node (firmware bench_talker) -> a roscpp node, and
 a roscpp node (mros_test_nodes bench_talker) -> the same roscpp node, for
 mros_test/PersonalData and a 640x480 rgb8 sensor_msgs/Image, through a real
-rosmaster on a free loopback port.
+rosmaster on a free loopback port. With an mROS v1 checkout (MROS_V1_ROOT,
+default ../shared/mros_v1), a third column, for information: the real mROS
+v1 library on the PC target, built natively (bench/mros_v1_pc/app.cpp), for
+PersonalData at a fixed rate only (its sample memory pools hold at most 1 KiB
+a message, and by the code of its publish() an empty pool is not handled).
 
 Latency: messages at a fixed rate, send time (just before publish) to the
 roscpp subscriber's callback, CLOCK_MONOTONIC on both sides. Throughput:
@@ -23,8 +27,9 @@ import tempfile
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(REPO, 'tests'))
 
+import mros_v1_pc_evaluation  # noqa: E402
 import posix_builds  # noqa: E402
-from ros_processes import RosGraph, sourced_environment  # noqa: E402
+from ros_processes import RosGraph, free_port, sourced_environment  # noqa: E402
 
 # kind -> (latency: count, rate) and (throughput: count)
 WORKLOADS = {
@@ -42,13 +47,19 @@ def read_times(path):
     return times
 
 
-def run_once(graph, talker_argv, listener_argv, scratch, tag):
-    """Runs one talker -> listener transfer; returns (send, receive) times."""
+def run_once(graph, talker_argv, listener_argv, scratch, tag, talker_env=None):
+    """Runs one talker -> listener transfer; returns (send, receive) times.
+    The send times' file is the talker's last argument, or, with talker_env,
+    the value of its MROS_BENCH ("COUNT RATE FILE")."""
     send_path = os.path.join(scratch, tag + '.send')
     receive_path = os.path.join(scratch, tag + '.receive')
     listener = graph.start('bench_listener ' + tag, listener_argv + [receive_path])
     graph.wait_for_graph(subscribers=[('/bench', '/ros_bench_listener')])
-    talker = graph.start('bench_talker ' + tag, talker_argv + [send_path])
+    if talker_env is not None:
+        talker_env = dict(talker_env, MROS_BENCH='%s %s' % (talker_env['MROS_BENCH'], send_path))
+        talker = graph.start('bench_talker ' + tag, talker_argv, talker_env)
+    else:
+        talker = graph.start('bench_talker ' + tag, talker_argv + [send_path])
     talker.popen.wait(timeout=300)
     listener.popen.wait(timeout=60)
     assert talker.popen.returncode == 0, talker.output()
@@ -67,6 +78,19 @@ def latency_stats(send, receive):
 def throughput_stats(send, receive):
     span = (max(receive.values()) - min(send.values())) / 1e9
     return {'rate': len(receive) / span, 'delivered': len(receive) / float(len(send))}
+
+
+def measure_real_library(graph, workspace, program, scratch, round_index):
+    """The real mROS v1 library's talker, PersonalData at a fixed rate."""
+    count, rate = WORKLOADS['personal']['latency']
+    environment = {'ROS_IP': mros_v1_pc_evaluation.BOARD_IP,
+                   'MROS_V1_SLAVE_PORT': str(free_port()),
+                   'MROS_V1_PUBLISHER_PORT': str(free_port()),
+                   'MROS_BENCH': '%d %d' % (count, rate)}
+    send, receive = run_once(graph, [program],
+                             workspace.roscpp('bench_listener', 'personal', str(count), '3'),
+                             scratch, 'personal-mros_v1-latency-%d' % round_index, environment)
+    return latency_stats(send, receive)
 
 
 def measure(graph, workspace, firmware, kind, implementation, scratch, round_index):
@@ -109,12 +133,20 @@ def main():
     samples = {}
     with tempfile.TemporaryDirectory(prefix='posix_bench_') as scratch, \
             RosGraph(sourced_environment(workspace.setup_bash)) as graph:
+        real_library = None
+        if mros_v1_pc_evaluation.checkout_found():
+            real_library = mros_v1_pc_evaluation.build_app(
+                mros_v1_pc_evaluation.MROS_V1_ROOT, os.path.join(scratch, 'mros_v1'),
+                os.path.join(REPO, 'bench', 'mros_v1_pc', 'app.cpp'), target='native')
         for round_index in range(args.rounds):
             for kind in kinds:
                 for implementation in ('mros', 'roscpp'):
                     result = measure(graph, workspace, firmware, kind, implementation, scratch,
                                      round_index)
                     samples.setdefault((kind, implementation), []).append(result)
+                if real_library and kind == 'personal':
+                    samples.setdefault(('personal', 'mros_v1'), []).append(measure_real_library(
+                        graph, workspace, real_library, scratch, round_index))
     print_table(samples, kinds, args.rounds)
     return 0
 
@@ -128,15 +160,17 @@ def print_table(samples, kinds, rounds):
             ('delivered when flooding', 'flood_delivered', '%.3f', True)]
     print('\nmROS POSIX node -> roscpp node vs. roscpp node -> roscpp node '
           '(same machine, one run, median of %d alternating round(s))' % rounds)
-    print('| message | metric | mROS POSIX | roscpp | mROS/roscpp |')
-    print('|---|---|---:|---:|---:|')
+    print('| message | metric | mROS POSIX | roscpp | mROS/roscpp | real mROS v1 (PC target) |')
+    print('|---|---|---:|---:|---:|---:|')
     for kind in kinds:
         workload = WORKLOADS[kind]
         for label, key, fmt, _ in rows:
             mros = statistics.median(r[key] for r in samples[(kind, 'mros')])
             roscpp = statistics.median(r[key] for r in samples[(kind, 'roscpp')])
-            print('| %s | %s | %s | %s | %.2f |' % (workload['title'], label, fmt % mros,
-                                                     fmt % roscpp, mros / roscpp if roscpp else 0))
+            real = [r[key] for r in samples.get((kind, 'mros_v1'), []) if key in r]
+            print('| %s | %s | %s | %s | %.2f | %s |' % (
+                workload['title'], label, fmt % mros, fmt % roscpp,
+                mros / roscpp if roscpp else 0, fmt % statistics.median(real) if real else 'n/a'))
 
 
 if __name__ == '__main__':

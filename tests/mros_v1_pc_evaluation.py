@@ -71,16 +71,18 @@ class Board:
         return 'http://%s:%d/' % (BOARD_IP, self.slave_port)
 
 
-def build_app(mros_root, build_root):
-    """The evaluation app, with custom_pubsub's mros_config/ linked in (the
-    library's tasks and memory pools, as a new app takes them from a
-    sample), built for ARM Linux by genmros mros-v1-pc; returns the program."""
+def build_app(mros_root, build_root, source=None, target='arm'):
+    """The evaluation app (or another app.cpp, source, with its cfg), with
+    custom_pubsub's mros_config/ linked in (the library's tasks and memory
+    pools, as a new app takes them from a sample), built by genmros
+    mros-v1-pc for target; returns the program."""
     app = os.path.join(build_root, 'personal_data')
     os.makedirs(app, exist_ok=True)
     for name in os.listdir(APP_FIXTURE):
         link = os.path.join(app, name)
+        origin = source if name == 'app.cpp' and source else os.path.join(APP_FIXTURE, name)
         if not os.path.lexists(link):
-            os.symlink(os.path.join(APP_FIXTURE, name), link)
+            os.symlink(origin, link)
     config = os.path.join(app, 'mros_config')
     if not os.path.lexists(config):
         os.symlink(os.path.join(mros_root, 'mros_ws', 'custom_pubsub', 'mros_config'), config)
@@ -88,7 +90,7 @@ def build_app(mros_root, build_root):
     result = subprocess.run(
         [sys.executable, '-m', 'colcon_mros', 'mros-v1-pc', app, '--mros-root', mros_root,
          '--type', 'mros_test/PersonalData', '--msg-path', os.path.join(TEST_WS, 'src'),
-         '-o', output, '-j2'], cwd=REPO, capture_output=True, text=True)
+         '-o', output, '--target', target, '-j2'], cwd=REPO, capture_output=True, text=True)
     if result.returncode != 0:
         raise RuntimeError('genmros mros-v1-pc failed:\n' + result.stdout[-3000:]
                            + result.stderr[-3000:])
