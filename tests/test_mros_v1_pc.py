@@ -392,6 +392,31 @@ def test_limit_publisher_update_gets_no_response(ros_side, programs, tmp_path):
 
 # ---- bad input from outside: the PC target keeps running ----
 
+def serve_blue(hostile, board, extra_header, done):
+    """Accepts the library's connections to hostile (it may connect twice,
+    see the publisherUpdate limit), answers each with a TCPROS header (plus
+    extra_header fields) and sends good frames ("blue") on all of them every
+    half second until done(); returns the connections."""
+    connections = []
+    deadline = time.monotonic() + DELIVERY_TIMEOUT
+    while not done():
+        assert time.monotonic() < deadline, board.process.output()
+        try:
+            connection, header = hostile.accept(timeout=0.5)
+            assert header['md5sum'] == STRING_MD5
+            connection.sendall(encode_header(dict({
+                'callerid': '/hostile', 'md5sum': STRING_MD5, 'type': 'std_msgs/String',
+                'topic': '/test_string'}, **extra_header)))
+            connections.append(connection)
+        except socket.timeout:
+            pass
+        for connection in connections:
+            try:
+                connection.sendall(struct.pack('<I', 8) + b'\x04\x00\x00\x00blue')
+            except OSError:
+                pass
+    return connections
+
 @pytest.mark.parametrize('frame', [
     pytest.param(struct.pack('<I', 100) + b'\x04\x00\x00\x00red', id='cut-short'),
     pytest.param(struct.pack('<I', 0x7fffffff) + b'\x04\x00\x00\x00red', id='length-beyond'),
@@ -403,23 +428,8 @@ def test_a_frame_cut_short_or_oversized_leaves_the_app_running(ros_side, program
         board = Board(graph, programs['string_pubsub'], str(tmp_path))
         graph.wait_for_graph(subscribers=[('/test_string', '/mros_node2')])
         with HostilePublisher(graph, '/hostile', '/test_string', 'std_msgs/String') as hostile:
-            # The library may connect twice (see the publisherUpdate limit):
-            # every connection gets the header and the frames.
-            connections = []
-            deadline = time.monotonic() + DELIVERY_TIMEOUT
-            while 'I heard [blue]' not in board.process.output():
-                assert time.monotonic() < deadline, board.process.output()
-                try:
-                    connection, header = hostile.accept(timeout=0.5)
-                    assert header['md5sum'] == STRING_MD5
-                    connection.sendall(encode_header({
-                        'callerid': '/hostile', 'md5sum': STRING_MD5,
-                        'type': 'std_msgs/String', 'topic': '/test_string'}))
-                    connections.append(connection)
-                except socket.timeout:
-                    pass
-                for connection in connections:
-                    connection.sendall(struct.pack('<I', 8) + b'\x04\x00\x00\x00blue')
+            connections = serve_blue(hostile, board, {},
+                                     lambda: 'I heard [blue]' in board.process.output())
             for connection in connections:
                 connection.sendall(frame)
                 connection.close()
@@ -450,3 +460,19 @@ def test_a_master_that_goes_away_and_comes_back(ros_side, programs, tmp_path):
         publishers, subscribers = graph.system_state()
         assert '/mros_node' not in publishers.get('/mros_msg', set())
         assert '/mros_node2' not in subscribers.get('/test_string', set())
+
+
+def test_limit_a_long_header_from_a_publisher_overruns_the_library(ros_side, programs, tmp_path):
+    # The library reads a publisher's connection-header reply into a
+    # 512-byte buffer without a bound: 5000 bytes overwrite its own state,
+    # and it crashes (in mros_topic_connector_get_obj, on a pointer made of
+    # the header's bytes). The library's crash, not the PC target's.
+    with RosGraph(ros_side) as graph:
+        board = Board(graph, programs['string_pubsub'], str(tmp_path))
+        graph.wait_for_graph(subscribers=[('/test_string', '/mros_node2')])
+        with HostilePublisher(graph, '/hostile', '/test_string', 'std_msgs/String') as hostile:
+            serve_blue(hostile, board, {'message_definition': 'x' * 5000},
+                       lambda: not board.process.alive())
+        board.process.popen.wait(timeout=DELIVERY_TIMEOUT)
+        assert board.process.popen.returncode == -11, board.process.output()
+        assert 'I heard [blue]' not in board.process.output()
