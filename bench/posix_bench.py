@@ -29,7 +29,7 @@ sys.path.insert(0, os.path.join(REPO, 'tests'))
 
 import mros_v1_pc_evaluation  # noqa: E402
 import posix_builds  # noqa: E402
-from ros_processes import RosGraph, free_port, sourced_environment  # noqa: E402
+from ros_processes import RosGraph, sourced_environment  # noqa: E402
 
 # kind -> (latency: count, rate) and (throughput: count)
 WORKLOADS = {
@@ -83,10 +83,8 @@ def throughput_stats(send, receive):
 def measure_real_library(graph, workspace, program, scratch, round_index):
     """The real mROS v1 library's talker, PersonalData at a fixed rate."""
     count, rate = WORKLOADS['personal']['latency']
-    environment = {'ROS_IP': mros_v1_pc_evaluation.BOARD_IP,
-                   'MROS_V1_SLAVE_PORT': str(free_port()),
-                   'MROS_V1_PUBLISHER_PORT': str(free_port()),
-                   'MROS_BENCH': '%d %d' % (count, rate)}
+    environment = dict(mros_v1_pc_evaluation.board_environment(),
+                       MROS_BENCH='%d %d' % (count, rate))
     send, receive = run_once(graph, [program],
                              workspace.roscpp('bench_listener', 'personal', str(count), '3'),
                              scratch, 'personal-mros_v1-latency-%d' % round_index, environment)

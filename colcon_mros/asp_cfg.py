@@ -31,7 +31,7 @@ OBJECT_FIELDS = {
 }
 INITIALIZER_FIELDS = ('attr', 'exinf', 'routine')
 _API_CALL = re.compile(r'([A-Z][A-Z_]*)\s*\(')
-_IDENTIFIER = re.compile(r'[A-Za-z_]\w*\Z')
+IDENTIFIER = re.compile(r'[A-Za-z_]\w*\Z')
 
 
 class KernelObject:
@@ -179,7 +179,7 @@ class _Reader:
             self.read(self._resolve(arguments.strip(), path, line))
         elif api in OBJECT_FIELDS:
             parts = _split_top_level(arguments, path, line)
-            if len(parts) != 2 or not _IDENTIFIER.match(parts[0]):
+            if len(parts) != 2 or not IDENTIFIER.match(parts[0]):
                 raise GenmrosError('%s(ID, { ... }) expected' % api, path, line)
             values = _block(parts[1], path, line, api)
             if len(values) != len(OBJECT_FIELDS[api]):

@@ -16,7 +16,7 @@ import shutil
 import subprocess
 import sys
 
-from colcon_mros.asp_cfg import read_config, write_kernel_config
+from colcon_mros.asp_cfg import IDENTIFIER, read_config, write_kernel_config
 from colcon_mros.errors import GenmrosError
 from colcon_mros.installed_files import MAKE_FRAGMENT, PC_TARGET_MAKEFILE, installed_file
 
@@ -118,7 +118,7 @@ def check_tasks(app, config):
             text += stream.read()
     for kernel_object in config.objects:
         function = kernel_object.fields.get('task') or kernel_object.fields.get('handler')
-        if function is None or not re.match(r'[A-Za-z_]\w*\Z', function):
+        if function is None or not IDENTIFIER.match(function):
             continue
         if not re.search(r'\b%s\s*\([^;{)]*\)\s*\{' % re.escape(function), text):
             raise GenmrosError('%s runs %s(), which no source of the app defines (%s)'
@@ -152,7 +152,8 @@ def build(options):
         raise GenmrosError('no app.cfg: not an mROS v1 app', options.app_dir)
     app = App(app_dir, find_mros_root(app_dir, options.mros_root))
     check_tools(options.target)
-    pc_target = os.path.dirname(installed_file(PC_TARGET_MAKEFILE))
+    makefile = installed_file(PC_TARGET_MAKEFILE)
+    pc_target = os.path.dirname(makefile)
     # The library's mros.cfg is on the search path, as in ASP's own build.
     config = read_config(app.cfg, [os.path.join(app.mros_root, 'mros-lib'),
                                    os.path.join(pc_target, 'cfg', 'asp')])
@@ -177,7 +178,7 @@ def build(options):
             os.path.abspath(__file__))), genmros),
         'GENMROS_MK': installed_file(MAKE_FRAGMENT),
     }
-    command = ['make', '--no-print-directory', '-f', installed_file(PC_TARGET_MAKEFILE),
+    command = ['make', '--no-print-directory', '-f', makefile,
                '-j%d' % options.jobs] + ['%s=%s' % item for item in sorted(variables.items())]
     if subprocess.call(command) != 0:
         raise GenmrosError('building %s for the PC failed (see make\'s output above)' % app.name,

@@ -34,6 +34,13 @@ def checkout_found(root=MROS_V1_ROOT):
     return os.path.isfile(os.path.join(root, 'mros-lib', 'Makefile.m'))
 
 
+def board_environment():
+    """The environment of an app on the PC target beside this machine's ROS
+    nodes: its own address and free slave and publisher ports."""
+    return {'ROS_IP': BOARD_IP, 'MROS_V1_SLAVE_PORT': str(free_port()),
+            'MROS_V1_PUBLISHER_PORT': str(free_port())}
+
+
 class Board:
     """An app on the PC target in a ROS graph: its log, its pins."""
 
@@ -41,12 +48,11 @@ class Board:
         self.inputs = os.path.join(directory, 'inputs')
         self.outputs = os.path.join(directory, 'outputs')
         self.set_inputs(P6_0=1)
-        self.slave_port = free_port()
-        self.publisher_port = free_port()
-        self.process = graph.start(os.path.basename(program), list(runner) + [program], {
-            'ROS_IP': BOARD_IP, 'MROS_V1_SLAVE_PORT': str(self.slave_port),
-            'MROS_V1_PUBLISHER_PORT': str(self.publisher_port), 'MROS_PC_INPUTS': self.inputs,
-            'MROS_PC_OUTPUT_LOG': self.outputs})
+        environment = board_environment()
+        self.slave_port = int(environment['MROS_V1_SLAVE_PORT'])
+        environment.update(MROS_PC_INPUTS=self.inputs, MROS_PC_OUTPUT_LOG=self.outputs)
+        self.process = graph.start(os.path.basename(program), list(runner) + [program],
+                                   environment)
 
     def set_inputs(self, **pins):
         with open(self.inputs + '.new', 'w') as stream:

@@ -152,20 +152,28 @@ class RawSubscriber:
         self.connection.close()
 
 
+def in_devel_space(environment, code):
+    """What Python code writes to stdout, run in the sample's devel space."""
+    return subprocess.run([sys.executable, '-c', textwrap.dedent(code)], env=environment,
+                          capture_output=True, text=True, check=True).stdout
+
+
 def genpy_bytes(environment, statement):
-    """genpy's serialization of the message `statement` builds, in the
-    sample's devel space."""
-    code = textwrap.dedent('''
+    """genpy's serialization of the message `statement` builds."""
+    return bytes.fromhex(in_devel_space(environment, '''
         import io, sys
         from std_msgs.msg import String
         from custom_pubsub.msg import UserTypeTest, PersonName, LEDValues
         buffer = io.BytesIO()
         (%s).serialize(buffer)
         sys.stdout.write(buffer.getvalue().hex())
-    ''') % statement
-    result = subprocess.run([sys.executable, '-c', code], env=environment, capture_output=True,
-                            text=True, check=True)
-    return bytes.fromhex(result.stdout)
+    ''' % statement))
+
+
+def raw_md5(environment, name):
+    """The MD5 sum of custom_pubsub's type name, as genpy has it."""
+    return in_devel_space(environment, 'import custom_pubsub.msg as m, sys; '
+                                       'sys.stdout.write(m.%s._md5sum)' % name)
 
 
 def test_string_pubsub_publishes_to_roscpp_rospy_byte_equal_to_genpy(ros_side, programs, tmp_path):
@@ -316,12 +324,6 @@ def test_paper_evaluation_on_the_real_library(ros_workspace, evaluation_app, tmp
         'rospy talker -> mROS', 'roscpp talker -> mROS']
     for direction in directions:
         assert direction.problem is None, direction.summary()
-
-
-def raw_md5(environment, name):
-    code = 'import custom_pubsub.msg as m, sys; sys.stdout.write(m.%s._md5sum)' % name
-    return subprocess.run([sys.executable, '-c', code], env=environment, capture_output=True,
-                          text=True, check=True).stdout
 
 
 # ---- the library's own limits, as it behaves today (see the README) ----

@@ -280,16 +280,21 @@ ER act_tsk(ID tskid) {
 
 ER iact_tsk(ID tskid) { return act_tsk(tskid); }
 
-ER_UINT can_act(ID tskid) {
+/* can_act and can_wup: the task's queued requests of one kind, cleared. */
+static ER_UINT cancel_requests(ID tskid, int wakeups) {
   struct tcb *task;
+  unsigned *requests;
   ER_UINT count;
   enter();
   task = task_of(tskid);
   if (task == NULL) return leave(E_ID);
-  count = (ER_UINT)task->activation_requests;
-  task->activation_requests = 0;
+  requests = wakeups ? &task->wakeup_requests : &task->activation_requests;
+  count = (ER_UINT)*requests;
+  *requests = 0;
   return leave(count);
 }
+
+ER_UINT can_act(ID tskid) { return cancel_requests(tskid, 0); }
 
 ER ext_tsk(void) {
   struct tcb *self = current;
@@ -395,16 +400,7 @@ ER wup_tsk(ID tskid) {
 
 ER iwup_tsk(ID tskid) { return wup_tsk(tskid); }
 
-ER_UINT can_wup(ID tskid) {
-  struct tcb *task;
-  ER_UINT count;
-  enter();
-  task = task_of(tskid);
-  if (task == NULL) return leave(E_ID);
-  count = (ER_UINT)task->wakeup_requests;
-  task->wakeup_requests = 0;
-  return leave(count);
-}
+ER_UINT can_wup(ID tskid) { return cancel_requests(tskid, 1); }
 
 ER dly_tsk(RELTIM dlytim) {
   struct tcb *self = current;

@@ -31,17 +31,23 @@ bool input_poller_started = false;
 
 bool valid(PinName pin) { return pin >= 0 && pin < kPinCount; }
 
+pthread_once_t output_log_opened = PTHREAD_ONCE_INIT;
+int output_log = STDERR_FILENO;
+
+void open_output_log() {
+  const char *path = getenv("MROS_PC_OUTPUT_LOG");
+  if (path != NULL && path[0] != '\0') output_log = open(path, O_WRONLY | O_APPEND | O_CREAT, 0644);
+}
+
+// One line a change, written whole (O_APPEND), so a test can read it as it comes.
 void log_output(PinName pin, const char *value) {
   char line[64];
-  const char *path = getenv("MROS_PC_OUTPUT_LOG");
   int length = snprintf(line, sizeof line, "P%d_%d %s\n", pin / 16, pin % 16, value);
-  int fd = path != NULL && path[0] != '\0' ? open(path, O_WRONLY | O_APPEND | O_CREAT, 0644)
-                                           : STDERR_FILENO;
-  if (fd < 0) return;
-  if (write(fd, line, static_cast<size_t>(length)) < 0) {
+  pthread_once(&output_log_opened, open_output_log);
+  if (output_log < 0) return;
+  if (write(output_log, line, static_cast<size_t>(length)) < 0) {
     // An output nobody can read is not the app's problem.
   }
-  if (fd != STDERR_FILENO) close(fd);
 }
 
 // "P6_0 1" or "P6_0=1": the pin number, or -1.
