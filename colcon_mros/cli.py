@@ -88,6 +88,15 @@ def _add_export(subparsers):
     parser.add_argument('--only', choices=EXPORT_PARTS[1:],
                         help='write only the headers, or only the per-firmware aggregates')
     parser.add_argument('-e', dest='template_dir', help='template directory to use instead of ours')
+    _add_header_arguments(parser)
+    parser.add_argument('--depfile', metavar='FILE',
+                        help='also write FILE, a make rule naming every .msg/.srv file and '
+                             'options file the headers come from')
+    parser.set_defaults(run=_export)
+
+
+def _add_header_arguments(parser):
+    """What the headers hold: storage, bounds, definition text."""
     parser.add_argument('--storage', choices=STORAGE_KINDS, default='heap',
                         help='strings and variable arrays as std::string/std::vector (heap, '
                              'default) or held in the message with maxima from options files '
@@ -102,10 +111,6 @@ def _add_export(subparsers):
                              'what roscpp sends as message_definition) or the same declarations '
                              'without comments and blank lines (compact: less flash; the MD5 '
                              'sum and what ROS tools decode from the text are the same)')
-    parser.add_argument('--depfile', metavar='FILE',
-                        help='also write FILE, a make rule naming every .msg/.srv file and '
-                             'options file the headers come from')
-    parser.set_defaults(run=_export)
 
 
 def _add_printers(subparsers):
@@ -167,8 +172,7 @@ def _add_mros_v1_pc(subparsers):
                         metavar='DIR', help='where packages are: source trees or installed '
                                             "prefixes (default: app.json's catkin_ws_dir and "
                                             'the ROS environment)')
-    parser.add_argument('--definition-text', choices=DEFINITION_TEXTS, default='full',
-                        help='the definition text of the headers (see genmros export --help)')
+    _add_header_arguments(parser)
     parser.add_argument('-j', dest='jobs', type=int, default=os.cpu_count() or 1,
                         help='parallel make jobs (default: the number of CPUs)')
     parser.add_argument('--run', dest='run_program', action='store_true',

@@ -174,6 +174,8 @@ def build(options):
         'MROS_MSG_TYPES': ' '.join(types),
         'MROS_MSG_PATHS': ' '.join(options.msg_paths or paths),
         'MROS_MSG_DEFINITION_TEXT': options.definition_text,
+        'MROS_MSG_FLAGS': ' '.join(['--storage', options.storage] + [
+            '--options %s' % os.path.abspath(path) for path in options.option_files]),
         'GENMROS': 'env PYTHONPATH=%s %s' % (os.path.dirname(os.path.dirname(
             os.path.abspath(__file__))), genmros),
         'GENMROS_MK': installed_file(MAKE_FRAGMENT),

@@ -12,7 +12,8 @@
 #   TARGET        arm: 32-bit ARM Linux (the board's ISA, static, run with
 #                 qemu-arm); native: this PC
 #   BUILD         the output directory
-#   MROS_MSG_TYPES, MROS_MSG_PATHS, GENMROS, GENMROS_MK: the message headers,
+#   MROS_MSG_TYPES, MROS_MSG_PATHS, MROS_MSG_DEFINITION_TEXT, MROS_MSG_FLAGS,
+#   GENMROS, GENMROS_MK: the message headers,
 #                 written into $(BUILD)/include by genmros' make fragment
 #
 # The library's own Makefile.m lists its sources and include directories.

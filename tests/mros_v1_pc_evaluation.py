@@ -1,7 +1,7 @@
 """The real mROS v1 library on the PC target, shared by its tests and the
 evaluation script: where the checkout is, an app running in a ROS graph
 (Board), and the paper's evaluation (section 6.2) as an mROS v1 app
-(tests/fixtures/mros_v1_pc_app) with the same directions and checks as the
+(tests/fixtures/mros_v1_pc_app/personal_data.cpp) with the same directions and checks as the
 POSIX runtime's, plus on-board delivery.
 
 The library ignores publishers at its own address, and roscpp with a
@@ -44,10 +44,10 @@ def board_environment():
 class Board:
     """An app on the PC target in a ROS graph: its log, its pins."""
 
-    def __init__(self, graph, program, directory, runner=('qemu-arm',)):
+    def __init__(self, graph, program, directory, runner=('qemu-arm',), inputs=None):
         self.inputs = os.path.join(directory, 'inputs')
         self.outputs = os.path.join(directory, 'outputs')
-        self.set_inputs(P6_0=1)
+        self.set_inputs(**(inputs or {'P6_0': 1}))
         environment = board_environment()
         self.slave_port = int(environment['MROS_V1_SLAVE_PORT'])
         environment.update(MROS_PC_INPUTS=self.inputs, MROS_PC_OUTPUT_LOG=self.outputs)
@@ -77,30 +77,32 @@ class Board:
         return 'http://%s:%d/' % (BOARD_IP, self.slave_port)
 
 
-def build_app(mros_root, build_root, source=None, target='arm'):
-    """The evaluation app (or another app.cpp, source, with its cfg), with
+def build_app(mros_root, build_root, source='personal_data.cpp', target='arm',
+              types=('mros_test/PersonalData',), header_flags=()):
+    """A test app: source (a name in tests/fixtures/mros_v1_pc_app, or a
+    path) as its app.cpp beside that dir's Makefile, app.cfg and app.h, with
     custom_pubsub's mros_config/ linked in (the library's tasks and memory
     pools, as a new app takes them from a sample), built by genmros
-    mros-v1-pc for target; returns the program."""
-    app = os.path.join(build_root, 'personal_data')
+    mros-v1-pc for target with the headers of types (header_flags: more
+    options of mros-v1-pc, such as --storage); returns the program."""
+    app = os.path.join(build_root, 'app')
     os.makedirs(app, exist_ok=True)
-    for name in os.listdir(APP_FIXTURE):
-        link = os.path.join(app, name)
-        origin = source if name == 'app.cpp' and source else os.path.join(APP_FIXTURE, name)
-        if not os.path.lexists(link):
-            os.symlink(origin, link)
-    config = os.path.join(app, 'mros_config')
-    if not os.path.lexists(config):
-        os.symlink(os.path.join(mros_root, 'mros_ws', 'custom_pubsub', 'mros_config'), config)
+    links = {name: os.path.join(APP_FIXTURE, name) for name in ('Makefile', 'app.cfg', 'app.h')}
+    links['app.cpp'] = os.path.join(APP_FIXTURE, source)
+    links['mros_config'] = os.path.join(mros_root, 'mros_ws', 'custom_pubsub', 'mros_config')
+    for name, origin in links.items():
+        if not os.path.lexists(os.path.join(app, name)):
+            os.symlink(origin, os.path.join(app, name))
     output = os.path.join(build_root, 'build')
+    type_args = [argument for name in types for argument in ('--type', name)]
     result = subprocess.run(
         [sys.executable, '-m', 'colcon_mros', 'mros-v1-pc', app, '--mros-root', mros_root,
-         '--type', 'mros_test/PersonalData', '--msg-path', os.path.join(TEST_WS, 'src'),
-         '-o', output, '--target', target, '-j2'], cwd=REPO, capture_output=True, text=True)
+         '--msg-path', os.path.join(TEST_WS, 'src'), '-o', output, '--target', target, '-j2']
+        + type_args + list(header_flags), cwd=REPO, capture_output=True, text=True)
     if result.returncode != 0:
         raise RuntimeError('genmros mros-v1-pc failed:\n' + result.stdout[-3000:]
                            + result.stderr[-3000:])
-    return os.path.join(output, 'personal_data')
+    return os.path.join(output, 'test_app')
 
 
 def _direction(title, name, age, first_score, received, count):

@@ -2,11 +2,16 @@
 byte by byte, so a test can send what real ROS nodes never send (truncated
 bodies, oversized lengths, broken headers, a foreign MD5 sum) to an mROS
 node and check that the node closes that connection and keeps working.
-HostilePublisher registers at the real master like any ROS publisher."""
+HostilePublisher registers at the real master like any ROS publisher;
+RawSubscriber asks a node's slave API for a topic and keeps the bytes. Neither
+sends a message_definition (a subscriber need not, and the mROS v1 library
+cannot take a long connection header)."""
 
 import socket
 import struct
 import threading
+import time
+import xmlrpc.client
 import xmlrpc.server
 
 
@@ -99,3 +104,35 @@ class HostilePublisher:
         connection, _ = self.listener.accept()
         connection.settimeout(timeout)
         return connection, read_header(connection)
+
+
+class RawSubscriber:
+    """A TCPROS subscriber that keeps the bytes: asks the publishing node's
+    slave (slave_uri) for the topic until it answers within timeout,
+    connects, sends its header (with extra_fields) and reads the reply
+    header and whole frames."""
+
+    def __init__(self, slave_uri, topic, message_type, md5sum, timeout=30.0, extra_fields=None):
+        deadline = time.monotonic() + timeout
+        while True:
+            try:
+                code, message, protocol = xmlrpc.client.ServerProxy(slave_uri).requestTopic(
+                    '/raw_subscriber', topic, [['TCPROS']])
+                if code == 1:
+                    break
+            except OSError:
+                message = 'slave not up'
+            assert time.monotonic() < deadline, 'requestTopic %s: %s' % (topic, message)
+            time.sleep(0.5)
+        self.connection = socket.create_connection((protocol[1], protocol[2]), timeout=timeout)
+        self.connection.sendall(encode_header(dict({
+            'callerid': '/raw_subscriber', 'topic': topic, 'type': message_type,
+            'md5sum': md5sum, 'tcp_nodelay': '1'}, **(extra_fields or {}))))
+        self.header = read_header(self.connection)
+
+    def next_body(self):
+        (length,) = struct.unpack('<I', receive_exactly(self.connection, 4))
+        return receive_exactly(self.connection, length)
+
+    def close(self):
+        self.connection.close()

@@ -33,7 +33,7 @@ from conftest import run_genmros
 from fixtures.build_integration.tools import run
 from mros_v1_pc_evaluation import BOARD_IP, DELIVERY_TIMEOUT, MROS_V1_ROOT, PEER_IP, Board
 from ros_processes import RosGraph, sourced_environment
-from tcpros_peer import HostilePublisher, encode_header, read_header, receive_exactly
+from tcpros_peer import HostilePublisher, RawSubscriber, encode_header
 
 pytestmark = pytest.mark.skipif(
     not os.path.isfile(os.path.join(MROS_V1_ROOT, 'mros-lib', 'Makefile.m')),
@@ -122,36 +122,6 @@ def rospy_script(graph, name, code, ros_ip=PEER_IP):
     return graph.start(name, [sys.executable, '-c', script], {'ROS_IP': ros_ip})
 
 
-class RawSubscriber:
-    """A TCPROS subscriber that keeps the bytes: asks the app's slave for the
-    topic, connects, and reads the reply header and whole frames."""
-
-    def __init__(self, board, topic, message_type, md5sum):
-        deadline = time.monotonic() + DELIVERY_TIMEOUT
-        while True:
-            try:
-                code, message, protocol = xmlrpc.client.ServerProxy(board.slave_uri).requestTopic(
-                    '/raw_subscriber', topic, [['TCPROS']])
-                if code == 1:
-                    break
-            except OSError:
-                message = 'slave not up'
-            assert time.monotonic() < deadline, 'requestTopic %s: %s' % (topic, message)
-            time.sleep(0.5)
-        self.connection = socket.create_connection((protocol[1], protocol[2]), timeout=DELIVERY_TIMEOUT)
-        self.connection.sendall(encode_header({
-            'callerid': '/raw_subscriber', 'topic': topic, 'type': message_type,
-            'md5sum': md5sum, 'tcp_nodelay': '1'}))
-        self.header = read_header(self.connection)
-
-    def next_body(self):
-        (length,) = struct.unpack('<I', receive_exactly(self.connection, 4))
-        return receive_exactly(self.connection, length)
-
-    def close(self):
-        self.connection.close()
-
-
 def in_devel_space(environment, code):
     """What Python code writes to stdout, run in the sample's devel space."""
     return subprocess.run([sys.executable, '-c', textwrap.dedent(code)], env=environment,
@@ -191,7 +161,7 @@ def test_string_pubsub_publishes_to_roscpp_rospy_byte_equal_to_genpy(ros_side, p
         ''')
         graph.wait_for_graph(subscribers=[('/mros_msg', '/ultrasonic_subscriber'),
                                           ('/mros_msg', '/rospy_listener')])
-        raw = RawSubscriber(board, '/mros_msg', 'std_msgs/String', STRING_MD5)
+        raw = RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5)
         # An echo pulse of 100 ms on the ultrasonic sensor's pin (InterruptIn
         # rise and fall), then the user button pressed and released: the
         # app starts publishing the distance once a second.
@@ -277,7 +247,7 @@ def test_custom_pubsub_round_trip_with_the_samples_roscpp_nodes_and_rospy(ros_si
         board.process.wait_for(r'recieved name: Dizzy Gillespie', timeout=DELIVERY_TIMEOUT)
         expected = genpy_bytes(ros_side, 'UserTypeTest(ledVal=LEDValues(0.125, 0.375, 0.625), '
                                          "nameVal=PersonName('Dizzy', 'Gillespie'))")
-        raw = RawSubscriber(board, '/mros_msg', 'custom_pubsub/UserTypeTest',
+        raw = RawSubscriber(board.slave_uri, '/mros_msg', 'custom_pubsub/UserTypeTest',
                             raw_md5(ros_side, 'UserTypeTest'))
         try:
             assert raw.next_body() == expected
@@ -359,7 +329,7 @@ def test_limit_no_message_definition_and_no_data_for_anymsg(ros_side, programs, 
         board = Board(graph, programs['custom_pubsub'], str(tmp_path))
         board.process.wait_for(r'pub accepted|mROS Main task finish', timeout=DELIVERY_TIMEOUT)
         md5 = raw_md5(ros_side, 'UserTypeTest')
-        raw = RawSubscriber(board, '/mros_msg', 'custom_pubsub/UserTypeTest', md5)
+        raw = RawSubscriber(board.slave_uri, '/mros_msg', 'custom_pubsub/UserTypeTest', md5)
         try:
             assert raw.header['type'] == 'custom_pubsub/UserTypeTest'
             assert raw.header['md5sum'] == md5
@@ -439,7 +409,7 @@ def test_a_frame_cut_short_or_oversized_leaves_the_app_running(ros_side, program
         assert board.process.alive(), board.process.output()
         assert 'I heard [red]' not in board.process.output()
         # The app still serves: a subscriber gets its publisher's header.
-        raw = RawSubscriber(board, '/mros_msg', 'std_msgs/String', STRING_MD5)
+        raw = RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5)
         raw.close()
         assert raw.header['md5sum'] == STRING_MD5
 

@@ -1,0 +1,221 @@
+"""Every message type of test_ws through the real mROS v1 library (issue 14):
+the aggregates (callCallback, getMD5Sum, the explicit instantiations) for
+all of them in one app, with both storage kinds, on the library's wire and
+on-board paths.
+
+The app (tests/fixtures/mros_v1_pc_app/type_relay.cpp, in mROS v1 style)
+relays src/<Type> to mid/<Type>, which only the board subscribes to, and
+from there to back/<Type>: every sample of message_samples.py crosses
+deserialize (from the wire), memCopy and deserialize (on the board) and
+serialize (to the wire), and must come back byte-equal to genpy's bytes.
+The library's subscription and publication slots (10 each in
+custom_pubsub's mros_config) hold two types at a time: the board's switches
+P6_0 and P6_1 pick the group.
+
+The library reads a peer's TCPROS connection header into a 512-byte buffer
+without a bound, and rospy and roscpp send the type's whole definition text
+in theirs, so with real ROS nodes only short types work. The byte-exact
+tests therefore use raw TCPROS peers (no message_definition); rospy's own
+round trip runs on a copy of the library with the two buffer sizes raised,
+the README's workaround; and the crash with the unchanged sizes is pinned.
+"""
+
+import json
+import os
+import re
+import select
+import shutil
+import signal
+import socket
+import subprocess
+import time
+
+import pytest
+
+import mros_v1_pc_evaluation
+from mros_v1_pc_evaluation import DELIVERY_TIMEOUT, MROS_V1_ROOT, PEER_IP, Board
+from ros_processes import RosGraph, sourced_environment
+from tcpros_peer import HostilePublisher, RawSubscriber, encode_header, frame
+
+pytestmark = pytest.mark.skipif(
+    not mros_v1_pc_evaluation.checkout_found(),
+    reason='no mROS v1 checkout at %s (set MROS_V1_ROOT)' % MROS_V1_ROOT)
+
+# The app's groups, in the order of its switch statement.
+GROUPS = [['PersonalData', 'BuiltinTypes'], ['ArrayTypes', 'NestedTypes'], ['Constants', 'Empty'],
+          ['Header']]
+TYPES = ['mros_test/%s' % name for group in GROUPS[:3] for name in group] + ['std_msgs/Header']
+# Room for every sample of message_samples.py.
+BOUNDS = '* max_size:48 max_count:6\n'
+# The library's connection-header buffers and the size the workaround gives
+# them (NestedTypes' definition text alone is 3.7 KB).
+PACKET_CONFIG = os.path.join('mros-lib', 'mros-src', 'packet', 'cimpl', 'version', 'kinetic',
+                             'mros_packet_config.h')
+HEADER_BUFFERS = re.compile(r'(#define MROS_PACKET_MAXSIZE_(?:REQ|RES)_TCPROS\s+)512\b')
+RAISED_HEADER_BUFFER = 8192
+# The library writes its reply header into the buffer the request came in,
+# sized to the request (the AnyMsg limit, see test_mros_v1_pc.py): a raw
+# subscriber's header must be as long as the reply. rospy's and roscpp's
+# are, with their definition texts; this field, ignored by TCPROS, is.
+REPLY_ROOM = {'padding': '.' * 200}
+
+SAMPLES_CODE = '''
+import io, json, sys
+sys.path.insert(0, sys.argv[1])
+from message_samples import samples
+
+def wire(message):
+    buffer = io.BytesIO()
+    message.serialize(buffer)
+    return buffer.getvalue().hex()
+
+print(json.dumps({name: [messages[0]._type, messages[0]._md5sum, [wire(m) for m in messages]]
+                  for name, messages in samples().items()}))
+'''
+
+
+@pytest.fixture(scope='module')
+def genpy_samples(ros_workspace):
+    """{name: (type, MD5 sum, [genpy's bytes of each sample])}."""
+    output = subprocess.run(['/usr/bin/python3', '-c', SAMPLES_CODE, ros_workspace.scripts],
+                            env=sourced_environment(ros_workspace.setup_bash), check=True,
+                            capture_output=True, text=True).stdout
+    return {name: (datatype, md5sum, [bytes.fromhex(sample) for sample in samples])
+            for name, (datatype, md5sum, samples) in json.loads(output).items()}
+
+
+def build_relay(mros_root, build_root, storage='heap'):
+    flags = ['--storage', storage]
+    if storage == 'bounded':
+        options = build_root / 'bounds.options'
+        options.write_text(BOUNDS)
+        flags += ['--options', str(options)]
+    program = mros_v1_pc_evaluation.build_app(mros_root, str(build_root), 'type_relay.cpp',
+                                              types=TYPES, header_flags=flags)
+    header = (build_root / 'build' / 'include' / 'mros_test' / 'PersonalData.h').read_text()
+    assert ('mros::bounded_string<48> first_name;' if storage == 'bounded'
+            else 'std::string first_name;') in header
+    return program
+
+
+@pytest.fixture(scope='module', params=['heap', 'bounded'])
+def relay_program(request, tmp_path_factory):
+    return build_relay(MROS_V1_ROOT, tmp_path_factory.mktemp('relay_' + request.param),
+                       request.param)
+
+
+def start_relay(graph, program, directory, group):
+    board = Board(graph, program, directory, inputs={'P6_0': group & 1, 'P6_1': group >> 1})
+    board.process.wait_for('relay ready', timeout=DELIVERY_TIMEOUT)
+    return board
+
+
+def relay_through_board(graph, board, name, datatype, md5sum, samples):
+    """Publishes each sample on src/name from a raw publisher, again every
+    0.3 s until something comes back on back/name; returns what came back
+    for each sample (the relay's queues hold one message and may drop)."""
+    returned = []
+    with HostilePublisher(graph, '/raw_publisher_' + name.lower(), '/src/' + name,
+                          datatype) as publisher:
+        back = RawSubscriber(board.slave_uri, '/back/' + name, datatype, md5sum,
+                             extra_fields=REPLY_ROOM)
+        assert back.header['md5sum'] == md5sum and back.header['type'] == datatype
+        # The library may connect twice (it never answers publisherUpdate).
+        connections = []
+        for sample in samples:
+            deadline = time.monotonic() + DELIVERY_TIMEOUT
+            while True:
+                assert time.monotonic() < deadline, 'sample %d of %s did not come back:\n%s' % (
+                    len(returned), name, board.process.output())
+                try:
+                    connection, header = publisher.accept(timeout=0.05)
+                    assert header['md5sum'] == md5sum, header
+                    connection.sendall(encode_header({'callerid': publisher.node_name,
+                                                      'md5sum': md5sum, 'type': datatype,
+                                                      'topic': publisher.topic}))
+                    connections.append(connection)
+                except socket.timeout:
+                    pass
+                for connection in connections:
+                    connection.sendall(frame(sample))
+                if select.select([back.connection], [], [], 0.3)[0]:
+                    body = back.next_body()
+                    if body == sample or body not in samples[:len(returned)]:
+                        returned.append(body)
+                        break
+        back.close()
+        for connection in connections:
+            connection.close()
+    return returned
+
+
+@pytest.mark.parametrize('group', range(len(GROUPS)), ids=['-'.join(g) for g in GROUPS])
+def test_every_type_through_the_board_comes_back_byte_equal_to_genpy(
+        ros_workspace, genpy_samples, relay_program, group, tmp_path):
+    with RosGraph(sourced_environment(ros_workspace.setup_bash)) as graph:
+        board = start_relay(graph, relay_program, str(tmp_path), group)
+        for name in GROUPS[group]:
+            datatype, md5sum, samples = genpy_samples[name]
+            assert relay_through_board(graph, board, name, datatype, md5sum, samples) == samples
+        assert board.process.alive(), board.process.output()
+
+
+@pytest.fixture(scope='module')
+def raised_buffers_root(tmp_path_factory):
+    """A copy of the library (mros-lib and custom_pubsub's mros_config) whose
+    connection-header buffers are raised as the README says."""
+    root = tmp_path_factory.mktemp('mros_v1_raised')
+    shutil.copytree(os.path.join(MROS_V1_ROOT, 'mros-lib'), str(root / 'mros-lib'))
+    config = os.path.join('mros_ws', 'custom_pubsub', 'mros_config')
+    shutil.copytree(os.path.join(MROS_V1_ROOT, config), str(root / config))
+    path = root / PACKET_CONFIG
+    text, count = HEADER_BUFFERS.subn(r'\g<1>%d' % RAISED_HEADER_BUFFER, path.read_text())
+    assert count == 2, 'the header buffer sizes are not where the README says'
+    path.write_text(text)
+    return str(root)
+
+
+@pytest.fixture(scope='module')
+def raised_buffers_relay(raised_buffers_root, tmp_path_factory):
+    return build_relay(raised_buffers_root, tmp_path_factory.mktemp('relay_raised'))
+
+
+@pytest.mark.parametrize('group', range(len(GROUPS)), ids=['-'.join(g) for g in GROUPS])
+def test_with_raised_header_buffers_rospy_round_trips_every_type(
+        ros_workspace, raised_buffers_relay, group, tmp_path):
+    names = GROUPS[group]
+    with RosGraph(sourced_environment(ros_workspace.setup_bash)) as graph:
+        board = start_relay(graph, raised_buffers_relay, str(tmp_path), group)
+        check = graph.start('roundtrip_check', ros_workspace.rospy(
+            'roundtrip_check.py', '/src', '/back', '--types', ','.join(names),
+            '--timeout', str(DELIVERY_TIMEOUT)), {'ROS_IP': PEER_IP})
+        check.popen.wait(timeout=DELIVERY_TIMEOUT * (1 + len(names)))
+        assert check.popen.returncode == 0, check.output() + '\n' + board.process.output()
+        for name in names:
+            check.wait_for(r'^PASS %s: \d+ samples' % name, timeout=0)
+        assert board.process.alive(), board.process.output()
+
+
+def test_limit_a_subscriber_header_over_512_bytes_overruns_the_library(
+        ros_workspace, genpy_samples, relay_program, tmp_path):
+    # rospy's header for Constants carries its 554-byte definition text.
+    with RosGraph(sourced_environment(ros_workspace.setup_bash)) as graph:
+        board = start_relay(graph, relay_program, str(tmp_path), 2)
+        datatype, md5sum, _ = genpy_samples['Constants']
+        RawSubscriber(board.slave_uri, '/back/Constants', datatype, md5sum,
+                      extra_fields=REPLY_ROOM).close()
+        graph.start('rospy subscriber', ['/usr/bin/python3', '-c', (
+            'import rospy; from mros_test.msg import Constants; '
+            'rospy.init_node("long_header"); '
+            'rospy.Subscriber("/back/Constants", Constants, lambda m: None); rospy.spin()')],
+            {'ROS_IP': PEER_IP})
+        board.process.wait_for('pub accepted', timeout=DELIVERY_TIMEOUT,
+                               start=len(board.process.lines()))
+        # The overrun lands in the slave's packet: its next request kills it.
+        try:
+            RawSubscriber(board.slave_uri, '/back/Constants', datatype, md5sum, timeout=5,
+                          extra_fields=REPLY_ROOM).close()
+        except (AssertionError, OSError):
+            pass
+        board.process.popen.wait(timeout=DELIVERY_TIMEOUT)
+        assert board.process.popen.returncode == -signal.SIGSEGV, board.process.output()
