@@ -16,8 +16,8 @@ alternating order. The table shows medians of wall time and of CPU time
 (user + system of every process the build ran; less sensitive to other load
 on the machine), and, for the enabled builds, how many genmros processes
 the build started and the CPU seconds they took (genmros runs through a
-wrapper that counts them). Last, the start-up of genmros' two catkin
-subcommands: the modules each imports (python3 -X importtime).
+wrapper that counts them). Last, the start-up of genmros' catkin run: the
+modules it imports (python3 -X importtime).
 
     /usr/bin/python3 bench/build_overhead.py [--runs 3] [--tools catkin_make,catkin_build,colcon]
                                              [--keep DIR]
@@ -207,7 +207,7 @@ def print_table(rows):
 
 
 def print_start_up(workspace):
-    """The modules genmros' catkin subcommands import, as -X importtime sees them."""
+    """The modules genmros' catkin run imports, as -X importtime sees them."""
     package = os.path.join(workspace, 'src', 'bench_msgs_01')
     files = sorted(os.path.join(package, 'msg', name) for name in os.listdir(os.path.join(package, 'msg')))
     scratch = os.path.join(workspace, 'start_up')
@@ -215,11 +215,9 @@ def print_start_up(workspace):
                      '-I', 'bench_msgs_00:%s' % os.path.join(workspace, 'src', 'bench_msgs_00', 'msg'),
                      '-I', 'std_msgs:/usr/share/std_msgs/msg', '-I', 'geometry_msgs:/usr/share/geometry_msgs/msg']
     commands = {
-        'catkin-package (configure, once per package)': [
-            'catkin-package', '-p', 'bench_msgs_01', '-o', os.path.join(scratch, 'bench_msgs_01'),
-            '--cmake-file', os.path.join(scratch, 'outputs.cmake')] + files,
-        'generator run (build, once per package)': files + [
-            '-p', 'bench_msgs_01', '-o', os.path.join(scratch, 'bench_msgs_01')] + include_flags,
+        'generator run (build, once per package; none at configure)': files + [
+            '-p', 'bench_msgs_01', '-o', os.path.join(scratch, 'bench_msgs_01'),
+            '--all-of-package'] + include_flags,
     }
     print('\ngenmros start-up (python3 -X importtime; total import time and the largest imports):')
     for name, arguments in commands.items():

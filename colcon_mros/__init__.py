@@ -13,10 +13,10 @@ The package is laid out along the generation pipeline:
   with ``aggregates`` (msg_max_size.h's report)
 - ``output``: write generated files atomically
 - ``workspace``: find packages and their message directories
-- ``generate``: generator mode, one .msg/.srv file (what catkin runs)
+- ``generate``: generator mode, a package's .msg/.srv files (what catkin runs)
 - ``export``: the export of a firmware's types (``ExportRequest``)
 - ``export_dir``: the export dir of catkin and colcon, its only owner
-- ``catkin_package``: what catkin's configure step asks per package
+- ``catkin_export``: what catkin's configure step asks with MROS_EXPORT_DIR
 - ``cli``: the ``genmros`` command, with ``defaults`` (its choices),
   ``ros_environment`` (genmsg and empy present?) and ``installed_files``
   (where the CMake module and make fragment are)

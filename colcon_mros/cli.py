@@ -22,7 +22,7 @@ Generate mROS message headers from ROS 1 .msg and .srv files.
 Generator mode, with gencpp's arguments and one or more files of a package
 (catkin runs it once per package, with all its files):
   genmros FILE.msg|FILE.srv -p PKG -o OUTDIR [-I PKG:DIR ...] [-e TEMPLATE_DIR]
-          [--export-dir DIR] [--stamp FILE ...]
+          [--export-dir DIR] [--stamp FILE ...] [--all-of-package]
 
 Export mode, what one firmware needs:
   genmros export [--workspace WS ...] [--package PKG ...] [--type PKG/TYPE ...] -o DIR ...
@@ -51,6 +51,9 @@ def _add_generate(subparsers):
                         help='a file that marks the run as done (repeatable): only the files '
                              'whose definitions changed since the stamps were written are '
                              'generated again (catkin gives one per package)')
+    parser.add_argument('--all-of-package', action='store_true',
+                        help='FILE... are all the definitions the package has: the headers (and '
+                             'export dir claims) of any other, removed from the package, go')
     parser.set_defaults(run=_generate)
 
 
@@ -135,17 +138,15 @@ def _add_export_dir_commands(subparsers):
     parser.add_argument('export_dir', metavar='DIR')
     parser.set_defaults(run=_prune_export)
     parser = subparsers.add_parser(
-        'catkin-package', help="catkin's configure step for one package (genmros-extras.cmake)",
-        description="What catkin's configure step asks for one package: a CMake file naming each "
-                    "definition's outputs; the package's stale headers leave its output "
-                    'directory and the export dir.')
-    parser.add_argument('-p', dest='package', required=True)
-    parser.add_argument('-o', dest='output_dir', required=True)
+        'catkin-export-dir', help="catkin's configure step with MROS_EXPORT_DIR "
+                                  '(genmros-extras.cmake)',
+        description="What catkin's configure step asks once when MROS_EXPORT_DIR is set: the "
+                    'export dir is checked and prepared, and a CMake file says where the '
+                    "packages' stamps in it go.")
+    parser.add_argument('--export-dir', required=True, metavar='DIR')
     parser.add_argument('--cmake-file', required=True, metavar='FILE')
-    parser.add_argument('--export-dir', metavar='DIR')
     _add_catkin_arguments(parser)
-    parser.add_argument('files', nargs='*', metavar='FILE', help='the .msg and .srv files')
-    parser.set_defaults(run=_catkin_package)
+    parser.set_defaults(run=_catkin_export_dir)
 
 
 def _add_mros_v1_pc(subparsers):
@@ -200,7 +201,8 @@ def _generate(options):
     from colcon_mros.workspace import parse_include_flags
     generate_files(options.files, options.package, options.output_dir,
                    parse_include_flags(options.include_paths), options.template_dir,
-                   options.export_dir, options.stamps, options.cmake_module)
+                   options.export_dir, options.stamps, options.cmake_module,
+                   options.all_of_package)
 
 
 def export_request(options):
@@ -255,11 +257,9 @@ def _mros_v1_pc(options):
         mros_v1_pc.run_program(program, options.target)
 
 
-def _catkin_package(options):
-    from colcon_mros.catkin_package import configure_package
-    for path in configure_package(options.package, options.output_dir, options.files,
-                                  options.cmake_file, options.export_dir, options.cmake_module):
-        print('genmros: removed %s' % path)
+def _catkin_export_dir(options):
+    from colcon_mros.catkin_export import configure_export_dir
+    configure_export_dir(options.export_dir, options.cmake_file, options.cmake_module)
 
 
 def main(argv=None):

@@ -10,6 +10,7 @@ and guards. The model stays free of C++; the templates stay free of logic.
 """
 
 import math
+import re
 
 from colcon_mros.errors import GenmrosError
 from colcon_mros.floats import FLOAT32_SMALLEST_NORMAL, round_to_type
@@ -32,6 +33,23 @@ BUILTIN_TYPES = {
 }
 
 
+_NAMED_ESCAPES = {'\n': '\\n', '\t': '\\t'}
+
+
+def _literal_byte(byte):
+    """One byte of UTF-8 text inside a C++ string literal."""
+    char = chr(byte)
+    if char in '\\"':
+        return '\\' + char
+    if char in _NAMED_ESCAPES:
+        return _NAMED_ESCAPES[char]
+    return char if 32 <= byte < 127 else '\\%03o' % byte
+
+
+_LITERAL_BYTES = [_literal_byte(byte) for byte in range(256)]
+_SECOND_QUESTION_MARK = re.compile(r'(?<=\?)\?')
+
+
 def cpp_string_literal_lines(text):
     """text as C++ string literal pieces, one per line of text.
 
@@ -41,24 +59,8 @@ def cpp_string_literal_lines(text):
     """
     pieces = []
     for line in text.splitlines(True):
-        out = []
-        previous = ''
-        for byte in line.encode('utf-8'):
-            char = chr(byte)
-            if char == '\\' or char == '"':
-                out.append('\\' + char)
-            elif char == '\n':
-                out.append('\\n')
-            elif char == '\t':
-                out.append('\\t')
-            elif char == '?' and previous == '?':
-                out.append('\\?')
-            elif 32 <= byte < 127:
-                out.append(char)
-            else:
-                out.append('\\%03o' % byte)
-            previous = char
-        pieces.append('"%s"' % ''.join(out))
+        escaped = ''.join([_LITERAL_BYTES[byte] for byte in line.encode('utf-8')])
+        pieces.append('"%s"' % _SECOND_QUESTION_MARK.sub(r'\\?', escaped))
     return pieces or ['""']
 
 

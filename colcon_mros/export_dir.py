@@ -113,10 +113,12 @@ class ExportDir:
                 messages.add(definition.full_name)
         return sorted(messages) + sorted(services)
 
-    def stamp_of(self, package):
-        """The file whose time says when catkin last generated package here:
-        when the dir is removed, the package is generated again."""
-        return os.path.join(self._state_dir, _STAMPS_DIR, package)
+    @property
+    def stamps_dir(self):
+        """Where catkin's run for a package leaves its stamp, named after the
+        package: its time says when the package was last generated here, and
+        when the dir is removed the package is generated again."""
+        return os.path.join(self._state_dir, _STAMPS_DIR)
 
     def outputs_of(self, definition):
         """The paths generating definition for catkin writes here (its own

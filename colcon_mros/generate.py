@@ -28,11 +28,12 @@ from colcon_mros.definition import Definition
 from colcon_mros.errors import GenmrosError
 from colcon_mros.export_dir import ExportDir
 from colcon_mros.model import ModelBuilder
-from colcon_mros.output import write_files
+from colcon_mros.output import is_generated, write_files
 from colcon_mros.parse import SpecLoader
 from colcon_mros.render import Renderer
 
 GENERATED_LOG = 'Generating mROS headers from %s/%s'
+REMOVED_LOG = 'genmros: removed %s'
 
 
 class _Generated:
@@ -108,10 +109,24 @@ def _touch(paths, moment):
             os.utime(path, (moment, moment))
 
 
+def _remove_stale_headers(output_dir, definitions):
+    """Headers genmros wrote into output_dir for definitions other than these."""
+    keep = {name + '.h' for definition in definitions for name in definition.type_names}
+    removed = []
+    for name in sorted(os.listdir(output_dir)) if os.path.isdir(output_dir) else ():
+        path = os.path.join(output_dir, name)
+        if name.endswith('.h') and name not in keep and is_generated(path):
+            os.unlink(path)
+            removed.append(path)
+    return removed
+
+
 def generate_files(paths, package, output_dir, search_path, template_dir=None, export_dir=None,
-                   stamps=(), cmake_module=None, log=print):
+                   stamps=(), cmake_module=None, all_of_package=False, log=print):
     """Generate the headers of a package's definition files; returns the
-    paths written. log receives one line per file generated."""
+    paths written. log receives one line per file generated or removed.
+    all_of_package: paths are all the package has, so the headers and export
+    claims of its other (removed) definitions go."""
     started = time.time()
     loader = SpecLoader(search_path)
     builder = ModelBuilder(loader)
@@ -144,6 +159,18 @@ def generate_files(paths, package, output_dir, search_path, template_dir=None, e
                 generated.export_headers.update(message_headers(message))
 
     include_root = os.path.dirname(os.path.abspath(output_dir))
+    if exports and cmake_module is None:
+        from colcon_mros.installed_files import CMAKE_MODULE, installed_file
+        cmake_module = installed_file(CMAKE_MODULE)
+    if all_of_package:
+        definitions = [generated.definition for generated in loaded]
+        removed = _remove_stale_headers(output_dir, definitions)
+        if exports:
+            removed += [os.path.join(exports.path, relative) for relative in
+                        exports.forget_other_definitions(
+                            package, {definition.key for definition in definitions}, cmake_module)]
+        for path in removed:
+            log(REMOVED_LOG % path)
     written = []
     for generated in stale:
         log(GENERATED_LOG % (package, generated.definition.file_name))
@@ -152,9 +179,6 @@ def generate_files(paths, package, output_dir, search_path, template_dir=None, e
     if stale:
         written += write_files(include_root, support)
     if exports:
-        if cmake_module is None:
-            from colcon_mros.installed_files import CMAKE_MODULE, installed_file
-            cmake_module = installed_file(CMAKE_MODULE)
         for generated in stale:
             written += exports.add_generated(
                 generated.definition, generated.export_headers,

@@ -6,7 +6,7 @@ import pytest
 from colcon_mros.cli import main
 
 SUBCOMMANDS = ['generate', 'export', 'make-fragment', 'cmake-dir', 'catkin-prefix', 'prune-export',
-               'catkin-package']
+               'catkin-export-dir', 'mros-v1-pc']
 
 
 @pytest.mark.parametrize('subcommand', SUBCOMMANDS)

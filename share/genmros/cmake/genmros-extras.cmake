@@ -4,11 +4,11 @@
 # (the language name is "mros": genmsg strips the "gen" of "genmros"):
 #   _generate_msg_mros / _generate_srv_mros  once per .msg/.srv: noted here
 #   _generate_module_mros                    once per package, after them
-# The last asks genmros what the package's headers are (genmros
-# catkin-package, which also tidies up after removed files) and adds one
-# custom command for the whole package: one genmros process generates every
-# header the package has, and after a change only those of the files whose
-# definitions changed. The headers go to
+# The last adds one custom command for the whole package: one genmros
+# process generates every header the package has, after a change only those
+# of the files whose definitions changed, and removes those of definitions
+# the package no longer has. No genmros process runs per package at
+# configure time. The headers go to
 # ${CATKIN_DEVEL_PREFIX}/${genmros_INSTALL_DIR}/<pkg>/<Type>.h and, when
 # MROS_EXPORT_DIR is set, also into that export dir for a firmware
 # (genmros owns its layout: see colcon_mros/export_dir.py).
@@ -64,28 +64,68 @@ macro(_genmros_note_file ARG_FILE ARG_IFLAGS ARG_FILE_DEPS)
   set(_genmros_iflags "${ARG_IFLAGS}")
 endmacro()
 
-macro(_generate_module_mros ARG_PKG ARG_GEN_OUTPUT_DIR ARG_GENERATED_FILES)
-  set(_genmros_export_args "")
-  if(MROS_EXPORT_DIR)
-    set(_genmros_export_args --export-dir "${MROS_EXPORT_DIR}"
-      --cmake-module "${_GENMROS_CMAKE_DIR}/mros_generate.cmake")
-  endif()
-  set(_genmros_outputs_file "${CMAKE_CURRENT_BINARY_DIR}/genmros/${ARG_PKG}-outputs.cmake")
-  execute_process(
-    COMMAND "${GENMROS_BIN}" catkin-package -p "${ARG_PKG}" -o "${ARG_GEN_OUTPUT_DIR}"
-      --cmake-file "${_genmros_outputs_file}" ${_genmros_export_args} ${_genmros_files}
-    RESULT_VARIABLE _genmros_result ERROR_VARIABLE _genmros_error)
-  if(NOT _genmros_result EQUAL 0)
-    string(STRIP "${_genmros_error}" _genmros_error)
-    string(REGEX REPLACE "^genmros: error: " "genmros: " _genmros_error "${_genmros_error}")
-    message(FATAL_ERROR "${_genmros_error}")
-  endif()
-  include("${_genmros_outputs_file}")
+# genmsg's header names (as gencpp's CMake has them): <Type>.h, and for a
+# service <Service>Request.h and <Service>Response.h besides.
+macro(_genmros_devel_headers ARG_GEN_OUTPUT_DIR)
+  set(_genmros_headers "")
+  foreach(_genmros_file ${_genmros_files})
+    get_filename_component(_genmros_name "${_genmros_file}" NAME_WE)
+    list(APPEND _genmros_headers "${ARG_GEN_OUTPUT_DIR}/${_genmros_name}.h")
+    if(_genmros_file MATCHES "\\.srv$")
+      list(APPEND _genmros_headers "${ARG_GEN_OUTPUT_DIR}/${_genmros_name}Request.h"
+        "${ARG_GEN_OUTPUT_DIR}/${_genmros_name}Response.h")
+    endif()
+  endforeach()
+endmacro()
 
+# With an export dir, genmros checks and prepares it once per CMake run and
+# says where the packages' stamps in it go (the layout is genmros').
+macro(_genmros_configure_export_dir)
+  get_property(_genmros_export_stamps GLOBAL PROPERTY "_genmros_export_stamps:${MROS_EXPORT_DIR}")
+  if(NOT _genmros_export_stamps)
+    set(_genmros_answer "${CMAKE_BINARY_DIR}/genmros/export-dir.cmake")
+    execute_process(
+      COMMAND "${GENMROS_BIN}" catkin-export-dir --export-dir "${MROS_EXPORT_DIR}"
+        --cmake-file "${_genmros_answer}" --cmake-module "${_GENMROS_CMAKE_DIR}/mros_generate.cmake"
+      RESULT_VARIABLE _genmros_result ERROR_VARIABLE _genmros_error)
+    if(NOT _genmros_result EQUAL 0)
+      string(STRIP "${_genmros_error}" _genmros_error)
+      string(REGEX REPLACE "^genmros: error: " "genmros: " _genmros_error "${_genmros_error}")
+      message(FATAL_ERROR "${_genmros_error}")
+    endif()
+    include("${_genmros_answer}")
+    set_property(GLOBAL PROPERTY "_genmros_export_stamps:${MROS_EXPORT_DIR}"
+      "${_genmros_export_stamps}")
+  endif()
+endmacro()
+
+macro(_generate_module_mros ARG_PKG ARG_GEN_OUTPUT_DIR ARG_GENERATED_FILES)
+  if(MROS_EXPORT_DIR)
+    _genmros_configure_export_dir()
+  endif()
+  # Made now, not at build time: genmsg installs the package's output
+  # directory only if it exists when the package is configured.
+  file(MAKE_DIRECTORY "${ARG_GEN_OUTPUT_DIR}")
   if(_genmros_files)
+    get_filename_component(_genmros_include_root "${ARG_GEN_OUTPUT_DIR}" DIRECTORY)
+    get_filename_component(_genmros_share_dir "${_genmros_include_root}" DIRECTORY)
+    # Beside the include root, not in it: genmsg installs the package's dir.
+    set(_genmros_stamps "${_genmros_share_dir}/stamps/${ARG_PKG}")
+    set(_genmros_export_args "")
+    if(MROS_EXPORT_DIR)
+      list(APPEND _genmros_stamps "${_genmros_export_stamps}/${ARG_PKG}")
+      set(_genmros_export_args --export-dir "${MROS_EXPORT_DIR}"
+        --cmake-module "${_GENMROS_CMAKE_DIR}/mros_generate.cmake")
+    endif()
+    _genmros_devel_headers("${ARG_GEN_OUTPUT_DIR}")
     if(_genmros_depends)
       list(REMOVE_DUPLICATES _genmros_depends)
     endif()
+    # The run's inputs that make cannot see in the files' times: a removed
+    # definition or another export dir. Written only when they change.
+    set(_genmros_inputs "${CMAKE_CURRENT_BINARY_DIR}/genmros/${ARG_PKG}.inputs")
+    string(REPLACE ";" "\n" _genmros_inputs_text "${_genmros_files};${MROS_EXPORT_DIR}")
+    file(GENERATE OUTPUT "${_genmros_inputs}" CONTENT "${_genmros_inputs_text}\n")
     # make and ninja know the run by its stamps; the headers are byproducts,
     # which genmros rewrites only where their text changes. genmros writes
     # the export dir atomically and under its lock, so packages built in
@@ -95,14 +135,17 @@ macro(_generate_module_mros ARG_PKG ARG_GEN_OUTPUT_DIR ARG_GENERATED_FILES)
       list(APPEND _genmros_stamp_args --stamp "${_genmros_stamp}")
     endforeach()
     add_custom_command(OUTPUT ${_genmros_stamps}
-      BYPRODUCTS ${_genmros_outputs}
+      BYPRODUCTS ${_genmros_headers}
       COMMAND "${GENMROS_BIN}" ${_genmros_files} ${_genmros_iflags} -p "${ARG_PKG}"
         -o "${ARG_GEN_OUTPUT_DIR}" ${_genmros_export_args} ${_genmros_stamp_args}
-      DEPENDS "${GENMROS_BIN}" ${_genmros_files} ${_genmros_depends}
+        --all-of-package
+      DEPENDS "${GENMROS_BIN}" ${_genmros_files} ${_genmros_depends} "${_genmros_inputs}"
       COMMENT "Generating mROS headers for package ${ARG_PKG}"
       VERBATIM)
     list(APPEND ALL_GEN_OUTPUT_FILES_mros ${_genmros_stamps})
-    install(FILES ${_genmros_support_header} DESTINATION "${genmros_INSTALL_DIR}")
+    # The support header (colcon_mros.cpp.SUPPORT_HEADER) beside the packages' dirs.
+    install(FILES "${_genmros_include_root}/mros_message_support.h"
+      DESTINATION "${genmros_INSTALL_DIR}")
   endif()
   unset(_genmros_files)
   unset(_genmros_depends)
