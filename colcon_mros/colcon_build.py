@@ -5,9 +5,13 @@ message and service of the built packages and of the installed packages they
 depend on (std_msgs from Debian included): the headers ``genmros export
 --only headers`` writes, and the definitions they come from. A second run
 rewrites only what changed and removes what no longer exists; a build of some
-packages (``--packages-select``) adds to the export, never shrinks it.
+packages (``--packages-select``) adds to the export, never shrinks it. A build
+that changed no definition the export comes from (and no package's list of
+definitions, and not genmros) leaves the export as it is without reading a
+definition: the export dir keeps a record of the last export's inputs.
 """
 
+import json
 import os
 
 from colcon_core.package_selection import get_packages
@@ -31,6 +35,7 @@ def export_built_packages(args, export_dir):
     workspace = os.path.abspath(args.base_paths[0])
     require_ros_python()
     from colcon_mros.export import ExportRequest, export  # needs genmsg
+    from colcon_mros.render import Renderer  # needs empy
     from colcon_mros.workspace import environment_packages, workspace_packages
     packages = environment_packages()
     packages.update(workspace_packages(workspace))
@@ -46,8 +51,49 @@ def export_built_packages(args, export_dir):
                            'export', export_dir)
 
     target = ExportDir(export_dir)
+    record = {'genmros': Renderer().fingerprint((workspace, sorted(names))),
+              'definitions': _times(_definition_files(packages[name] for name in names))}
+    if os.path.isdir(target.include_dir) and _unchanged_since(target.colcon_record(), record):
+        print('genmros: the export in %s is up to date' % export_dir)
+        return
     result = export(ExportRequest(target.include_dir, workspaces=[workspace],
                                   package_names=sorted(names), only='headers'))
     exported = {message.package for message in result.messages}
     exported.update(service.package for service in result.services)
     target.replace_packages({name: packages[name] for name in exported}, installed_file(CMAKE_MODULE))
+    # Also the definitions of types contained from packages not named.
+    record['definitions'].update(_times(model.source for model in result.messages + result.services))
+    target.record_colcon_export(json.dumps(record, indent=0, sort_keys=True))
+
+
+def _definition_files(packages):
+    return [path for package in packages
+            for path in package.message_files() + package.service_files()]
+
+
+def _times(paths):
+    """{path: [modification time in ns, size]}; a missing file is [0, -1]."""
+    times = {}
+    for path in paths:
+        try:
+            status = os.stat(path)
+            times[os.path.abspath(path)] = [status.st_mtime_ns, status.st_size]
+        except FileNotFoundError:
+            times[os.path.abspath(path)] = [0, -1]
+    return times
+
+
+def _unchanged_since(recorded, record):
+    """Whether record (this build's genmros and definitions) adds nothing to
+    recorded (the last export's, as text): the same genmros, the same
+    definition files unchanged, and each file recorded unchanged too."""
+    try:
+        last = json.loads(recorded)
+        if last['genmros'] != record['genmros']:
+            return False
+    except (TypeError, ValueError, KeyError):  # no record, or not one of ours
+        return False
+    paths = set(last['definitions'])
+    if not set(record['definitions']) <= paths:
+        return False
+    return _times(paths) == last['definitions']

@@ -11,7 +11,8 @@ reads one. This module is the only code that knows its layout::
     DIR/share/<pkg>/msg|srv/...    installed prefix holds them (genmros export
                                    --underlay DIR reads them)
     DIR/COLCON_IGNORE              so no tool takes share/<pkg> for packages
-    DIR/.genmros/                  private: which definition put which file here
+    DIR/.genmros/                  private: which definition put which file here,
+                                   catkin's stamps, colcon's record of its last export
 
 Every type ``mros_export.cmake`` lists (messages, services and their
 Request/Response halves) can be imported by name.
@@ -44,6 +45,7 @@ _CLAIMS_DIR = 'claims'
 _LEDGER = 'ledger'
 _LOCK = 'lock'
 _STAMPS_DIR = 'stamps'
+_COLCON_RECORD = 'colcon-export'
 
 
 def _read(path):
@@ -119,6 +121,12 @@ class ExportDir:
         package: its time says when the package was last generated here, and
         when the dir is removed the package is generated again."""
         return os.path.join(self._state_dir, _STAMPS_DIR)
+
+    def colcon_record(self):
+        """What colcon build --mros-export recorded of its last export here
+        (text), or None."""
+        path = os.path.join(self._state_dir, _COLCON_RECORD)
+        return _read(path) if os.path.isfile(path) else None
 
     def outputs_of(self, definition):
         """The paths generating definition for catkin writes here (its own
@@ -199,6 +207,10 @@ class ExportDir:
                     os.unlink(os.path.join(self.share_dir, old.key))
             write_files(self.path, files)
             self._write_tables(cmake_module)
+
+    def record_colcon_export(self, text):
+        """Keep text as the record of colcon's export just made."""
+        write_files(self._state_dir, {_COLCON_RECORD: text})
 
     # Layout.
 

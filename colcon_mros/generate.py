@@ -19,11 +19,9 @@ touched otherwise, as a per-file rule would; the other headers keep their
 modification times, so nothing downstream rebuilds for nothing.
 """
 
-import hashlib
 import os
 import time
 
-from colcon_mros import __version__
 from colcon_mros.definition import Definition
 from colcon_mros.errors import GenmrosError
 from colcon_mros.export_dir import ExportDir
@@ -62,16 +60,6 @@ def _load(loader, builder, definition):
     else:
         raise GenmrosError('expected a .msg or .srv file', definition.path)
     return _Generated(definition, model, builder.closure(model.dependencies))
-
-
-def _fingerprint(renderer, arguments):
-    """What the stamps hold: the genmros version, the templates and the run's
-    arguments; another fingerprint makes every file stale."""
-    digest = hashlib.sha256(('%s\n%r\n' % (__version__, arguments)).encode())
-    for name in sorted(os.listdir(renderer.template_dir)):
-        with open(os.path.join(renderer.template_dir, name), 'rb') as stream:
-            digest.update(name.encode() + b'\0' + stream.read())
-    return 'genmros %s\n' % digest.hexdigest()
 
 
 def _stamped_time(stamps, fingerprint):
@@ -132,7 +120,7 @@ def generate_files(paths, package, output_dir, search_path, template_dir=None, e
     builder = ModelBuilder(loader)
     renderer = Renderer(template_dir)
     loaded = [_load(loader, builder, Definition(package, path)) for path in paths]
-    fingerprint = _fingerprint(renderer, (package, sorted(paths), sorted(search_path.items()),
+    fingerprint = renderer.fingerprint((package, sorted(paths), sorted(search_path.items()),
                                           export_dir))
     since = _stamped_time(stamps, fingerprint)
     exports = ExportDir(export_dir) if export_dir else None

@@ -5,11 +5,13 @@ Every function returns ``{relative path: text}`` (or the text) and touches no
 file; writing is :mod:`colcon_mros.output`'s job.
 """
 
+import hashlib
 import os
 import sys
 
 import em
 
+from colcon_mros import __version__
 from colcon_mros.aggregates import MaxSize
 from colcon_mros.cpp import SUPPORT_HEADER, V1_DELIVERY_HEADER, CppMessage, CppService, CppType
 from colcon_mros.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
@@ -32,6 +34,15 @@ class Renderer:
 
     def __init__(self, template_dir=None):
         self.template_dir = template_dir or TEMPLATE_DIR
+
+    def fingerprint(self, arguments):
+        """What a run's output depends on besides the definitions: the
+        genmros version, the templates and the run's arguments."""
+        digest = hashlib.sha256(('%s\n%r\n' % (__version__, arguments)).encode())
+        for name in sorted(os.listdir(self.template_dir)):
+            with open(os.path.join(self.template_dir, name), 'rb') as stream:
+                digest.update(name.encode() + b'\0' + stream.read())
+        return 'genmros %s\n' % digest.hexdigest()
 
     def support_header(self):
         return {SUPPORT_HEADER: self._read(SUPPORT_HEADER)}

@@ -119,6 +119,28 @@ def test_second_run_updates_the_export(workspace):
     assert mtimes(workspace.include)[unchanged] == before[unchanged]
 
 
+def test_a_build_that_changed_no_definition_leaves_the_export_as_it_is(workspace):
+    cmake_file = os.path.join(workspace.export_dir, 'mros_export.cmake')
+    before = mtimes(workspace.include), os.stat(cmake_file).st_mtime_ns
+    result = workspace.colcon_build('--mros-export', workspace.export_dir)
+    assert 'genmros: the export in %s is up to date' % workspace.export_dir in result.stdout
+    assert (mtimes(workspace.include), os.stat(cmake_file).st_mtime_ns) == before
+
+    # A new definition in a package is exported, as the others stay.
+    source = os.path.join(workspace.root, 'src', 'mros_test_base')
+    with open(os.path.join(source, 'msg', 'Scale.msg'), 'w') as stream:
+        stream.write('float64 factor\n')
+    cmake_lists = os.path.join(source, 'CMakeLists.txt')
+    with open(cmake_lists) as stream:
+        text = stream.read()
+    with open(cmake_lists, 'w') as stream:
+        stream.write(text.replace('  Vector3i.msg\n', '  Vector3i.msg\n  Scale.msg\n'))
+    result = workspace.colcon_build('--mros-export', workspace.export_dir)
+    assert 'up to date' not in result.stdout
+    assert b'double factor;' in headers_under(workspace.include)[
+        os.path.join('mros_test_base', 'Scale.h')]
+
+
 def test_selected_packages_add_to_the_export_and_never_shrink_it(workspace):
     with open(os.path.join(workspace.export_dir, 'mros_export.cmake')) as stream:
         before = stream.read()
