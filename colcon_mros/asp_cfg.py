@@ -66,26 +66,43 @@ def _without_comments(text):
                   flags=re.S)
 
 
-def _split_top_level(text, path, line):
-    """The comma-separated parts of text, commas inside brackets kept."""
-    parts, depth, start, quote = [], 0, 0, None
-    for index, char in enumerate(text):
+_OPENING = '({['
+_CLOSING = ')}]'
+
+
+def _outside_quotes(text, start=0):
+    """(index, char) of each character of text from start outside quoted
+    strings, then (len(text), None) unless a quote is left open."""
+    quote = None
+    for index in range(start, len(text)):
+        char = text[index]
         if quote:
             if char == quote and text[index - 1] != '\\':
                 quote = None
         elif char in '"\'':
             quote = char
-        elif char in '({[':
+        else:
+            yield index, char
+    if not quote:
+        yield len(text), None
+
+
+def _split_top_level(text, path, line):
+    """The comma-separated parts of text, commas inside brackets kept."""
+    parts, depth, start = [], 0, 0
+    for index, char in _outside_quotes(text):
+        if char is None:
+            if depth == 0:
+                parts.append(text[start:].strip())
+                return [' '.join(part.split()) for part in parts]
+        elif char in _OPENING:
             depth += 1
-        elif char in ')}]':
+        elif char in _CLOSING:
             depth -= 1
         elif char == ',' and depth == 0:
             parts.append(text[start:index].strip())
             start = index + 1
-    if depth != 0 or quote:
-        raise GenmrosError('unbalanced brackets or quotes', path, line)
-    parts.append(text[start:].strip())
-    return [' '.join(part.split()) for part in parts]
+    raise GenmrosError('unbalanced brackets or quotes', path, line)
 
 
 def _block(text, path, line, api):
@@ -97,21 +114,14 @@ def _block(text, path, line, api):
 
 def _call_end(text, start, path, line):
     """The index just past the ')' that closes the '(' before start."""
-    depth, index, quote = 1, start, None
-    while index < len(text):
-        char = text[index]
-        if quote:
-            if char == quote and text[index - 1] != '\\':
-                quote = None
-        elif char in '"\'':
-            quote = char
-        elif char == '(':
+    depth = 1
+    for index, char in _outside_quotes(text, start):
+        if char == '(':
             depth += 1
         elif char == ')':
             depth -= 1
             if depth == 0:
                 return index + 1
-        index += 1
     raise GenmrosError('static API call without its closing ")"', path, line)
 
 

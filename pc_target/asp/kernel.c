@@ -53,22 +53,26 @@ struct tcb {
   enum task_state state;
   unsigned activation_requests;
   unsigned wakeup_requests;
-  struct tcb *next_ready;
+  struct tcb *next_in_queue; /* a ready queue or a semaphore's waiters, never both */
   pthread_cond_t dispatched;
   jmp_buf exit_point;
   enum wait_reason wait;
   struct semaphore *waiting_on;
-  struct tcb *next_waiter;
   int has_deadline;
   uint64_t deadline_us;
   ER wait_result;
 };
 
+/* Tasks in FIFO order, linked through next_in_queue. */
+struct task_queue {
+  struct tcb *first;
+  struct tcb *last;
+};
+
 struct semaphore {
   const struct pc_semaphore_config *config;
   uint_t count;
-  struct tcb *first_waiter;
-  struct tcb *last_waiter;
+  struct task_queue waiters;
 };
 
 struct timer {
@@ -88,8 +92,7 @@ struct raised_interrupt {
 static pthread_mutex_t kernel_lock = PTHREAD_MUTEX_INITIALIZER;
 static pthread_cond_t timer_wakeup;
 static struct tcb *running;
-static struct tcb *ready_first[TMAX_TPRI + 1];
-static struct tcb *ready_last[TMAX_TPRI + 1];
+static struct task_queue ready[TMAX_TPRI + 1];
 static struct tcb *tasks;
 static struct tcb handler_tcb;
 static struct semaphore *semaphores;
@@ -121,39 +124,43 @@ static void fatal(const char *what) {
 
 /* ---- ready queues and dispatching (kernel_lock held) ---- */
 
-static void make_ready(struct tcb *task, int at_head) {
-  PRI priority = task->priority;
-  task->state = READY;
-  task->next_ready = NULL;
-  if (ready_first[priority] == NULL) {
-    ready_first[priority] = ready_last[priority] = task;
+static void queue_add(struct task_queue *queue, struct tcb *task, int at_head) {
+  task->next_in_queue = NULL;
+  if (queue->first == NULL) {
+    queue->first = queue->last = task;
   } else if (at_head) {
-    task->next_ready = ready_first[priority];
-    ready_first[priority] = task;
+    task->next_in_queue = queue->first;
+    queue->first = task;
   } else {
-    ready_last[priority]->next_ready = task;
-    ready_last[priority] = task;
+    queue->last->next_in_queue = task;
+    queue->last = task;
   }
 }
 
-static void remove_ready(struct tcb *task) {
-  PRI priority = task->priority;
-  struct tcb **link = &ready_first[priority];
+static void queue_remove(struct task_queue *queue, struct tcb *task) {
+  struct tcb **link = &queue->first;
   struct tcb *previous = NULL;
   while (*link != NULL && *link != task) {
     previous = *link;
-    link = &(*link)->next_ready;
+    link = &(*link)->next_in_queue;
   }
   if (*link == NULL) return;
-  *link = task->next_ready;
-  if (ready_last[priority] == task) ready_last[priority] = previous;
-  task->next_ready = NULL;
+  *link = task->next_in_queue;
+  if (queue->last == task) queue->last = previous;
+  task->next_in_queue = NULL;
 }
+
+static void make_ready(struct tcb *task, int at_head) {
+  task->state = READY;
+  queue_add(&ready[task->priority], task, at_head);
+}
+
+static void remove_ready(struct tcb *task) { queue_remove(&ready[task->priority], task); }
 
 static struct tcb *highest_ready(void) {
   PRI priority;
   for (priority = HANDLER_PRIORITY; priority <= TMAX_TPRI; priority++) {
-    if (ready_first[priority] != NULL) return ready_first[priority];
+    if (ready[priority].first != NULL) return ready[priority].first;
   }
   return NULL;
 }
@@ -359,8 +366,8 @@ ER rot_rdq(PRI tskpri) {
   if (self != NULL && running == self && self->priority == priority) {
     make_ready(self, 0);
     switch_away(self);
-  } else if (ready_first[priority] != NULL && ready_first[priority] != ready_last[priority]) {
-    struct tcb *first = ready_first[priority];
+  } else if (ready[priority].first != ready[priority].last) {
+    struct tcb *first = ready[priority].first;
     remove_ready(first);
     make_ready(first, 0);
   }
@@ -417,27 +424,14 @@ static struct semaphore *semaphore_of(ID id) {
   return &semaphores[id - 1];
 }
 
-static void remove_waiter(struct semaphore *semaphore, struct tcb *task) {
-  struct tcb **link = &semaphore->first_waiter;
-  struct tcb *previous = NULL;
-  while (*link != NULL && *link != task) {
-    previous = *link;
-    link = &(*link)->next_waiter;
-  }
-  if (*link == NULL) return;
-  *link = task->next_waiter;
-  if (semaphore->last_waiter == task) semaphore->last_waiter = previous;
-  task->next_waiter = NULL;
-}
-
 ER sig_sem(ID semid) {
   struct semaphore *semaphore;
   enter();
   semaphore = semaphore_of(semid);
   if (semaphore == NULL) return leave(E_ID);
-  if (semaphore->first_waiter != NULL) {
-    struct tcb *task = semaphore->first_waiter;
-    remove_waiter(semaphore, task);
+  if (semaphore->waiters.first != NULL) {
+    struct tcb *task = semaphore->waiters.first;
+    queue_remove(&semaphore->waiters, task);
     end_wait(task, E_OK);
     return leave(E_OK);
   }
@@ -462,13 +456,7 @@ ER twai_sem(ID semid, TMO tmout) {
   }
   if (tmout == TMO_POL) return leave(E_TMOUT);
   self->waiting_on = semaphore;
-  self->next_waiter = NULL;
-  if (semaphore->last_waiter == NULL) {
-    semaphore->first_waiter = semaphore->last_waiter = self;
-  } else {
-    semaphore->last_waiter->next_waiter = self;
-    semaphore->last_waiter = self;
-  }
+  queue_add(&semaphore->waiters, self, 0);
   result = block(self, WAIT_SEMAPHORE, tmout);
   self->waiting_on = NULL;
   return leave(result);
@@ -585,7 +573,7 @@ static void *timer_thread(void *unused) {
       struct tcb *task = &tasks[index];
       if (task->state != WAITING || !task->has_deadline) continue;
       if (task->deadline_us <= now) {
-        if (task->waiting_on != NULL) remove_waiter(task->waiting_on, task);
+        if (task->waiting_on != NULL) queue_remove(&task->waiting_on->waiters, task);
         end_wait(task, task->wait == WAIT_DELAY ? E_OK : E_TMOUT);
       } else if (task->deadline_us < next) {
         next = task->deadline_us;
