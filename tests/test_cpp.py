@@ -5,11 +5,13 @@ import os
 
 import pytest
 
-from colcon_mros.cpp import CppMessage, CppType, cpp_constant_literal, field_cpp_type
+from colcon_mros.cpp import (SUPPORT_HEADER, CppMessage, CppType, cpp_constant_literal,
+                             cpp_string_literal_lines, field_cpp_type)
 from colcon_mros.errors import GenmrosError
 from colcon_mros.model import ModelBuilder
 from colcon_mros.parse import SpecLoader
 from colcon_mros.storage import storage_for
+from conftest import REPO
 
 STD_MSGS = '/usr/share/std_msgs/msg'
 
@@ -72,3 +74,20 @@ def test_members_that_meet_after_escaping_are_refused(tmp_path):
 ])
 def test_constant_literals(ros_type, value, literal):
     assert cpp_constant_literal(ros_type, value) == literal
+
+
+def test_catkins_cmake_installs_the_support_header_by_its_name():
+    # genmros-extras.cmake names it without asking genmros (no process per package).
+    with open(os.path.join(REPO, 'share', 'genmros', 'cmake', 'genmros-extras.cmake')) as stream:
+        assert '"${_genmros_include_root}/%s"' % SUPPORT_HEADER in stream.read()
+
+
+@pytest.mark.parametrize('text, pieces', [
+    ('', ['""']),
+    ('a "b" \\ c\n', ['"a \\"b\\" \\\\ c\\n"']),
+    ('x\ty\nz', ['"x\\ty\\n"', '"z"']),
+    ('??=??/???', ['"?\\?=?\\?/?\\?\\?"']),
+    ('Zo\u00eb 1', ['"Zo\\303\\253 1"']),
+])
+def test_string_literals_escape_what_cpp_would_read_otherwise(text, pieces):
+    assert cpp_string_literal_lines(text) == pieces
