@@ -61,8 +61,10 @@ def export_built_packages(args, export_dir):
     exported = {message.package for message in result.messages}
     exported.update(service.package for service in result.services)
     target.replace_packages({name: packages[name] for name in exported}, installed_file(CMAKE_MODULE))
-    # Also the definitions of types contained from packages not named.
-    record['definitions'].update(_times(model.source for model in result.messages + result.services))
+    # Also the definitions of types contained from packages not named; the
+    # named packages' files keep the times they had before the export read them.
+    sources = {os.path.abspath(model.source) for model in result.messages + result.services}
+    record['definitions'].update(_times(sources - set(record['definitions'])))
     target.record_colcon_export(json.dumps(record, indent=0, sort_keys=True))
 
 

@@ -15,7 +15,8 @@ import subprocess
 import sys
 import time
 
-from posix_evaluation import ROS_HEARD, Direction, parse_mros_listener
+from posix_evaluation import (ROS_HEARD, Direction, parse_mros_listener, ros_heard,
+                              start_ros_listeners)
 from ros_processes import RosGraph, free_port, sourced_environment
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -125,20 +126,12 @@ def run(workspace, program, count, scratch):
     environment = sourced_environment(workspace.setup_bash)
     directions = []
     with RosGraph(environment) as graph:
-        listeners = [
-            ('mROS -> rospy listener', graph.start('rospy listener',
-                                                   workspace.rospy('personal_data_listener.py'))),
-            ('mROS -> roscpp listener', graph.start('roscpp listener',
-                                                    workspace.roscpp('personal_data_listener'))),
-        ]
-        graph.wait_for_graph(subscribers=[('/mros_str', '/rospy_personal_listener'),
-                                          ('/mros_str', '/ros_personal_listener')])
+        listeners = start_ros_listeners(graph, workspace)
         board = Board(graph, program, scratch)
         for title, listener in listeners:
-            matches = _waited(listener, ROS_HEARD.pattern, count)
-            directions.append(_direction(title, 'Phil Woods', 83, 100000, [
-                ('%s %s' % (m.group(1), m.group(2)), int(m.group(3)), int(m.group(4)))
-                for m in matches], count))
+            directions.append(_direction(title, 'Phil Woods', 83, 100000,
+                                         ros_heard(_waited(listener, ROS_HEARD.pattern, count)),
+                                         count))
         matches = _waited(board.process, r'on board: (\S+ \S+) (\d+) (-?\d+)', count)
         directions.append(_direction('mROS -> mROS on board', 'Phil Woods', 83, 100000,
                                      [(m.group(1), int(m.group(2)), int(m.group(3)))

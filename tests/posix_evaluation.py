@@ -67,8 +67,9 @@ def show(process, last=12):
         print('  ' + line)
 
 
-def mros_to_ros(graph, workspace, firmware, count):
-    directions = []
+def start_ros_listeners(graph, workspace):
+    """The rospy and roscpp listeners of mros_str, registered at the master:
+    [(direction title, process)]."""
     listeners = [
         ('mROS -> rospy listener', graph.start('rospy personal_data_listener.py',
                                                workspace.rospy('personal_data_listener.py'))),
@@ -77,13 +78,24 @@ def mros_to_ros(graph, workspace, firmware, count):
     ]
     graph.wait_for_graph(subscribers=[('/mros_str', '/rospy_personal_listener'),
                                       ('/mros_str', '/ros_personal_listener')])
+    return listeners
+
+
+def ros_heard(matches):
+    """(name, age, score) of each ROS_HEARD match."""
+    return [('%s %s' % (m.group(1), m.group(2)), int(m.group(3)), int(m.group(4)))
+            for m in matches]
+
+
+def mros_to_ros(graph, workspace, firmware, count):
+    directions = []
+    listeners = start_ros_listeners(graph, workspace)
     talker = graph.start('mROS talker (Fig. 6)', firmware.node('mros_personal_talker'))
     for title, listener in listeners:
         direction = Direction(title, 'Phil Woods', 83, 100000)
         try:
             matches = listener.wait_for(ROS_HEARD.pattern, timeout=20, count=count)
-            direction.received = [('%s %s' % (m.group(1), m.group(2)), int(m.group(3)),
-                                   int(m.group(4))) for m in matches]
+            direction.received = ros_heard(matches)
         except AssertionError:
             pass
         direction.check(count)
