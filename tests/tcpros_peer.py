@@ -106,6 +106,20 @@ class HostilePublisher:
         return connection, read_header(connection)
 
 
+class _TimedTransport(xmlrpc.client.Transport):
+    """XML-RPC over HTTP that gives up after timeout seconds: a slave whose
+    socket still accepts but whose task no longer serves must not hang a test."""
+
+    def __init__(self, timeout):
+        super().__init__()
+        self._timeout = timeout
+
+    def make_connection(self, host):
+        connection = super().make_connection(host)
+        connection.timeout = self._timeout
+        return connection
+
+
 class RawSubscriber:
     """A TCPROS subscriber that keeps the bytes: asks the publishing node's
     slave (slave_uri) for the topic until it answers within timeout,
@@ -116,8 +130,10 @@ class RawSubscriber:
         deadline = time.monotonic() + timeout
         while True:
             try:
-                code, message, protocol = xmlrpc.client.ServerProxy(slave_uri).requestTopic(
-                    '/raw_subscriber', topic, [['TCPROS']])
+                slave = xmlrpc.client.ServerProxy(
+                    slave_uri, transport=_TimedTransport(max(deadline - time.monotonic(), 0.5)))
+                code, message, protocol = slave.requestTopic('/raw_subscriber', topic,
+                                                             [['TCPROS']])
                 if code == 1:
                     break
             except OSError:
