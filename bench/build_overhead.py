@@ -9,18 +9,20 @@ each other's types in a tree, so a build can run several at once).
 
 For each build tool (catkin_make -j2; catkin build -j2 -p2; colcon build
 --executor parallel --parallel-workers 2, with --mros-export when enabled)
-and workspace,
---runs rounds of: a clean build (build, devel, install and log spaces
-removed) and a no-change rebuild, once enabled and once disabled, in
-alternating order. The table shows medians of wall time and of CPU time
+and workspace, two copies of the workspace, one built with genmros enabled
+and one with it disabled, and --runs rounds of: a clean build of each
+(build, devel, install and log spaces removed), then --rebuilds no-change
+rebuilds of each, enabled and disabled taking turns (a no-change rebuild
+takes seconds, so single ones drown in the machine's noise). The table
+shows medians of wall time and of CPU time
 (user + system of every process the build ran; less sensitive to other load
 on the machine), and, for the enabled builds, how many genmros processes
 the build started and the CPU seconds they took (genmros runs through a
 wrapper that counts them). Last, the start-up of genmros' catkin run: the
 modules it imports (python3 -X importtime).
 
-    /usr/bin/python3 bench/build_overhead.py [--runs 3] [--tools catkin_make,catkin_build,colcon]
-                                             [--keep DIR]
+    /usr/bin/python3 bench/build_overhead.py [--runs 3] [--rebuilds 3]
+                                             [--tools catkin_make,catkin_build,colcon] [--keep DIR]
 """
 
 import argparse
@@ -162,22 +164,30 @@ def timed_build(command, workspace, env):
     return (wall, cpu) + genmros_runs(env['GENMROS_BENCH_LOG'])
 
 
-def measure(tool, workspace, runs, wrapper):
-    """{(enabled, 'clean'|'rebuild'): [(wall, cpu, genmros runs, their cpu), ...]}."""
-    if tool == 'catkin_build':
-        subprocess.run(['catkin', 'init'], cwd=workspace, check=True, capture_output=True)
+def measure(tool, workspaces, runs, rebuilds, wrapper):
+    """{(enabled, 'clean'|'rebuild'): [(wall, cpu, genmros runs, their cpu), ...]};
+    workspaces: {enabled: the copy built that way}."""
     samples = {}
-    log = os.path.join(workspace, 'genmros-runs.log')
+    if tool == 'catkin_build':
+        for workspace in workspaces.values():
+            subprocess.run(['catkin', 'init'], cwd=workspace, check=True, capture_output=True)
     for round_number in range(runs):
         order = (True, False) if round_number % 2 == 0 else (False, True)
         for enabled in order:
-            env = build_environment(workspace, enabled, log)
-            command = build_command(tool, workspace, wrapper, enabled)
             for space in ('build', 'devel', 'install', 'log', 'logs', 'mros_export'):
-                shutil.rmtree(os.path.join(workspace, space), ignore_errors=True)
-            samples.setdefault((enabled, 'clean'), []).append(timed_build(command, workspace, env))
-            samples.setdefault((enabled, 'rebuild'), []).append(timed_build(command, workspace, env))
+                shutil.rmtree(os.path.join(workspaces[enabled], space), ignore_errors=True)
+            samples.setdefault((enabled, 'clean'), []).append(
+                _timed_build(tool, workspaces[enabled], enabled, wrapper))
+        for _ in range(rebuilds):
+            for enabled in order:
+                samples.setdefault((enabled, 'rebuild'), []).append(
+                    _timed_build(tool, workspaces[enabled], enabled, wrapper))
     return samples
+
+
+def _timed_build(tool, workspace, enabled, wrapper):
+    env = build_environment(workspace, enabled, os.path.join(workspace, 'genmros-runs.log'))
+    return timed_build(build_command(tool, workspace, wrapper, enabled), workspace, env)
 
 
 def median(samples, column):
@@ -239,6 +249,8 @@ def print_start_up(workspace):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
     parser.add_argument('--runs', type=int, default=3, help='rounds per workspace (default 3)')
+    parser.add_argument('--rebuilds', type=int, default=3,
+                        help='no-change rebuilds per round and setting (default 3)')
     parser.add_argument('--tools', default=','.join(TOOLS),
                         help='build tools, comma-separated (default: %(default)s)')
     parser.add_argument('--keep', metavar='DIR', help='build in DIR and keep it')
@@ -252,10 +264,14 @@ def main():
         rows = []
         for tool in options.tools.split(','):
             for name, make in (('test_ws', test_ws_copy), ('24 packages', synthetic_workspace)):
-                workspace = make(os.path.join(root, tool, name.replace(' ', '_')))
-                rows += report_rows(tool, name, workspace, measure(tool, workspace, options.runs, wrapper))
-        print('Medians of %d runs; "with" = genmros enabled (colcon: with --mros-export), '
-              '"without" = ROS_LANG_DISABLE=genmros' % options.runs)
+                directory = os.path.join(root, tool, name.replace(' ', '_'))
+                workspaces = {enabled: make(os.path.join(directory, setting))
+                              for enabled, setting in ((True, 'with'), (False, 'without'))}
+                rows += report_rows(tool, name, workspaces[True], measure(
+                    tool, workspaces, options.runs, options.rebuilds, wrapper))
+        print('Medians of %d clean builds and %d no-change rebuilds; "with" = genmros enabled '
+              '(colcon: with --mros-export), "without" = ROS_LANG_DISABLE=genmros'
+              % (options.runs, options.runs * options.rebuilds))
         print_table(rows)
         print_start_up(synthetic_workspace(os.path.join(root, 'start_up')))
     finally:
