@@ -256,6 +256,7 @@ def main():
     parser.add_argument('--keep', metavar='DIR', help='build in DIR and keep it')
     options = parser.parse_args()
     root = options.keep or tempfile.mkdtemp(prefix='genmros-bench-')
+    os.makedirs(root, exist_ok=True)
     wrapper = os.path.join(root, 'genmros-counted')
     with open(wrapper, 'w') as stream:
         stream.write(WRAPPER.format(genmros=shutil.which('genmros')))
