@@ -1,28 +1,29 @@
 #!/usr/bin/python3
 """What genmros adds to a catkin or colcon build: build time with genmros
 enabled divided by build time with it disabled (ROS_LANG_DISABLE=genmros),
-measured side by side on the same workspace.
+measured side by side on two copies of the same workspace.
 
 Two workspaces: test_ws as it is in the repository, and a synthetic one of
 24 message packages (8 messages each, nesting std_msgs, geometry_msgs and
 each other's types in a tree, so a build can run several at once).
 
-For each build tool (catkin_make -j2; catkin build -j2 -p2; colcon build
---executor parallel --parallel-workers 2, with --mros-export when enabled)
-and workspace, two copies of the workspace, one built with genmros enabled
-and one with it disabled, and --runs rounds of: a clean build of each
+For each build tool (catkin_make -j2, with make and with ninja; catkin build
+-j2 -p2; colcon build --executor parallel --parallel-workers 2, with
+--mros-export when enabled) and workspace: one copy built with genmros
+enabled and one with it disabled, and --runs rounds of a clean build of each
 (build, devel, install and log spaces removed), then --rebuilds no-change
-rebuilds of each, enabled and disabled taking turns (a no-change rebuild
-takes seconds, so single ones drown in the machine's noise). The table
-shows medians of wall time and of CPU time
-(user + system of every process the build ran; less sensitive to other load
-on the machine), and, for the enabled builds, how many genmros processes
-the build started and the CPU seconds they took (genmros runs through a
-wrapper that counts them). Last, the start-up of genmros' catkin run: the
-modules it imports (python3 -X importtime).
+rebuilds of each, the copies taking turns (a no-change rebuild takes
+seconds, so single ones drown in the machine's noise). The table shows
+medians of wall time and of CPU time (user + system of every process the
+build ran; less sensitive to other load on the machine), and, for the
+enabled builds, how many genmros processes the build started and the CPU
+seconds they took (genmros runs through a wrapper that counts them). Last,
+the start-up of genmros' catkin run: the modules it imports (python3 -X
+importtime).
 
     /usr/bin/python3 bench/build_overhead.py [--runs 3] [--rebuilds 3]
-                                             [--tools catkin_make,catkin_build,colcon] [--keep DIR]
+                                             [--tools catkin_make,catkin_make_ninja,catkin_build,colcon]
+                                             [--keep DIR]
 """
 
 import argparse
@@ -36,7 +37,7 @@ import tempfile
 import time
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-TOOLS = ('catkin_make', 'catkin_build', 'colcon')
+TOOLS = ('catkin_make', 'catkin_make_ninja', 'catkin_build', 'colcon')
 # Wraps genmros to count its processes and their CPU time (bash's times).
 WRAPPER = '''#!/bin/bash
 {genmros} "$@"
@@ -127,6 +128,8 @@ def build_command(tool, workspace, wrapper, enabled):
     cmake_args = ['-DGENMROS_BIN=%s' % wrapper]
     if tool == 'catkin_make':
         return ['catkin_make', '-j2'] + cmake_args
+    if tool == 'catkin_make_ninja':
+        return ['catkin_make', '--use-ninja', '-j2'] + cmake_args
     if tool == 'catkin_build':
         return ['catkin', 'build', '-j2', '-p2', '--no-status', '--no-notify', '--cmake-args'] + cmake_args
     export = ['--mros-export', os.path.join(workspace, 'mros_export')] if enabled else []

@@ -5,7 +5,7 @@ back, a deleted .msg loses its headers in both, a type that no definition
 contains any more leaves the export dir, and a broken .msg stops its package
 only, whose headers stay as they were. catkin runs one genmros process per
 package, and after an edit it generates only the files whose definitions
-changed (a package of eight messages shows it).
+changed (a package of eight messages shows it, with make and with ninja).
 
 The steps share one catkin_make workspace and run in file order.
 """
@@ -185,7 +185,8 @@ EIGHT_PACKAGE = '''<?xml version="1.0"?>
 '''
 
 
-def test_one_run_per_package_rewrites_only_the_headers_whose_text_changes(tmp_path):
+@pytest.mark.parametrize('generator', ['make', 'ninja'])
+def test_one_run_per_package_rewrites_only_the_headers_whose_text_changes(tmp_path, generator):
     root = str(tmp_path)
     package = os.path.join(root, 'src', 'eight')
     os.makedirs(os.path.join(package, 'msg'))
@@ -195,6 +196,8 @@ def test_one_run_per_package_rewrites_only_the_headers_whose_text_changes(tmp_pa
             stream.write(text)
     export_dir = os.path.join(root, 'mros_export')
     build = ['catkin_make', '-DMROS_EXPORT_DIR=%s' % export_dir]
+    if generator == 'ninja':
+        build.insert(1, '--use-ninja')
     log = run(build, root).stdout
     assert log.count('Generating mROS headers for package eight') == 1  # one genmros run
     assert len(_generated_types(log)) == 8
