@@ -14,6 +14,14 @@ import threading
 import time
 import xmlrpc.client
 
+# A shell that starts a command in the background (`cmd &`, as some CI
+# runners and nohup do) makes it ignore SIGINT, and its children inherit
+# that: every node would then sit out stop()'s grace period before SIGKILL
+# (the suite takes half again as long) and no node would stop the way it does
+# for a user's Ctrl-C. A handled signal is reset to the default in a child.
+if signal.getsignal(signal.SIGINT) == signal.SIG_IGN:
+    signal.signal(signal.SIGINT, signal.default_int_handler)
+
 
 def free_port():
     """A TCP port that is free on 127.0.0.1 right now."""
