@@ -153,8 +153,12 @@ def genmros_runs(log):
     return runs, cpu
 
 
-def timed_build(command, workspace, env):
-    """(wall seconds, CPU seconds, genmros processes, their CPU seconds) of one build."""
+def timed_build(tool, workspace, enabled, wrapper):
+    """(wall seconds, CPU seconds, genmros processes, their CPU seconds) of one
+    build of workspace with tool, genmros enabled or not."""
+    log = os.path.join(workspace, 'genmros-runs.log')
+    env = build_environment(workspace, enabled, log)
+    command = build_command(tool, workspace, wrapper, enabled)
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.monotonic()
     result = subprocess.run(command, cwd=workspace, env=env,
@@ -164,7 +168,7 @@ def timed_build(command, workspace, env):
     if result.returncode != 0:
         sys.exit('%s failed in %s:\n%s' % (' '.join(command), workspace, result.stdout[-4000:]))
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    return (wall, cpu) + genmros_runs(env['GENMROS_BENCH_LOG'])
+    return (wall, cpu) + genmros_runs(log)
 
 
 def measure(tool, workspaces, runs, rebuilds, wrapper):
@@ -180,17 +184,12 @@ def measure(tool, workspaces, runs, rebuilds, wrapper):
             for space in ('build', 'devel', 'install', 'log', 'logs', 'mros_export'):
                 shutil.rmtree(os.path.join(workspaces[enabled], space), ignore_errors=True)
             samples.setdefault((enabled, 'clean'), []).append(
-                _timed_build(tool, workspaces[enabled], enabled, wrapper))
+                timed_build(tool, workspaces[enabled], enabled, wrapper))
         for _ in range(rebuilds):
             for enabled in order:
                 samples.setdefault((enabled, 'rebuild'), []).append(
-                    _timed_build(tool, workspaces[enabled], enabled, wrapper))
+                    timed_build(tool, workspaces[enabled], enabled, wrapper))
     return samples
-
-
-def _timed_build(tool, workspace, enabled, wrapper):
-    env = build_environment(workspace, enabled, os.path.join(workspace, 'genmros-runs.log'))
-    return timed_build(build_command(tool, workspace, wrapper, enabled), workspace, env)
 
 
 def median(samples, column):
