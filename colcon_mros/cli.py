@@ -176,6 +176,13 @@ def _add_mros_v1_pc(subparsers):
     _add_header_arguments(parser)
     parser.add_argument('-j', dest='jobs', type=int, default=os.cpu_count() or 1,
                         help='parallel make jobs (default: the number of CPUs)')
+    parser.add_argument('--sanitize', action='store_true',
+                        help='build library, stand-ins and app with AddressSanitizer and '
+                             'UndefinedBehaviorSanitizer (with --target native), so that an '
+                             'overrun shows on the PC before the board')
+    parser.add_argument('-v', '--verbose', action='store_true',
+                        help='show every compiler command (default: one line per step; '
+                             'compiler errors are always shown in full)')
     parser.add_argument('--run', dest='run_program', action='store_true',
                         help='run the program once it is built (under qemu-arm for arm)')
     parser.set_defaults(run=_mros_v1_pc)
@@ -248,13 +255,13 @@ def _prune_export(options):
 
 
 def _mros_v1_pc(options):
-    from colcon_mros import mros_v1_pc
-    program = mros_v1_pc.build(options)
-    print('genmros: built %s (run it: %s)'
-          % (program, ' '.join(mros_v1_pc.runner(options.target) + [program])))
+    from colcon_mros.targets.mros_v1_pc import build
+    program = build.build(options)
+    print('genmros: built %s\n  run it with ROS_MASTER_URI and ROS_IP set: %s'
+          % (program, ' '.join(build.runner(options.target) + [program])))
     if options.run_program:
         sys.stdout.flush()
-        mros_v1_pc.run_program(program, options.target)
+        build.run_program(program, options.target)
 
 
 def _catkin_export_dir(options):

@@ -5,9 +5,7 @@ pip installs the CMake package (genmrosConfig.cmake), the CMake module
 ``share/genmros/cmake/`` of whatever prefix the install used (/usr for
 setup.sh's Debian package, /usr/local, ~/.local, a venv); the
 distribution's own record of its files says where, so no prefix is
-assumed; the PC target for mROS v1 goes to ``share/genmros/pc_target/``. A
-source checkout has the module and the fragment in ``cmake/``, the PC target
-in ``pc_target/``.
+assumed. A source checkout has the module and the fragment in ``cmake/``.
 """
 
 import os
@@ -24,15 +22,11 @@ CMAKE_CONFIG = 'genmrosConfig.cmake'
 # etc/ros/genmsg/genmros registers the catkin generator once the prefix is
 # on CMAKE_PREFIX_PATH.
 CATKIN_MARKER = '.catkin'
-# The PC target's makefile; its directory holds the rest of the PC target.
-PC_TARGET_MAKEFILE = 'mros_v1_pc.mk'
-# Where a source checkout keeps each of these files.
-_CHECKOUT_DIRS = {PC_TARGET_MAKEFILE: 'pc_target'}
 
 
 def _checkout_file(name):
     path = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
-                        _CHECKOUT_DIRS.get(name, 'cmake'), name)
+                        'cmake', name)
     return path if os.path.isfile(path) else None
 
 

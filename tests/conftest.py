@@ -6,9 +6,7 @@ import sys
 
 import pytest
 
-# The POSIX runtime's fixtures (catkin-built test_ws, the sample firmware, a
-# ROS graph with a rosmaster), shared by the test_posix_* modules.
-pytest_plugins = ['posix_fixtures']
+import built_workspace
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TEST_WS = os.path.join(REPO, 'test_ws')
@@ -47,3 +45,9 @@ def test_ws_export(tmp_path_factory):
     root = str(tmp_path_factory.mktemp('test_ws_export'))
     run_genmros('export', '--workspace', TEST_WS, '-o', root, '--underlay', '/usr')
     return root
+
+
+@pytest.fixture(scope='session')
+def ros_workspace():
+    """test_ws built with catkin_make: the ROS nodes the mROS v1 apps talk to."""
+    return built_workspace.workspace()

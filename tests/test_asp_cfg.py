@@ -1,4 +1,4 @@
-"""colcon_mros.asp_cfg: the PC target's TOPPERS/ASP configurator, on
+"""colcon_mros.targets.mros_v1_pc.asp_cfg: the PC target's TOPPERS/ASP configurator, on
 app.cfg files of its own and on the real mROS v1 kernel configuration when a
 checkout is there (MROS_V1_ROOT, default ../shared/mros_v1)."""
 
@@ -7,10 +7,10 @@ import os
 import pytest
 
 from conftest import REPO
-from colcon_mros.asp_cfg import read_config, write_kernel_config
+from colcon_mros.targets.mros_v1_pc.asp_cfg import read_config, write_kernel_config
 from colcon_mros.errors import GenmrosError
 
-PC_CFG = os.path.join(REPO, 'pc_target', 'cfg', 'asp')
+PC_CFG = os.path.join(REPO, 'colcon_mros', 'targets', 'mros_v1_pc', 'cfg', 'asp')
 MROS_V1_ROOT = os.environ.get('MROS_V1_ROOT') or os.path.join(os.path.dirname(REPO), 'shared',
                                                               'mros_v1')
 

@@ -28,10 +28,10 @@ import xmlrpc.client
 
 import pytest
 
-import mros_v1_pc_evaluation
+import evaluation
 from conftest import run_genmros
 from fixtures.build_integration.tools import run
-from mros_v1_pc_evaluation import BOARD_IP, DELIVERY_TIMEOUT, MROS_V1_ROOT, PEER_IP, Board
+from evaluation import BOARD_IP, DELIVERY_TIMEOUT, MROS_V1_ROOT, PEER_IP, Board
 from ros_processes import RosGraph, sourced_environment
 from tcpros_peer import HostilePublisher, RawSubscriber, encode_header
 
@@ -284,11 +284,11 @@ def test_an_unusable_ros_environment_stops_the_node_with_one_line(programs, vari
 
 @pytest.fixture(scope='module')
 def evaluation_app(tmp_path_factory):
-    return mros_v1_pc_evaluation.build_app(MROS_V1_ROOT, str(tmp_path_factory.mktemp('evaluation')))
+    return evaluation.build_app(MROS_V1_ROOT, str(tmp_path_factory.mktemp('evaluation')))
 
 
 def test_paper_evaluation_on_the_real_library(ros_workspace, evaluation_app, tmp_path):
-    directions = mros_v1_pc_evaluation.run(ros_workspace, evaluation_app, 5, str(tmp_path))
+    directions = evaluation.run(ros_workspace, evaluation_app, 5, str(tmp_path))
     assert [direction.title for direction in directions] == [
         'mROS -> rospy listener', 'mROS -> roscpp listener', 'mROS -> mROS on board',
         'rospy talker -> mROS', 'roscpp talker -> mROS']

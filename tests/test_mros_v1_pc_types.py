@@ -32,13 +32,13 @@ import time
 
 import pytest
 
-import mros_v1_pc_evaluation
-from mros_v1_pc_evaluation import DELIVERY_TIMEOUT, MROS_V1_ROOT, PEER_IP, Board
+import evaluation
+from evaluation import DELIVERY_TIMEOUT, MROS_V1_ROOT, PEER_IP, Board
 from ros_processes import RosGraph, sourced_environment
 from tcpros_peer import HostilePublisher, RawSubscriber, encode_header, frame
 
 pytestmark = pytest.mark.skipif(
-    not mros_v1_pc_evaluation.checkout_found(),
+    not evaluation.checkout_found(),
     reason='no mROS v1 checkout at %s (set MROS_V1_ROOT)' % MROS_V1_ROOT)
 
 # The app's groups, in the order of its switch statement.
@@ -90,7 +90,7 @@ def build_relay(mros_root, build_root, storage='heap'):
         options = build_root / 'bounds.options'
         options.write_text(BOUNDS)
         flags += ['--options', str(options)]
-    program = mros_v1_pc_evaluation.build_app(mros_root, str(build_root), 'type_relay.cpp',
+    program = evaluation.build_app(mros_root, str(build_root), 'type_relay.cpp',
                                               types=TYPES, header_flags=flags)
     header = (build_root / 'build' / 'include' / 'mros_test' / 'PersonalData.h').read_text()
     assert ('mros::bounded_string<48> first_name;' if storage == 'bounded'

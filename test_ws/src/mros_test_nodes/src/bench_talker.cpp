@@ -1,19 +1,12 @@
-// The talker of bench/posix_bench.py, one source for both sides it compares:
-// built by test_ws/firmware against the mROS POSIX runtime (MROS_POSIX
-// defined) and by this package against roscpp. Publishes COUNT messages on
+// The roscpp talker of bench/mros_v1_pc_bench.py, the side the real mROS v1
+// library's talker (bench/mros_v1_pc/app.cpp) is compared with. Publishes COUNT messages on
 // /bench, either PersonalData (score = sequence number) or a 640x480 rgb8
 // sensor_msgs/Image (header.seq = sequence number), at RATE per second
 // (0: as fast as publish() returns), and writes "sequence send_time_ns"
 // lines (CLOCK_MONOTONIC, just before publish) to SEND_TIMES_FILE.
 //
 //   bench_talker personal|image COUNT RATE SEND_TIMES_FILE [remappings]
-#ifdef MROS_POSIX
-#include "ros.h"
-static const char* const kNodeName = "mros_bench_talker";
-#else
 #include <ros/ros.h>
-static const char* const kNodeName = "ros_bench_talker";
-#endif
 
 #include <cstdio>
 #include <cstdlib>
@@ -75,7 +68,7 @@ int main(int argc, char** argv) {
   const std::string kind = argv[1];
   const int count = std::atoi(argv[2]);
   const int rate = std::atoi(argv[3]);
-  ros::init(argc, argv, kNodeName);
+  ros::init(argc, argv, "ros_bench_talker");
   ros::NodeHandle n;
   if (kind == "image") {
     sensor_msgs::Image image;

@@ -12,16 +12,21 @@
 #   TARGET        arm: 32-bit ARM Linux (the board's ISA, static, run with
 #                 qemu-arm); native: this PC
 #   BUILD         the output directory
+#   SANITIZER_FLAGS  added to every compile and the link (genmros --sanitize)
 #   MROS_MSG_TYPES, MROS_MSG_PATHS, MROS_MSG_DEFINITION_TEXT, MROS_MSG_FLAGS,
 #   GENMROS, GENMROS_MK: the message headers,
 #                 written into $(BUILD)/include by genmros' make fragment
 #
 # The library's own Makefile.m lists its sources and include directories.
-# The app's include/ (the old generator's headers) is not used.
+# The app's include/ (the old generator's headers) is not used. Goals, one
+# step each: library (mros-lib with the app's headers and configuration,
+# and the PC target's stand-ins), app (the app's objects and its kernel
+# configuration), program (the link); all is the three.
 
 PC_TARGET := $(patsubst %/,%,$(dir $(lastword $(MAKEFILE_LIST))))
 
 all: $(BUILD)/$(APP_NAME)
+program: $(BUILD)/$(APP_NAME)
 
 MROS_DIR := $(MROS_ROOT)/mros-lib
 include $(MROS_DIR)/Makefile.m
@@ -53,16 +58,20 @@ VPATH := $(APP_DIRS) $(BUILD)/cfg $(VPATH) $(PC_SOURCE_DIRS)
 INCLUDES := -I$(BUILD)/include -I$(PC_TARGET)/config $(addprefix -I,$(APP_DIRS)) \
             $(MROS_INCLUDE_PATHS) -I$(BUILD)/cfg -I$(PC_TARGET)/asp -I$(PC_TARGET)/lwip \
             -I$(PC_TARGET)/mbed
-COMMON_FLAGS := $(CPU_FLAGS) -O2 -g -pthread -MMD -MP $(CDEFS) $(INCLUDES)
+COMMON_FLAGS := $(CPU_FLAGS) -O2 -g -pthread -MMD -MP $(SANITIZER_FLAGS) $(CDEFS) $(INCLUDES)
 CFLAGS := $(COMMON_FLAGS)
 # mROS v1's flags for C++ (Makefile.mbd), and the app's own.
 CXXFLAGS := $(COMMON_FLAGS) -std=gnu++98 -fno-rtti -fno-exceptions -fno-builtin $(APP_CXXFLAGS)
 
-PC_OBJS := kernel.o kernel_cfg.o lwip.o ros_environment.o mbed.o
-OBJS := $(addprefix $(OBJ_DIR)/,$(APP_OBJS) $(MROS_CXX_OBJ) $(MROS_C_OBJ) $(PC_OBJS))
+PC_OBJS := kernel.o lwip.o ros_environment.o mbed.o
+LIBRARY_OBJS := $(addprefix $(OBJ_DIR)/,$(MROS_CXX_OBJ) $(MROS_C_OBJ) $(PC_OBJS))
+APP_ONLY_OBJS := $(addprefix $(OBJ_DIR)/,$(APP_OBJS) kernel_cfg.o)
 
-$(BUILD)/$(APP_NAME): $(OBJS)
-	$(CXX) $(CPU_FLAGS) -pthread $(LINK_FLAGS) -o $@ $(OBJS)
+library: $(LIBRARY_OBJS)
+app: $(APP_ONLY_OBJS)
+
+$(BUILD)/$(APP_NAME): $(LIBRARY_OBJS) $(APP_ONLY_OBJS)
+	$(CXX) $(CPU_FLAGS) -pthread $(SANITIZER_FLAGS) $(LINK_FLAGS) -o $@ $^
 
 $(OBJ_DIR)/%.o: %.c | $(OBJ_DIR)
 	$(CC) $(CFLAGS) -c $< -o $@
@@ -75,4 +84,4 @@ $(OBJ_DIR):
 
 -include $(wildcard $(OBJ_DIR)/*.d)
 
-.PHONY: all
+.PHONY: all library app program

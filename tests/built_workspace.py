@@ -1,9 +1,7 @@
-"""Builds shared by the POSIX tests, the evaluation and the benchmark, each
-done once per process in a temporary directory: a copy of test_ws built with
-catkin_make (the real roscpp/rospy nodes of mros_test_nodes; gencpp, genpy
-and genmros messages, the genmros ones also exported to mros_export/) and
-the sample firmware built with CMake, taking the paper's programs' headers
-from that export."""
+"""test_ws built with catkin_make once per process, in a temporary directory:
+the real roscpp/rospy nodes of mros_test_nodes, with gencpp, genpy and
+genmros messages (the genmros ones also exported to mros_export/), for the
+tests and the evaluation that run the mROS v1 library against ROS nodes."""
 
 import atexit
 import functools
@@ -49,16 +47,6 @@ class Workspace:
         return [PYTHON, os.path.join(self.scripts, script)] + list(arguments)
 
 
-class Firmware:
-    """The sample firmware's POSIX build."""
-
-    def __init__(self, root):
-        self.root = root
-
-    def node(self, program, *arguments):
-        return [os.path.join(self.root, program)] + list(arguments)
-
-
 @functools.lru_cache(maxsize=None)
 def workspace(root=None):
     root = root or scratch('mros_test_ws_')
@@ -68,14 +56,3 @@ def workspace(root=None):
           '-DMROS_EXPORT_DIR=' + built.mros_export, '-j2'],
          os.path.join(root, 'catkin_make.log'), cwd=root)
     return built
-
-
-@functools.lru_cache(maxsize=None)
-def firmware(mros_export, root=None):
-    """Built against mros_export, the genmros export of a built Workspace."""
-    root = root or scratch('mros_firmware_')
-    log = os.path.join(root, 'build.log')
-    _run(['cmake', '-S', os.path.join(TEST_WS, 'firmware'), '-B', root,
-          '-DCMAKE_BUILD_TYPE=Release', '-DMROS_EXPORT_DIR=' + mros_export], log)
-    _run(['cmake', '--build', root, '-j2'], log + '.make')
-    return Firmware(root)

@@ -1,0 +1,227 @@
+"""``genmros mros-v1-pc``: an unmodified mROS v1 app and library on a PC.
+
+Asks make what the app's own ``Makefile`` sets, reads its ``app.cfg`` and
+the old generator's JSON file of message types, writes the kernel
+configuration for the PC target (:mod:`.asp_cfg`) and runs make with
+``mros_v1_pc.mk`` beside this module, in three steps: the checkout's
+``mros-lib`` with genmros' headers (through the make fragment) and the
+PC target's ASP, lwIP and mbed stand-ins, the app, the link.
+"""
+
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+from colcon_mros.errors import GenmrosError
+from colcon_mros.installed_files import MAKE_FRAGMENT, installed_file
+from colcon_mros.targets.mros_v1_pc.asp_cfg import read_config, write_kernel_config
+
+TARGET_DIR = os.path.dirname(os.path.abspath(__file__))
+MAKEFILE = os.path.join(TARGET_DIR, 'mros_v1_pc.mk')
+# The cross compiler of the arm target and what runs its programs.
+ARM_COMPILER = 'arm-linux-gnueabihf-g++'
+ARM_RUNNER = 'qemu-arm'
+# What --sanitize adds to every compile and the link (native target only).
+SANITIZER_FLAGS = '-fsanitize=address,undefined -fno-omit-frame-pointer'
+# The steps of a build: (make goal, what the step's line says).
+STEPS = (('library', 'the mROS v1 library of %(root)s, the PC target and the message headers'),
+         ('app', 'the app %(name)s'),
+         ('program', 'link %(program)s'))
+# `make -p` prints each variable after the line naming where it was set.
+_ORIGIN = re.compile(r"^# makefile \(from '(.*)', line \d+\)$")
+_ASSIGNMENT = re.compile(r'^([A-Za-z_][A-Za-z0-9_]*) :{0,2}= ?(.*)$')
+_REFERENCE = re.compile(r'\$[({]([A-Za-z_][A-Za-z0-9_]*)[)}]')
+_UNDEFINED = re.compile(r"undefined reference to `([A-Za-z_]\w*)'")
+
+
+class App:
+    """An mROS v1 app as its Makefile, JSON file and app.cfg describe it."""
+
+    def __init__(self, app_dir, mros_root):
+        self.dir = os.path.abspath(app_dir)
+        self.mros_root = os.path.abspath(mros_root)
+        self.cfg = os.path.join(self.dir, 'app.cfg')
+        variables = app_variables(os.path.join(self.dir, 'Makefile'))
+        self.name = variables.get('APPNAME') or os.path.basename(self.dir)
+        main_source = variables.get('APPLNAME') or 'app'
+        # APPLDIR is relative to the app's directory, where its make runs;
+        # the sample apps also name a directory that is not there.
+        self.source_dirs = [self.dir]
+        for name in variables.get('APPLDIR', '').split():
+            directory = os.path.normpath(os.path.join(self.dir, name))
+            if os.path.isdir(directory) and directory not in self.source_dirs:
+                self.source_dirs.append(directory)
+        self.objects = ['%s.o' % main_source] + variables.get('APPL_COBJS', '').split() + \
+            variables.get('APPL_CXXOBJS', '').split()
+        self.cxx_flags = [flag for flag in variables.get('APPL_CXXFLAGS', '').split()
+                          if flag.startswith('-')]
+        self.json_file = variables.get('MSG_SETTING_JSON')
+
+    def message_types(self):
+        """(types, package paths) from the old generator's JSON file."""
+        candidates = [self.json_file] if self.json_file else []
+        candidates += ['app.json', 'msg_app.json']
+        for name in candidates:
+            path = os.path.join(self.dir, name)
+            if os.path.isfile(path):
+                return _types_of_json(path, self.dir)
+        return [], []
+
+
+def app_variables(makefile):
+    """The variables an app's Makefile sets, as make reads them.
+
+    make runs in an empty directory, so the board's makefiles the app's
+    Makefile includes by relative paths (ASP, mbed, mROS) are not there: the
+    values are the app's own, references expanded."""
+    if not os.path.isfile(makefile):
+        return {}
+    makefile = os.path.abspath(makefile)
+    with tempfile.TemporaryDirectory(prefix='genmros-make-') as scratch:
+        directory = os.path.join(scratch, 'mros_ws', 'app')
+        os.makedirs(directory)
+        database = subprocess.run(['make', '-pn', '-f', makefile], cwd=directory,
+                                  stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True,
+                                  env=dict(os.environ, LC_ALL='C')).stdout
+    values = {}
+    from_app = False
+    for line in database.splitlines():
+        origin = _ORIGIN.match(line)
+        if origin:
+            from_app = origin.group(1) == makefile
+            continue
+        assignment = _ASSIGNMENT.match(line) if from_app else None
+        if assignment:
+            values[assignment.group(1)] = assignment.group(2)
+        from_app = False
+
+    def expand(value, seen):
+        return _REFERENCE.sub(lambda reference: expand(values.get(reference.group(1), ''),
+                                                       seen | {reference.group(1)})
+                              if reference.group(1) not in seen else '', value)
+    return {name: expand(value, {name}).strip() for name, value in values.items()}
+
+
+def _types_of_json(path, app_dir):
+    try:
+        with open(path, encoding='utf-8') as stream:
+            settings = json.load(stream)
+        headers = settings.get('including_msgs', [])
+        catkin_ws = settings.get('catkin_ws_dir')
+    except (OSError, ValueError, AttributeError) as error:
+        raise GenmrosError('not the JSON file of mROS v1\'s message generator: %s' % error, path)
+    types = [re.sub(r'\.h\Z', '', header) for header in headers]
+    paths = []
+    if catkin_ws:
+        workspace = os.path.normpath(os.path.join(app_dir, catkin_ws))
+        if os.path.isdir(workspace):
+            paths.append(workspace)
+    return types, paths
+
+
+def find_mros_root(app_dir, given):
+    """The mROS v1 checkout: given, else the one the app sits in (mros_ws/<app>)."""
+    candidate = given or os.path.join(app_dir, os.pardir, os.pardir)
+    if not os.path.isfile(os.path.join(candidate, 'mros-lib', 'Makefile.m')):
+        where = given or os.path.normpath(candidate)
+        raise GenmrosError('no mROS v1 checkout here (no mros-lib/Makefile.m)%s'
+                           % ('' if given else '; give --mros-root'), where)
+    return os.path.abspath(candidate)
+
+
+def check_tools(options):
+    if options.sanitize and options.target != 'native':
+        raise GenmrosError('--sanitize needs --target native (qemu-arm runs no sanitizer)')
+    compiler = ARM_COMPILER if options.target == 'arm' else 'g++'
+    if shutil.which(compiler) is None:
+        raise GenmrosError('%s not found: install %s' % (
+            compiler, 'g++-arm-linux-gnueabihf (or use --target native)'
+            if options.target == 'arm' else 'g++'))
+    if shutil.which('make') is None:
+        raise GenmrosError('make not found: install make')
+
+
+def runner(target):
+    """The command that runs a program built for target on this PC."""
+    return [ARM_RUNNER] if target == 'arm' else []
+
+
+def _unresolved_task(config, linker_output):
+    """The GenmrosError for a task or handler app.cfg names that no object
+    file defines, from the linker's complaint; None if it is not that."""
+    missing = set(_UNDEFINED.findall(linker_output))
+    for kernel_object in config.objects:
+        function = kernel_object.fields.get('task') or kernel_object.fields.get('handler')
+        if function in missing:
+            return GenmrosError('%s runs %s(), which no source of the app defines (the linker '
+                                'found no definition)' % (kernel_object.name, function),
+                                kernel_object.path, kernel_object.line)
+    return None
+
+
+def build(options):
+    """Builds the app in steps, one line each; returns the program's path."""
+    app_dir = os.path.abspath(options.app_dir)
+    if not os.path.isdir(app_dir):
+        raise GenmrosError('no such directory', options.app_dir)
+    if not os.path.isfile(os.path.join(app_dir, 'app.cfg')):
+        raise GenmrosError('no app.cfg: not an mROS v1 app', options.app_dir)
+    app = App(app_dir, find_mros_root(app_dir, options.mros_root))
+    check_tools(options)
+    # The library's mros.cfg is on the search path, as in ASP's own build.
+    config = read_config(app.cfg, [os.path.join(app.mros_root, 'mros-lib'),
+                                   os.path.join(TARGET_DIR, 'cfg', 'asp')])
+    types, paths = app.message_types()
+    types = options.types or types
+    if not types:
+        raise GenmrosError('no message types: the app has no app.json/msg_app.json; give --type',
+                           app.dir)
+    flavour = options.target + ('-sanitize' if options.sanitize else '')
+    build_dir = os.path.abspath(options.build_dir or os.path.join(app.dir, 'build-pc-' + flavour))
+    write_kernel_config(config, os.path.join(build_dir, 'cfg'))
+    variables = {
+        'MROS_ROOT': app.mros_root, 'APP_NAME': app.name, 'APP_DIRS': ' '.join(app.source_dirs),
+        'APP_OBJS': ' '.join(app.objects), 'APP_CXXFLAGS': ' '.join(app.cxx_flags),
+        'TARGET': options.target, 'BUILD': build_dir,
+        'SANITIZER_FLAGS': SANITIZER_FLAGS if options.sanitize else '',
+        'MROS_MSG_TYPES': ' '.join(types),
+        'MROS_MSG_PATHS': ' '.join(options.msg_paths or paths),
+        'MROS_MSG_DEFINITION_TEXT': options.definition_text,
+        'MROS_MSG_FLAGS': ' '.join(['--storage', options.storage] + [
+            '--options %s' % os.path.abspath(path) for path in options.option_files]),
+        'GENMROS': 'env PYTHONPATH=%s %s -m colcon_mros' % (
+            os.path.dirname(os.path.dirname(os.path.dirname(TARGET_DIR))), sys.executable),
+        'GENMROS_MK': installed_file(MAKE_FRAGMENT),
+    }
+    command = ['make', '--no-print-directory', '-f', MAKEFILE, '-j%d' % options.jobs] + \
+        ([] if options.verbose else ['-s']) + ['%s=%s' % item for item in sorted(variables.items())]
+    program = os.path.join(build_dir, app.name)
+    words = {'root': app.mros_root, 'name': app.name, 'program': program}
+    for goal, line in STEPS:
+        print('genmros: %s' % (line % words), flush=True)
+        if goal != 'program':
+            if subprocess.call(command + [goal]) != 0:
+                raise GenmrosError('building %s for the PC failed (see the compiler\'s output '
+                                   'above)' % app.name, app.dir)
+            continue
+        linked = subprocess.run(command + [goal], stdout=subprocess.PIPE,
+                                stderr=subprocess.STDOUT, text=True)
+        if linked.returncode != 0:
+            error = _unresolved_task(config, linked.stdout)
+            if error is None:
+                sys.stdout.write(linked.stdout)
+                error = GenmrosError('linking %s failed (see the linker\'s output above)'
+                                     % app.name, app.dir)
+            raise error
+        sys.stdout.write(linked.stdout)
+    return program
+
+
+def run_program(program, target):
+    """Replaces this process with the program (ROS_MASTER_URI etc. as set)."""
+    command = runner(target) + [program]
+    os.execvp(command[0], command)
