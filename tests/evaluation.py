@@ -63,6 +63,7 @@ class Board:
         self.set_inputs(**(inputs or {'P6_0': 1}))
         environment = board_environment()
         self.slave_port = int(environment['MROS_V1_SLAVE_PORT'])
+        self.publisher_port = int(environment['MROS_V1_PUBLISHER_PORT'])
         environment.update(MROS_PC_INPUTS=self.inputs, MROS_PC_OUTPUT_LOG=self.outputs)
         self.process = graph.start(os.path.basename(program), list(runner) + [program],
                                    environment)

@@ -18,6 +18,7 @@ pinned by the tests at the end.
 
 import http.client
 import os
+import re
 import socket
 import struct
 import subprocess
@@ -206,10 +207,12 @@ def test_string_pubsub_callback_gets_what_roscpp_and_rospy_publish(ros_side, pro
         board.wait_for_output('P6_15 0.78125')
 
 
-def test_custom_pubsub_round_trip_with_the_samples_roscpp_nodes_and_rospy(ros_side, programs,
-                                                                         tmp_path):
+def round_trip_with_the_samples_roscpp_nodes(ros_side, program, directory, runner=('qemu-arm',)):
+    """custom_pubsub's round trip: the sample's roscpp publisher to the app,
+    which sets its LEDs and publishes what it got back to the sample's
+    roscpp subscriber, every field checked; returns the app's Board."""
     with RosGraph(ros_side) as graph:
-        board = Board(graph, programs['custom_pubsub'], str(tmp_path))
+        board = Board(graph, program, directory, runner=runner)
         subscriber = ros_node(graph, 'custom_subscriber',
                               sample_node(ros_side, 'custom_pubsub', 'custom_subscriber'))
         publisher = ros_node(graph, 'custom_publisher',
@@ -228,6 +231,13 @@ def test_custom_pubsub_round_trip_with_the_samples_roscpp_nodes_and_rospy(ros_si
         subscriber.wait_for(r'red value \[0\.250000\]', start=start)
         subscriber.wait_for(r'green value \[0\.500000\]', start=start)
         subscriber.wait_for(r'blue value \[0\.750000\]', start=start)
+        assert board.process.alive(), board.process.output()
+    return board
+
+
+def test_custom_pubsub_round_trip_with_the_samples_roscpp_nodes_and_rospy(ros_side, programs,
+                                                                         tmp_path):
+    round_trip_with_the_samples_roscpp_nodes(ros_side, programs['custom_pubsub'], str(tmp_path))
     # rospy in a graph of its own (see the string_pubsub test).
     with RosGraph(ros_side) as graph:
         board = Board(graph, programs['custom_pubsub'], str(tmp_path))
@@ -255,15 +265,167 @@ def test_custom_pubsub_round_trip_with_the_samples_roscpp_nodes_and_rospy(ros_si
             raw.close()
 
 
-def test_native_target_runs_custom_pubsub_against_roscpp(ros_side, tmp_path):
-    output = str(tmp_path / 'native')
-    run_genmros('mros-v1-pc', os.path.join(MROS_V1_ROOT, 'mros_ws', 'custom_pubsub'), '-o',
-                output, '--target', 'native', '-j2')
+# A report's place: UBSan's line starts with it; ASan's is its first frame
+# in a source file (below the sanitizer's own interceptors).
+UBSAN_REPORT = re.compile(r'^(\S+?):(\d+):\d+: runtime error: (.*)$', re.M)
+ASAN_REPORT = re.compile(r'ERROR: AddressSanitizer: (\S+)(?:.|\n)*?#\d+ 0x[0-9a-f]+ in \S+ '
+                         r'(/(?!.*libsanitizer)\S+?):(\d+)')
+# The library's own reports in these runs (see the README's limits of the
+# library): its TCPROS header decoder reads each field's length as a
+# uint32 at whatever offset the field starts.
+LIBRARY_REPORTS = {('mros_packet_decoder_cimpl.c', 504,
+                    "load of misaligned address for type 'mRosSizeType', which requires 4 byte "
+                    "alignment")}
+
+
+def sanitizer_reports(output):
+    """{(file name, line, problem)} of every sanitizer report in a board's
+    output, addresses left out; a report from the PC target's own files
+    (its stand-ins) fails the test at once."""
+    reports = {(path, int(line), re.sub(r' 0x[0-9a-f]+', '', problem))
+               for path, line, problem in UBSAN_REPORT.findall(output)}
+    reports |= {(path, int(line), kind) for kind, path, line in ASAN_REPORT.findall(output)}
+    ours = [report for report in reports if '/colcon_mros/' in report[0]]
+    assert not ours, 'sanitizer reports from the PC target itself: %s\n%s' % (ours, output)
+    return {(os.path.basename(path), line, problem) for path, line, problem in reports}
+
+
+@pytest.fixture(scope='module')
+def sanitized(tmp_path_factory):
+    """The sample apps, built for this PC with AddressSanitizer and
+    UndefinedBehaviorSanitizer by genmros mros-v1-pc --sanitize."""
+    build_root = str(tmp_path_factory.mktemp('mros_v1_pc_sanitize'))
+    built = {}
+    for app in APPS:
+        output = os.path.join(build_root, app)
+        run_genmros('mros-v1-pc', os.path.join(MROS_V1_ROOT, 'mros_ws', app), '-o', output,
+                    '--target', 'native', '--sanitize', '-j2')
+        built[app] = os.path.join(output, app)
+    return built
+
+
+def test_sanitized_custom_pubsub_round_trips_with_the_samples_roscpp_nodes(ros_side, sanitized,
+                                                                           tmp_path):
+    board = round_trip_with_the_samples_roscpp_nodes(ros_side, sanitized['custom_pubsub'],
+                                                     str(tmp_path), runner=())
+    assert sanitizer_reports(board.process.output()) <= LIBRARY_REPORTS
+
+
+def _open_sockets(pid):
+    return sum(os.readlink('/proc/%d/fd/%s' % (pid, fd)).startswith('socket:')
+               for fd in os.listdir('/proc/%d/fd' % pid))
+
+
+def _threads(pid):
+    return len(os.listdir('/proc/%d/task' % pid))
+
+
+def _send_and_vanish(port, data, linger=0.3):
+    """Connects to the board, sends data, waits a little and goes away."""
+    connection = socket.create_connection((BOARD_IP, port), timeout=5)
+    if data:
+        connection.sendall(data)
+    time.sleep(linger)
+    connection.close()
+
+
+def _held_until(pid, expected, timeout=DELIVERY_TIMEOUT):
+    """(threads, sockets) once they are back to expected, or as they are at the timeout."""
+    deadline = time.monotonic() + timeout
+    while True:
+        held = (_threads(pid), _open_sockets(pid))
+        if held == expected or time.monotonic() > deadline:
+            return held
+        time.sleep(0.2)
+
+
+def _sanitized_string_pubsub(graph, sanitized, directory):
+    board = Board(graph, sanitized['string_pubsub'], directory, runner=[])
+    graph.wait_for_graph(subscribers=[('/test_string', '/mros_node2')],
+                         publishers=[('/mros_msg', '/mros_node')])
+    time.sleep(2)  # the library's registrations with the master are done
+    return board
+
+
+def test_hostile_peers_leave_the_sanitized_app_running_and_holding_nothing(ros_side, sanitized,
+                                                                            tmp_path):
     with RosGraph(ros_side) as graph:
-        Board(graph, os.path.join(output, 'custom_pubsub'), str(tmp_path), runner=[])
-        subscriber = ros_node(graph, 'custom_subscriber',
-                              sample_node(ros_side, 'custom_pubsub', 'custom_subscriber'))
-        subscriber.wait_for(r'I heard from \[Charlie Parker\]', timeout=DELIVERY_TIMEOUT)
+        board = _sanitized_string_pubsub(graph, sanitized, str(tmp_path))
+        pid = board.process.popen.pid
+        before = (_threads(pid), _open_sockets(pid))
+        # Peers that connect and vanish, on the slave (XML-RPC) and TCPROS ports.
+        for _ in range(20):
+            _send_and_vanish(board.slave_port, b'', linger=0)
+            _send_and_vanish(board.publisher_port, b'', linger=0)
+        # Malformed and truncated XML-RPC calls (each shorter than the
+        # library's receive buffer, which has no bound of its own).
+        for request in (b'GARBAGE\r\n\r\n', b'POST / HTTP/1.1\r\n',
+                        b'POST / HTTP/1.1\r\nContent-Length: 400\r\n\r\n<?xml version=',
+                        b'POST / HTTP/1.1\r\nContent-Length: -7\r\n\r\n',
+                        b'\x00' * 200):
+            _send_and_vanish(board.slave_port, request)
+        # Malformed TCPROS connection headers and frames (the library's
+        # limits below pin the headers it cannot take).
+        for header in (struct.pack('<I', 0xffffffff), struct.pack('<I', 300) + b'topic=',
+                       b'\x01', encode_header({'topic': '/mros_msg'})[:9]):
+            _send_and_vanish(board.publisher_port, header)
+        # A publisher announced by publisherUpdate that sends garbage.
+        with HostilePublisher(graph, '/hostile', '/test_string', 'std_msgs/String') as hostile:
+            connections = serve_blue(hostile, board, {},
+                                     lambda: 'I heard [blue]' in board.process.output())
+            for connection in connections:
+                connection.sendall(struct.pack('<I', 40) + os.urandom(40) + b'\xff' * 8)
+                connection.close()
+            time.sleep(2)
+        assert board.process.alive(), board.process.output()
+        # Once the peers are gone, the app holds what it held before, and it
+        # still serves a subscriber (whose socket the library keeps until it
+        # next publishes: not measured).
+        assert _held_until(pid, before) == before
+        raw = RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5)
+        assert raw.header['md5sum'] == STRING_MD5
+        raw.close()
+    assert sanitizer_reports(board.process.output()) <= LIBRARY_REPORTS
+
+
+def test_limit_a_request_the_library_cannot_answer_leaks_its_socket(ros_side, sanitized, tmp_path):
+    # The slave task and the publisher task return from a failed reply
+    # without closing the peer's socket (mros_protocol_slave_cimpl.c after
+    # mros_proc_slave, mros_protocol_publish_cimpl.c after
+    # mros_proc_pub_tcpros): each such request keeps one socket until the
+    # app's file descriptors run out.
+    with RosGraph(ros_side) as graph:
+        board = _sanitized_string_pubsub(graph, sanitized, str(tmp_path))
+        pid = board.process.popen.pid
+        before = _open_sockets(pid)
+        body = b'<methodCall><methodName>requestTopic</methodName></methodCall>'
+        _send_and_vanish(board.slave_port, b'POST / HTTP/1.1\r\nContent-Length: %d\r\n\r\n%s'
+                         % (len(body), body))
+        board.process.wait_for(r'mros_xmlpacket_request_topic_req_decode\(\)',
+                               timeout=DELIVERY_TIMEOUT)
+        _send_and_vanish(board.publisher_port,
+                         encode_header({'topic': '/mros_msg'}) + b'\xff' * 64)
+        board.process.wait_for(r'encode_tcpros_topic_res\(\)', timeout=DELIVERY_TIMEOUT)
+        assert _held_until(pid, (_threads(pid), before + 2))[1] == before + 2
+        assert board.process.alive(), board.process.output()
+    assert sanitizer_reports(board.process.output()) <= LIBRARY_REPORTS
+
+
+def test_limit_a_connection_header_without_a_topic_crashes_the_library(ros_side, sanitized,
+                                                                       tmp_path):
+    # A field whose length runs past the header leaves the decoder without
+    # a topic; the publisher task then calls strlen on the NULL topic.
+    with RosGraph(ros_side) as graph:
+        board = _sanitized_string_pubsub(graph, sanitized, str(tmp_path))
+        _send_and_vanish(board.publisher_port, struct.pack('<I', 8) + struct.pack('<I', 100)
+                         + b'abcd')
+        assert board.process.popen.wait(timeout=DELIVERY_TIMEOUT) != 0
+    output = board.process.output()
+    assert 'ERROR: AddressSanitizer: SEGV on unknown address 0x000000000000' in output, output
+    assert sanitizer_reports(output) == {
+        ('mros_topic_cimpl.c', 95, 'null pointer passed as argument 1, which is declared to never '
+                                   'be null'),
+        ('mros_topic_cimpl.c', 95, 'SEGV')}
 
 
 @pytest.mark.parametrize('variable, value, problem', [
