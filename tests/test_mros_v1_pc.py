@@ -34,6 +34,7 @@ from conftest import run_genmros
 from fixtures.build_integration.tools import run
 from evaluation import BOARD_IP, DELIVERY_TIMEOUT, MROS_V1_ROOT, PEER_IP, Board
 from ros_processes import RosGraph, sourced_environment
+from sanitizer_reports import LIBRARY_REPORTS, sanitizer_reports
 from tcpros_peer import HostilePublisher, RawSubscriber, encode_header
 
 pytestmark = pytest.mark.skipif(
@@ -263,31 +264,6 @@ def test_custom_pubsub_round_trip_with_the_samples_roscpp_nodes_and_rospy(ros_si
             assert raw.next_body() == expected
         finally:
             raw.close()
-
-
-# A report's place: UBSan's line starts with it; ASan's is its first frame
-# in a source file (below the sanitizer's own interceptors).
-UBSAN_REPORT = re.compile(r'^(\S+?):(\d+):\d+: runtime error: (.*)$', re.M)
-ASAN_REPORT = re.compile(r'ERROR: AddressSanitizer: (\S+)(?:.|\n)*?#\d+ 0x[0-9a-f]+ in \S+ '
-                         r'(/(?!.*libsanitizer)\S+?):(\d+)')
-# The library's own reports in these runs (see the README's limits of the
-# library): its TCPROS header decoder reads each field's length as a
-# uint32 at whatever offset the field starts.
-LIBRARY_REPORTS = {('mros_packet_decoder_cimpl.c', 504,
-                    "load of misaligned address for type 'mRosSizeType', which requires 4 byte "
-                    "alignment")}
-
-
-def sanitizer_reports(output):
-    """{(file name, line, problem)} of every sanitizer report in a board's
-    output, addresses left out; a report from the PC target's own files
-    (its stand-ins) fails the test at once."""
-    reports = {(path, int(line), re.sub(r' 0x[0-9a-f]+', '', problem))
-               for path, line, problem in UBSAN_REPORT.findall(output)}
-    reports |= {(path, int(line), kind) for kind, path, line in ASAN_REPORT.findall(output)}
-    ours = [report for report in reports if '/colcon_mros/' in report[0]]
-    assert not ours, 'sanitizer reports from the PC target itself: %s\n%s' % (ours, output)
-    return {(os.path.basename(path), line, problem) for path, line, problem in reports}
 
 
 @pytest.fixture(scope='module')

@@ -35,6 +35,7 @@ import pytest
 import evaluation
 from evaluation import DELIVERY_TIMEOUT, MROS_V1_ROOT, PEER_IP, Board
 from ros_processes import RosGraph, sourced_environment
+from sanitizer_reports import sanitizer_reports
 from tcpros_peer import HostilePublisher, RawSubscriber, encode_header, frame
 
 pytestmark = pytest.mark.skipif(
@@ -84,14 +85,14 @@ def genpy_samples(ros_workspace):
             for name, (datatype, md5sum, samples) in json.loads(output).items()}
 
 
-def build_relay(mros_root, build_root, storage='heap'):
-    flags = ['--storage', storage]
+def build_relay(mros_root, build_root, storage='heap', target='arm', sanitize=False):
+    flags = ['--storage', storage] + (['--sanitize'] if sanitize else [])
     if storage == 'bounded':
         options = build_root / 'bounds.options'
         options.write_text(BOUNDS)
         flags += ['--options', str(options)]
-    program = evaluation.build_app(mros_root, str(build_root), 'type_relay.cpp',
-                                              types=TYPES, header_flags=flags)
+    program = evaluation.build_app(mros_root, str(build_root), 'type_relay.cpp', target=target,
+                                   types=TYPES, header_flags=flags)
     header = (build_root / 'build' / 'include' / 'mros_test' / 'PersonalData.h').read_text()
     assert ('mros::bounded_string<48> first_name;' if storage == 'bounded'
             else 'std::string first_name;') in header
@@ -196,6 +197,30 @@ def test_with_raised_header_buffers_rospy_round_trips_every_type(
         assert board.process.alive(), board.process.output()
 
 
+ROSPY_CONSTANTS_SUBSCRIBER = (
+    'import rospy; from mros_test.msg import Constants; rospy.init_node("long_header"); '
+    'rospy.Subscriber("/back/Constants", Constants, lambda m: None); rospy.spin()')
+
+
+def test_limit_sanitized_a_subscriber_header_over_512_bytes_is_an_overflow_in_the_library(
+        ros_workspace, tmp_path):
+    # What the README shows: the same rospy subscriber as below, on the
+    # sanitized native build; AddressSanitizer stops the app at the write
+    # past the library's 512-byte header buffer.
+    program = build_relay(MROS_V1_ROOT, tmp_path / 'relay', target='native', sanitize=True)
+    with RosGraph(sourced_environment(ros_workspace.setup_bash)) as graph:
+        board = Board(graph, program, str(tmp_path), runner=[], inputs={'P6_0': 0, 'P6_1': 1})
+        board.process.wait_for('relay ready', timeout=DELIVERY_TIMEOUT)
+        graph.start('rospy subscriber', ['/usr/bin/python3', '-c', ROSPY_CONSTANTS_SUBSCRIBER],
+                    {'ROS_IP': PEER_IP})
+        assert board.process.popen.wait(timeout=DELIVERY_TIMEOUT) != 0
+    output = board.process.output()
+    assert "0 bytes to the right of global variable 'mros_publish_packet_buffer'" in output, output
+    assert 'of size 512' in output and 'in mros_proc_tcpros_receive ' in output, output
+    assert sanitizer_reports(output) == {('mros_protocol_publish_cimpl.c', 13,
+                                          'global-buffer-overflow')}
+
+
 def test_limit_a_subscriber_header_over_512_bytes_overruns_the_library(
         ros_workspace, genpy_samples, relay_program, tmp_path):
     # rospy's header for Constants carries its 554-byte definition text.
@@ -204,11 +229,8 @@ def test_limit_a_subscriber_header_over_512_bytes_overruns_the_library(
         datatype, md5sum, _ = genpy_samples['Constants']
         RawSubscriber(board.slave_uri, '/back/Constants', datatype, md5sum,
                       extra_fields=REPLY_ROOM).close()
-        graph.start('rospy subscriber', ['/usr/bin/python3', '-c', (
-            'import rospy; from mros_test.msg import Constants; '
-            'rospy.init_node("long_header"); '
-            'rospy.Subscriber("/back/Constants", Constants, lambda m: None); rospy.spin()')],
-            {'ROS_IP': PEER_IP})
+        graph.start('rospy subscriber', ['/usr/bin/python3', '-c', ROSPY_CONSTANTS_SUBSCRIBER],
+                    {'ROS_IP': PEER_IP})
         # Only TCPROS subscribers make the board log 'pub accepted': the raw
         # one's line, then rospy's, whose header the library has read (and
         # overrun the buffer with) once it logs the new connector.
