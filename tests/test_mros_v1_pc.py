@@ -462,6 +462,49 @@ def test_limit_with_one_publisher_connected_no_other_is_read(ros_side, programs,
         type_until_heard(roscpp, 'green\n', board, r'I heard \[green\]')
 
 
+def ros_tool(graph, *argv, timeout=30):
+    """(exit status, output) of a ROS command-line tool run on the peer address."""
+    tool = graph.start(' '.join(argv), list(argv), {'ROS_IP': PEER_IP})
+    try:
+        tool.popen.wait(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        tool.stop()
+    return tool.popen.returncode, tool.output()
+
+
+def test_ros_tools_see_the_app_and_what_the_library_refuses(ros_side, programs, tmp_path):
+    with RosGraph(ros_side) as graph:
+        Board(graph, programs['custom_pubsub'], str(tmp_path))
+        graph.wait_for_graph(publishers=[('/mros_msg', '/mros_node')],
+                             subscribers=[('/test_msg', '/mros_node2')])
+        # What the master knows works.
+        assert ros_tool(graph, 'rosnode', 'list') == (0, '/mros_node\n/mros_node2')
+        assert ros_tool(graph, 'rostopic', 'list') == (0, '/mros_msg\n/test_msg')
+        assert ros_tool(graph, 'rostopic', 'type', '/mros_msg') == (
+            0, 'custom_pubsub/UserTypeTest')
+        status, info = ros_tool(graph, 'rostopic', 'info', '/mros_msg')
+        assert status == 0 and 'Type: custom_pubsub/UserTypeTest' in info, info
+        assert ' * /mros_node (http://%s:' % BOARD_IP in info, info
+        # A subscriber of the type gets the data: rostopic echo.
+        status, echoed = ros_tool(graph, 'rostopic', 'echo', '-n', '1', '/mros_msg')
+        assert status == 0 and 'firstName: "Charlie"' in echoed and 'lastName: "Parker"' in echoed
+        # The library answers no slave call but requestTopic: rosnode info
+        # and rosnode ping get nothing from the node.
+        status, info = ros_tool(graph, 'rosnode', 'info', '/mros_node')
+        assert status == 1 and 'ERROR: Communication with node[http://%s:' % BOARD_IP in info
+        status, ping = ros_tool(graph, 'rosnode', 'ping', '-c', '1', '/mros_node')
+        assert 'connection to [/mros_node] timed out' in ping, ping
+        # rostopic hz and rosbag record subscribe with AnyMsg, whose short
+        # connection header the library cannot answer (see the AnyMsg limit).
+        status, rates = ros_tool(graph, 'rostopic', 'hz', '/mros_msg', timeout=6)
+        assert 'no new messages' in rates and 'average rate' not in rates, rates
+        bag = str(tmp_path / 'mros.bag')
+        ros_tool(graph, 'rosbag', 'record', '--duration=4', '-O', bag, '/mros_msg')
+        status, bag_info = ros_tool(graph, 'rosbag', 'info', bag)
+        # A bag with no message: rosbag info lists no duration, topics or messages.
+        assert status == 0 and 'version: 2.0' in bag_info and 'messages:' not in bag_info, bag_info
+
+
 def test_limit_no_message_definition_and_no_data_for_anymsg(ros_side, programs, tmp_path):
     with RosGraph(ros_side) as graph:
         board = Board(graph, programs['custom_pubsub'], str(tmp_path))
