@@ -5,7 +5,8 @@ made with --system-site-packages gets its own install. Each install runs its
 own genmros, finds its own CMake files, and `colcon build --mros-export`
 writes an mros_export.cmake that include()s that install's CMake module,
 which then configures and builds a firmware. Both sit beside the system's
-Debian package, which they hide for their user or venv.
+Debian package, which they hide for their user or venv. The venv's genmros
+also builds and runs an mROS v1 app with the PC target it installed.
 """
 
 import os
@@ -14,7 +15,9 @@ import subprocess
 
 import pytest
 
-from conftest import TEST_WS
+import evaluation
+from conftest import REPO, TEST_WS
+from ros_processes import RosGraph
 from user_install import NOBODY, Install, copy_sources, install_as_nobody, pip_flags
 
 FIRMWARE_CMAKE = '''\
@@ -91,3 +94,26 @@ def test_colcon_export_points_a_firmware_at_the_install(install):
     install.run(['cmake', '-S', firmware, '-B', build], firmware)
     install.run(['cmake', '--build', build], firmware)
     assert install.run([os.path.join(build, 'firmware')], firmware, check=False).returncode == 0
+
+
+def test_the_pc_target_builds_and_runs_an_app_from_the_installed_package(venv_install, tmp_path):
+    mros_root = evaluation.MROS_V1_ROOT
+    if not evaluation.checkout_found():
+        pytest.skip('no mROS v1 checkout at %s (set MROS_V1_ROOT)' % mros_root)
+    output = str(tmp_path / 'string_pubsub')
+    built = venv_install.run(['genmros', 'mros-v1-pc', '-v', '--target', 'native', '-j2', '-o',
+                              output, os.path.join(mros_root, 'mros_ws', 'string_pubsub')],
+                             venv_install.root)
+    # The target's files, and the program, come from the venv's package.
+    installed_target = venv_install.run(
+        ['python3', '-c', 'import colcon_mros.targets.mros_v1_pc as t, os; '
+                          'print(os.path.dirname(t.__file__))'], venv_install.root).stdout.strip()
+    assert installed_target.startswith(venv_install.prefix + os.sep)
+    assert '-I%s/asp' % installed_target in built.stdout, built.stdout[-3000:]
+    assert REPO not in built.stdout
+    program = os.path.join(output, 'string_pubsub')
+    assert built.stdout.rstrip().endswith('run it with ROS_MASTER_URI and ROS_IP set: ' + program)
+    with RosGraph() as graph:
+        evaluation.Board(graph, program, str(tmp_path), runner=[])
+        graph.wait_for_graph(publishers=[('/mros_msg', '/mros_node')],
+                             subscribers=[('/test_string', '/mros_node2')])
