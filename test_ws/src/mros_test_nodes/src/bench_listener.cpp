@@ -1,4 +1,4 @@
-// The receiving roscpp node of bench/posix_bench.py: subscribes /bench
+// The receiving roscpp node of bench/mros_v1_pc_bench.py: subscribes /bench
 // (PersonalData or Image, TCP_NODELAY), stamps every message on arrival in
 // its callback (CLOCK_MONOTONIC) and, after COUNT messages or IDLE_S seconds
 // without one, writes "sequence receive_time_ns" lines to RECEIVE_TIMES_FILE.

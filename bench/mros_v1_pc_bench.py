@@ -1,0 +1,152 @@
+#!/usr/bin/env python3
+"""Throughput and latency of the real mROS v1 library on the PC target
+against roscpp, side by side in one run: the library's talker
+(bench/mros_v1_pc/app.cpp, built natively by genmros mros-v1-pc with the
+evaluation app's app.cfg and custom_pubsub's configuration) -> a roscpp node,
+and a roscpp talker (mros_test_nodes bench_talker) -> the same roscpp node,
+both with mros_test/PersonalData, through a real rosmaster on a free
+loopback port. The library's sample memory pools hold at most 1 KiB a
+message, so no image is sent. Information, not a goal: the library is not
+ours.
+
+Latency: messages at a fixed rate, send time (just before publish) to the
+roscpp subscriber's callback, CLOCK_MONOTONIC on both sides. Throughput:
+messages published as fast as each side goes (roscpp: as fast as publish()
+returns; the library's task gives up the CPU after each publish, as an ASP
+task must for the library to send), divided by the time from the first send
+to the last arrival; the share delivered is shown beside it.
+Prints a table with ratios (mROS v1 / roscpp).
+
+  bench/mros_v1_pc_bench.py [--build-dir DIR] [--rounds N]
+"""
+
+import argparse
+import os
+import statistics
+import sys
+import tempfile
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(REPO, 'tests'))
+
+import built_workspace  # noqa: E402
+import evaluation  # noqa: E402
+from ros_processes import RosGraph, sourced_environment  # noqa: E402
+
+# (count, rate per second; 0: as fast as publish() returns)
+LATENCY = (2000, 1000)
+THROUGHPUT = (5000, 0)
+def read_times(path):
+    times = {}
+    with open(path) as lines:
+        for line in lines:
+            sequence, stamp = line.split()
+            times[int(sequence)] = int(stamp)
+    return times
+
+
+def run_once(graph, talker_argv, listener_argv, scratch, tag, talker_env=None):
+    """Runs one talker -> listener transfer; returns (send, receive) times.
+    The send times' file is the talker's last argument, or, with talker_env,
+    the value of its MROS_BENCH ("COUNT RATE FILE")."""
+    send_path = os.path.join(scratch, tag + '.send')
+    receive_path = os.path.join(scratch, tag + '.receive')
+    listener = graph.start('bench_listener ' + tag, listener_argv + [receive_path])
+    graph.wait_for_graph(subscribers=[('/bench', '/ros_bench_listener')])
+    if talker_env is not None:
+        talker_env = dict(talker_env, MROS_BENCH='%s %s' % (talker_env['MROS_BENCH'], send_path))
+        talker = graph.start('bench_talker ' + tag, talker_argv, talker_env)
+    else:
+        talker = graph.start('bench_talker ' + tag, talker_argv + [send_path])
+    talker.popen.wait(timeout=300)
+    listener.popen.wait(timeout=60)
+    assert talker.popen.returncode == 0, talker.output()
+    assert listener.popen.returncode == 0, listener.output()
+    return read_times(send_path), read_times(receive_path)
+
+
+def latency_stats(send, receive):
+    latencies = sorted((receive[s] - send[s]) / 1000.0 for s in receive if s in send)
+    def percentile(p):
+        return latencies[min(len(latencies) - 1, int(p / 100.0 * len(latencies)))]
+    return {'p50': percentile(50), 'p90': percentile(90), 'p99': percentile(99),
+            'delivered': len(latencies) / float(len(send))}
+
+
+def throughput_stats(send, receive):
+    span = (max(receive.values()) - min(send.values())) / 1e9
+    return {'rate': len(receive) / span, 'delivered': len(receive) / float(len(send))}
+
+
+def measure(graph, workspace, talker, on_board, scratch, tag):
+    """Latency and throughput of one talker -> the roscpp listener; an app
+    on the board (on_board) gets its own ports each run."""
+    results = {}
+    for (count, rate), kind in ((LATENCY, 'latency'), (THROUGHPUT, 'flood')):
+        listener = workspace.roscpp('bench_listener', 'personal', str(count), '3')
+        if on_board:
+            argv = talker
+            environment = dict(evaluation.board_environment(), MROS_BENCH='%d %d' % (count, rate))
+        else:
+            argv, environment = talker + [str(count), str(rate)], None
+        send, receive = run_once(graph, argv, listener, scratch, '%s-%s' % (tag, kind),
+                                 environment)
+        if kind == 'latency':
+            results.update(latency_stats(send, receive))
+        else:
+            flood = throughput_stats(send, receive)
+            results['rate'] = flood['rate']
+            results['flood_delivered'] = flood['delivered']
+    return results
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    parser.add_argument('--build-dir', help='keep the builds here (default: a temporary dir)')
+    parser.add_argument('--rounds', type=int, default=1,
+                        help='alternate the library and roscpp this many times; medians are shown')
+    args = parser.parse_args()
+    if not evaluation.checkout_found():
+        print('no mROS v1 checkout at %s: set MROS_V1_ROOT' % evaluation.MROS_V1_ROOT,
+              file=sys.stderr)
+        return 1
+    build_root = os.path.abspath(args.build_dir) if args.build_dir else \
+        built_workspace.scratch('mros_v1_pc_bench_')
+    os.makedirs(os.path.join(build_root, 'test_ws'), exist_ok=True)
+    workspace = built_workspace.workspace(os.path.join(build_root, 'test_ws'))
+    program = evaluation.build_app(evaluation.MROS_V1_ROOT, os.path.join(build_root, 'app'),
+                                   os.path.join(REPO, 'bench', 'mros_v1_pc', 'app.cpp'),
+                                   target='native')
+    samples = {'mros_v1': [], 'roscpp': []}
+    with tempfile.TemporaryDirectory(prefix='mros_v1_pc_bench_') as scratch, \
+            RosGraph(sourced_environment(workspace.setup_bash)) as graph:
+        for round_index in range(args.rounds):
+            samples['mros_v1'].append(measure(graph, workspace, [program], True, scratch,
+                                              'mros_v1-%d' % round_index))
+            samples['roscpp'].append(measure(graph, workspace,
+                                             workspace.roscpp('bench_talker', 'personal'), False,
+                                             scratch, 'roscpp-%d' % round_index))
+    print_table(samples, args.rounds)
+    return 0
+
+
+def print_table(samples, rounds):
+    rows = [('throughput [msg/s]', 'rate', '%.0f'),
+            ('delivered when flooding', 'flood_delivered', '%.3f'),
+            ('latency p50 [us]', 'p50', '%.0f'),
+            ('latency p90 [us]', 'p90', '%.0f'),
+            ('latency p99 [us]', 'p99', '%.0f'),
+            ('delivered at %d/s' % LATENCY[1], 'delivered', '%.3f')]
+    print('\nPersonalData to a roscpp node: the real mROS v1 library (PC target, native) vs. '
+          'roscpp (same machine, one run, median of %d alternating round(s))' % rounds)
+    print('| metric | mROS v1 | roscpp | mROS v1/roscpp |')
+    print('|---|---:|---:|---:|')
+    for label, key, fmt in rows:
+        mros = statistics.median(r[key] for r in samples['mros_v1'])
+        roscpp = statistics.median(r[key] for r in samples['roscpp'])
+        print('| %s | %s | %s | %.2f |' % (label, fmt % mros, fmt % roscpp,
+                                          mros / roscpp if roscpp else 0))
+
+
+if __name__ == '__main__':
+    sys.exit(main())
