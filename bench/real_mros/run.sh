@@ -4,8 +4,9 @@
 # image_publisher, put the export in place of each app's include/, and
 # compile the real mros-lib/mros-src/api/ros.cpp and the apps' app.cpp with
 # the flags of mROS v1's Makefiles (-std=gnu++98 -fno-rtti -fno-exceptions
-# -fno-builtin -Os, GR-PEACH's Cortex-A9, and a Cortex-M4). The RTOS, lwIP
-# and mbed headers are our own stand-ins (stubs/); everything else is the
+# -fno-builtin -Os, GR-PEACH's Cortex-A9, and a Cortex-M4). The RTOS and
+# mbed headers are the mROS v1 PC target's stand-ins, lwIP's types are
+# declared in board_only/ (see its README); everything else is the
 # checkout's. Prints each compile's warnings from genmros' headers (none is
 # the expectation; the apps' own warnings are counted, not shown) and the
 # text+data+bss of ros.o and app.o with the headers mROS ships and with
@@ -32,7 +33,8 @@ else
 fi
 
 src="$mros/mros-lib/mros-src"
-includes=(-I"$here/stubs")
+target="$repo/colcon_mros/targets/mros_v1_pc"
+includes=(-I"$target/asp" -I"$target/mbed" -I"$here/board_only")
 for dir in inc api protocol/cimpl node/cimpl topic/cimpl os/target/os_asp comm/cimpl/target/lwip \
     comm/cimpl packet/cimpl packet/template/version/kinetic packet/cimpl/version/kinetic transfer/cimpl; do
   includes+=(-I"$src/$dir")
@@ -60,7 +62,7 @@ compile() {  # cpu headers app source object -> prints "size warnings-from-genmr
   fi
   # shellcheck disable=SC2086
   if ! arm-none-eabi-g++ ${cpus[$cpu]} "${flags[@]}" "${includes[@]}" "${include[@]}" \
-      -I"$mros/mros_ws/$app" -I"$mros/mros_ws/$app/mros_config" \
+      -I"$work/cfg/$app" -I"$mros/mros_ws/$app" -I"$mros/mros_ws/$app/mros_config" \
       -I"$mros/mros_ws/$app/mros_config/os/target/os_asp" "$source" -o "$object" 2>"$log"; then
     echo "compile failed: $app $headers $cpu $(basename "$source")" >&2
     cat "$log" >&2
@@ -84,6 +86,19 @@ for entry in "${apps[@]}"; do
   builds_app=${!#}
   arguments=("${@:2:$#-2}")
   PYTHONPATH="$repo" /usr/bin/python3 -m colcon_mros export "${arguments[@]}" -o "$work/export/$app" >/dev/null
+  # The task IDs ros.cpp names (kernel_cfg.h), from the app's app.cfg as the
+  # PC target makes them; from the library's own mros.cfg where the app's
+  # includes board libraries the target does not have (image_publisher's camera).
+  PYTHONPATH="$repo" /usr/bin/python3 -c 'import sys
+from colcon_mros.errors import GenmrosError
+from colcon_mros.targets.mros_v1_pc.asp_cfg import read_config, write_kernel_config
+app_cfg, mros_lib, target_cfg, output = sys.argv[1:]
+try:
+    config = read_config(app_cfg, [mros_lib, target_cfg])
+except GenmrosError:
+    config = read_config(mros_lib + "/mros.cfg", [target_cfg])
+write_kernel_config(config, output)' \
+    "$mros/mros_ws/$app/app.cfg" "$mros/mros-lib" "$target/cfg/asp" "$work/cfg/$app"
   sources=("$src/api/ros.cpp")
   [ "$builds_app" = yes ] && sources+=("$mros/mros_ws/$app/app.cpp")
   for cpu in cortex-a9 cortex-m4; do
