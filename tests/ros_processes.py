@@ -1,4 +1,4 @@
-"""Real ROS processes for the POSIX tests, the evaluation and the benchmark:
+"""Real ROS processes for the mROS v1 tests, the evaluation and the benchmark:
 a rosmaster on a free 127.0.0.1 port, nodes started in their own process
 groups with their output captured line by line, and a RosGraph context that
 stops every process it started (SIGINT, then SIGKILL to the whole group),
