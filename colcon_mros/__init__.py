@@ -22,6 +22,8 @@ The package is laid out along the generation pipeline:
   (where the CMake module and make fragment are)
 - ``colcon_export``: the ``colcon build --mros-export`` hook, and
   ``colcon_build``: what it exports
+- ``targets.mros_v1_pc``: the user's mROS v1 library and app on a PC
+  (``genmros mros-v1-pc``)
 """
 
 __version__ = '0.1.0'

@@ -170,8 +170,9 @@ def build(options):
         raise GenmrosError('no such directory', options.app_dir)
     if not os.path.isfile(os.path.join(app_dir, 'app.cfg')):
         raise GenmrosError('no app.cfg: not an mROS v1 app', options.app_dir)
-    app = App(app_dir, find_mros_root(app_dir, options.mros_root))
-    check_tools(options)
+    mros_root = find_mros_root(app_dir, options.mros_root)
+    check_tools(options)  # make reads the app's Makefile next
+    app = App(app_dir, mros_root)
     # The library's mros.cfg is on the search path, as in ASP's own build.
     config = read_config(app.cfg, [os.path.join(app.mros_root, 'mros-lib'),
                                    os.path.join(TARGET_DIR, 'cfg', 'asp')])
