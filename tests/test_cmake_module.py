@@ -210,27 +210,6 @@ def test_import_fails_at_configure_time_without_an_export(firmware, tmp_path):
 
 
 
-SAMPLE_FIRMWARE = os.path.join(os.path.dirname(TEST_WS_SRC), 'firmware')
-PAPER_PROGRAMS = ('mros_personal_talker', 'mros_personal_listener')
-
-
-@pytest.mark.parametrize('function', ['mros_generate_messages', 'mros_import_messages'])
-def test_sample_firmware_builds_with_each_function(function, catkin_export, tmp_path):
-    """test_ws/firmware: the paper's PersonalData talker and listener."""
-    build_dir = str(tmp_path / 'sample')
-    command = ['cmake', '-S', SAMPLE_FIRMWARE, '-B', build_dir]
-    if function == 'mros_import_messages':
-        command.append('-DMROS_EXPORT_DIR=%s' % catkin_export)
-    run(command, '/')
-    run(['cmake', '--build', build_dir, '--target'] + list(PAPER_PROGRAMS), build_dir)
-    for program in PAPER_PROGRAMS:
-        assert os.access(os.path.join(build_dir, program), os.X_OK)
-        generated = os.listdir(os.path.join(build_dir, 'mros_messages', program))
-        # Imported: the firmware's own aggregates only; generated: the headers too.
-        assert ('mros_test' in generated) == (function == 'mros_generate_messages')
-        assert 'message_headers.h' in generated
-
-
 def test_import_from_a_catkin_export_of_types_that_nest_installed_ones(firmware, catkin_export):
     # NestedTypes holds a std_msgs/Header and geometry_msgs types: the catkin
     # export carries their headers and definitions, so no ROS is needed here.
