@@ -12,7 +12,7 @@ import os
 import sys
 
 from colcon_mros import __version__
-from colcon_mros.defaults import (DEFAULT_VARIABLE_SIZE_BUDGET, DEFINITION_TEXTS, EXPORT_PARTS,
+from colcon_mros.generator.defaults import (DEFAULT_VARIABLE_SIZE_BUDGET, DEFINITION_TEXTS, EXPORT_PARTS,
                                   PC_TARGETS, STORAGE_KINDS)
 from colcon_mros.errors import GenmrosError
 
@@ -202,10 +202,10 @@ def _parser():
 
 
 def _generate(options):
-    from colcon_mros.ros_environment import require_ros_python
+    from colcon_mros.generator.ros_environment import require_ros_python
     require_ros_python()
-    from colcon_mros.generate import generate_files  # needs genmsg and empy
-    from colcon_mros.workspace import parse_include_flags
+    from colcon_mros.integrations.catkin_generator import generate_files  # needs genmsg and empy
+    from colcon_mros.generator.workspace import parse_include_flags
     generate_files(options.files, options.package, options.output_dir,
                    parse_include_flags(options.include_paths), options.template_dir,
                    options.export_dir, options.stamps, options.cmake_module,
@@ -213,8 +213,8 @@ def _generate(options):
 
 
 def export_request(options):
-    """The :class:`colcon_mros.export.ExportRequest` of ``genmros export``'s options."""
-    from colcon_mros.export import ExportRequest
+    """The :class:`colcon_mros.export.firmware_export.ExportRequest` of ``genmros export``'s options."""
+    from colcon_mros.export.firmware_export import ExportRequest
     return ExportRequest(
         options.output_dir, options.prefixes, options.workspaces, options.packages, options.types,
         options.variable_size_budget, options.template_dir, options.only or 'all', options.depfile,
@@ -222,32 +222,32 @@ def export_request(options):
 
 
 def _export(options):
-    from colcon_mros.ros_environment import require_ros_python
+    from colcon_mros.generator.ros_environment import require_ros_python
     require_ros_python()
-    from colcon_mros.export import export  # needs genmsg and empy
+    from colcon_mros.export.firmware_export import export  # needs genmsg and empy
     result = export(export_request(options))
     print('genmros: exported %d message and %d service types to %s'
           % (len(result.messages), len(result.services), options.output_dir))
 
 
 def _make_fragment(options):
-    from colcon_mros.installed_files import MAKE_FRAGMENT, installed_file
+    from colcon_mros.integrations.installed_files import MAKE_FRAGMENT, installed_file
     print(installed_file(MAKE_FRAGMENT))
 
 
 def _cmake_dir(options):
-    from colcon_mros.installed_files import CMAKE_CONFIG, installed_file
+    from colcon_mros.integrations.installed_files import CMAKE_CONFIG, installed_file
     print(os.path.dirname(installed_file(CMAKE_CONFIG)))
 
 
 def _catkin_prefix(options):
-    from colcon_mros.installed_files import CATKIN_MARKER, installed_file
+    from colcon_mros.integrations.installed_files import CATKIN_MARKER, installed_file
     print(os.path.dirname(installed_file(CATKIN_MARKER)))
 
 
 def _prune_export(options):
-    from colcon_mros.export_dir import ExportDir
-    from colcon_mros.installed_files import CMAKE_MODULE, installed_file
+    from colcon_mros.export.export_dir import ExportDir
+    from colcon_mros.integrations.installed_files import CMAKE_MODULE, installed_file
     if not os.path.isdir(options.export_dir):
         raise GenmrosError('export dir is not a directory', options.export_dir)
     for relative in ExportDir(options.export_dir).prune(installed_file(CMAKE_MODULE)):
@@ -265,7 +265,7 @@ def _mros_v1_pc(options):
 
 
 def _catkin_export_dir(options):
-    from colcon_mros.catkin_export import configure_export_dir
+    from colcon_mros.integrations.catkin_export_dir import configure_export_dir
     configure_export_dir(options.export_dir, options.cmake_file, options.cmake_module)
 
 

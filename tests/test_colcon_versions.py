@@ -1,4 +1,4 @@
-"""The colcon hook (colcon_mros/colcon_export.py) under each colcon-core we
+"""The colcon hook (colcon_mros/integrations/colcon_argument_parser.py) under each colcon-core we
 support: Debian's 0.12 (/usr/bin/colcon, with the Debian package of this
 project) and the newest on PyPI, installed here into a venv that sees
 Debian's colcon extensions, with this project installed into it as well.

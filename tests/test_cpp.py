@@ -1,16 +1,16 @@
-"""colcon_mros.cpp: how the type model is spelled in C++ (called directly;
+"""colcon_mros.generator.cpp: how the type model is spelled in C++ (called directly;
 test_generation.py and the compile tests hold the headers themselves)."""
 
 import os
 
 import pytest
 
-from colcon_mros.cpp import (SUPPORT_HEADER, CppMessage, CppType, cpp_constant_literal,
+from colcon_mros.generator.cpp import (SUPPORT_HEADER, CppMessage, CppType, cpp_constant_literal,
                              cpp_string_literal_lines, field_cpp_type)
 from colcon_mros.errors import GenmrosError
-from colcon_mros.model import ModelBuilder
-from colcon_mros.parse import SpecLoader
-from colcon_mros.storage import storage_for
+from colcon_mros.generator.model import ModelBuilder
+from colcon_mros.generator.parse import SpecLoader
+from colcon_mros.generator.storage import storage_for
 from conftest import REPO
 
 STD_MSGS = '/usr/share/std_msgs/msg'

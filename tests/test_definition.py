@@ -1,6 +1,6 @@
-"""colcon_mros.definition: the names one definition file gives."""
+"""colcon_mros.generator.definition: the names one definition file gives."""
 
-from colcon_mros.definition import Definition, definitions_in
+from colcon_mros.generator.definition import Definition, definitions_in
 
 
 def test_a_message_file_gives_one_type():

@@ -22,12 +22,12 @@ from conftest import DEBIAN_MESSAGE_PACKAGES, REPO, TEST_WS, run_genmros
 from test_genpy_compat import _encode
 from test_target_cpus import BINARY, COMPACT, TEXT, _search_path, expected_bytes_program
 
-from colcon_mros.export_dir import ExportDir
-from colcon_mros.identity import compact_text
-from colcon_mros.installed_files import CMAKE_MODULE, installed_file
-from colcon_mros.model import gencpp_definition_text
-from colcon_mros.parse import SpecLoader
-from colcon_mros.workspace import installed_packages
+from colcon_mros.export.export_dir import ExportDir
+from colcon_mros.generator.identity import compact_text
+from colcon_mros.integrations.installed_files import CMAKE_MODULE, installed_file
+from colcon_mros.generator.model import gencpp_definition_text
+from colcon_mros.generator.parse import SpecLoader
+from colcon_mros.generator.workspace import installed_packages
 
 SEEDS = 6  # per type: binary, text and compact instances, twice
 

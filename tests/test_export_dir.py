@@ -1,11 +1,11 @@
-"""colcon_mros.export_dir, called directly: an export dir's type list and
+"""colcon_mros.export.export_dir, called directly: an export dir's type list and
 CMake file, colcon's replacement of packages, and catkin's claims."""
 
 import os
 
-from colcon_mros.definition import Definition
-from colcon_mros.export_dir import ExportDir
-from colcon_mros.workspace import Package
+from colcon_mros.generator.definition import Definition
+from colcon_mros.export.export_dir import ExportDir
+from colcon_mros.generator.workspace import Package
 
 MODULE = '/opt/genmros/mros_generate.cmake'
 

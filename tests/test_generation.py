@@ -140,7 +140,7 @@ def test_variable_size_budget_sizes_the_publish_buffer(tmp_path):
 
 def test_template_directory_override(tmp_path):
     templates = str(tmp_path / 'templates')
-    shutil.copytree(os.path.join(REPO, 'colcon_mros', 'templates'), templates)
+    shutil.copytree(os.path.join(REPO, 'colcon_mros', 'generator', 'templates'), templates)
     with open(os.path.join(templates, 'msg.h.em'), 'a') as stream:
         stream.write('// custom template\n')
     output = str(tmp_path / 'include' / 'mros_test')

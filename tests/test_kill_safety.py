@@ -27,8 +27,8 @@ KILLS = 30
 
 LAUNCHER = '''
 import os, signal, sys
-import colcon_mros.output as output
-import colcon_mros.render as render
+import colcon_mros.generator.output as output
+import colcon_mros.generator.render as render
 from colcon_mros.cli import main
 
 def die():

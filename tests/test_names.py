@@ -1,13 +1,13 @@
-"""colcon_mros.names: the reserved names are an explicit list, held equal
+"""colcon_mros.generator.names: the reserved names are an explicit list, held equal
 here to what the support headers declare."""
 
 import os
 import re
 
-from colcon_mros.names import SUPPORT_HEADER_NAMES, member_identifier
+from colcon_mros.generator.names import SUPPORT_HEADER_NAMES, member_identifier
 
 TEMPLATES = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'colcon_mros',
-                         'templates')
+                         'generator', 'templates')
 # A template's parameter list, nested template arguments included.
 _TEMPLATE_HEAD = re.compile(r'template\s*<(?:[^<>]|<[^<>]*>)*>')
 _DECLARATION = re.compile(r'\b(?:struct|class|namespace|using)\s+([A-Za-z_]\w*)')

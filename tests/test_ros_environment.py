@@ -36,6 +36,6 @@ def test_generating_without_genmsg_says_what_to_do():
 
 def test_colcon_extension_loads_without_genmsg():
     # colcon loads every extension for every command: it must not need genmsg to load.
-    result = subprocess.run([sys.executable, '-c', WITHOUT_GENMSG + 'import colcon_mros.colcon_export'],
+    result = subprocess.run([sys.executable, '-c', WITHOUT_GENMSG + 'import colcon_mros.integrations.colcon_argument_parser'],
                             capture_output=True, text=True)
     assert result.returncode == 0, result.stderr

@@ -7,9 +7,9 @@ Run by bench/footprint/run.sh, or alone:
     PYTHONPATH=. /usr/bin/python3 bench/footprint/definition_text.py
 """
 
-from colcon_mros.model import gencpp_definition_text
-from colcon_mros.parse import SpecLoader
-from colcon_mros.workspace import installed_packages, msg_search_path
+from colcon_mros.generator.model import gencpp_definition_text
+from colcon_mros.generator.parse import SpecLoader
+from colcon_mros.generator.workspace import installed_packages, msg_search_path
 
 DEBIAN_MESSAGE_PACKAGES = [
     'std_msgs', 'geometry_msgs', 'sensor_msgs', 'nav_msgs', 'trajectory_msgs',

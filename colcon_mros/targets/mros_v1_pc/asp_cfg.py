@@ -20,7 +20,7 @@ import os
 import re
 
 from colcon_mros.errors import GenmrosError
-from colcon_mros.output import write_files
+from colcon_mros.generator.output import write_files
 
 IGNORED_APIS = ('DEF_KMM', 'AID_TSK')
 # Static API -> the fields of its {...} block, in order.

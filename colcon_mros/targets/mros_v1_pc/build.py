@@ -17,7 +17,7 @@ import sys
 import tempfile
 
 from colcon_mros.errors import GenmrosError
-from colcon_mros.installed_files import MAKE_FRAGMENT, installed_file
+from colcon_mros.integrations.installed_files import MAKE_FRAGMENT, installed_file
 from colcon_mros.targets.mros_v1_pc.asp_cfg import read_config, write_kernel_config
 
 TARGET_DIR = os.path.dirname(os.path.abspath(__file__))

@@ -11,7 +11,7 @@
 # configure time. The headers go to
 # ${CATKIN_DEVEL_PREFIX}/${genmros_INSTALL_DIR}/<pkg>/<Type>.h and, when
 # MROS_EXPORT_DIR is set, also into that export dir for a firmware
-# (genmros owns its layout: see colcon_mros/export_dir.py).
+# (genmros owns its layout: see colcon_mros/export/export_dir.py).
 
 if(NOT GENMROS_BIN)
   message(FATAL_ERROR "genmros: the genmros program was not found; reinstall colcon-mros "
@@ -143,7 +143,7 @@ macro(_generate_module_mros ARG_PKG ARG_GEN_OUTPUT_DIR ARG_GENERATED_FILES)
       COMMENT "Generating mROS headers for package ${ARG_PKG}"
       VERBATIM)
     list(APPEND ALL_GEN_OUTPUT_FILES_mros ${_genmros_stamps})
-    # The support header (colcon_mros.cpp.SUPPORT_HEADER) beside the packages' dirs.
+    # The support header (colcon_mros.generator.cpp.SUPPORT_HEADER) beside the packages' dirs.
     install(FILES "${_genmros_include_root}/mros_message_support.h"
       DESTINATION "${genmros_INSTALL_DIR}")
   endif()

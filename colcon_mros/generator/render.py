@@ -1,8 +1,8 @@
 """Render the empy templates in ``templates/`` from the type model, in the
-C++ names :mod:`colcon_mros.cpp` gives it.
+C++ names :mod:`colcon_mros.generator.cpp` gives it.
 
 Every function returns ``{relative path: text}`` (or the text) and touches no
-file; writing is :mod:`colcon_mros.output`'s job.
+file; writing is :mod:`colcon_mros.generator.output`'s job.
 """
 
 import hashlib
@@ -12,9 +12,9 @@ import sys
 import em
 
 from colcon_mros import __version__
-from colcon_mros.aggregates import MaxSize
-from colcon_mros.cpp import SUPPORT_HEADER, V1_DELIVERY_HEADER, CppMessage, CppService, CppType
-from colcon_mros.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
+from colcon_mros.generator.aggregates import MaxSize
+from colcon_mros.generator.cpp import SUPPORT_HEADER, V1_DELIVERY_HEADER, CppMessage, CppService, CppType
+from colcon_mros.generator.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
 
 TEMPLATE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'templates')
 
@@ -78,6 +78,6 @@ class Renderer:
 
 
 def render_export_cmake(include_dir, types, cmake_module):
-    """An export dir's mros_export.cmake (see :mod:`colcon_mros.export_dir`)."""
+    """An export dir's mros_export.cmake (see :mod:`colcon_mros.export.export_dir`)."""
     return _render(TEMPLATE_DIR, 'mros_export.cmake.em', include_dir=include_dir, types=types,
                    cmake_module=cmake_module)

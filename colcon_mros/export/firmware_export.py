@@ -11,20 +11,20 @@ aggregates, which cover the selected types only, under the output directory::
 
 Everything is rendered before anything is written, so a bad definition
 leaves OUT as it was, and OUT is switched to the new export in one step
-(:func:`colcon_mros.output.write_tree`). Headers left over from types that
+(:func:`colcon_mros.generator.output.write_tree`). Headers left over from types that
 no longer exist in a package the run exported are removed.
 """
 
 import os
 
 from colcon_mros.errors import GenmrosError
-from colcon_mros.model import ModelBuilder
-from colcon_mros.output import is_generated, write_files, write_tree
-from colcon_mros.parse import SpecLoader
-from colcon_mros.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
-from colcon_mros.render import Renderer
-from colcon_mros.storage import storage_for
-from colcon_mros.workspace import (environment_packages, installed_packages, msg_search_path,
+from colcon_mros.generator.model import ModelBuilder
+from colcon_mros.generator.output import is_generated, write_files, write_tree
+from colcon_mros.generator.parse import SpecLoader
+from colcon_mros.generator.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
+from colcon_mros.generator.render import Renderer
+from colcon_mros.generator.storage import storage_for
+from colcon_mros.generator.workspace import (environment_packages, installed_packages, msg_search_path,
                                    workspace_packages)
 
 
@@ -86,7 +86,7 @@ class ExportRequest:
     and ``colcon build --mros-export`` both make one.
 
     prefixes=None searches the ROS environment for packages; only is 'all',
-    'headers' or 'aggregates' (colcon_mros.defaults.EXPORT_PARTS)."""
+    'headers' or 'aggregates' (colcon_mros.generator.defaults.EXPORT_PARTS)."""
 
     def __init__(self, output_dir, prefixes=None, workspaces=(), package_names=(), type_names=(),
                  variable_budget=DEFAULT_VARIABLE_SIZE_BUDGET, template_dir=None, only='all',

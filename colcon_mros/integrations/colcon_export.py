@@ -1,6 +1,6 @@
 """What ``colcon build --mros-export DIR`` exports after the build.
 
-DIR becomes an export dir (:mod:`colcon_mros.export_dir`) holding every
+DIR becomes an export dir (:mod:`colcon_mros.export.export_dir`) holding every
 message and service of the built packages and of the installed packages they
 depend on (std_msgs from Debian included): the headers ``genmros export
 --only headers`` writes, and the definitions they come from. A second run
@@ -17,9 +17,9 @@ import os
 from colcon_core.package_selection import get_packages
 
 from colcon_mros.errors import GenmrosError
-from colcon_mros.export_dir import ExportDir
-from colcon_mros.installed_files import CMAKE_MODULE, installed_file
-from colcon_mros.ros_environment import require_ros_python
+from colcon_mros.export.export_dir import ExportDir
+from colcon_mros.integrations.installed_files import CMAKE_MODULE, installed_file
+from colcon_mros.generator.ros_environment import require_ros_python
 
 
 def export_built_packages(args, export_dir):
@@ -34,9 +34,9 @@ def export_built_packages(args, export_dir):
                            % ' '.join(args.base_paths), export_dir)
     workspace = os.path.abspath(args.base_paths[0])
     require_ros_python()
-    from colcon_mros.export import ExportRequest, export  # needs genmsg
-    from colcon_mros.render import Renderer  # needs empy
-    from colcon_mros.workspace import environment_packages, workspace_packages
+    from colcon_mros.export.firmware_export import ExportRequest, export  # needs genmsg
+    from colcon_mros.generator.render import Renderer  # needs empy
+    from colcon_mros.generator.workspace import environment_packages, workspace_packages
     packages = environment_packages()
     packages.update(workspace_packages(workspace))
 

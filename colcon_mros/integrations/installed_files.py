@@ -14,6 +14,8 @@ from importlib import metadata
 from colcon_mros.errors import GenmrosError
 
 DISTRIBUTION = 'colcon-mros'
+# A source checkout: the directory that holds the colcon_mros package.
+REPOSITORY_ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 MAKE_FRAGMENT = 'genmros.mk'
 CMAKE_MODULE = 'mros_generate.cmake'
 # find_package(genmros) reads it; its directory is what genmros_DIR names.
@@ -25,8 +27,7 @@ CATKIN_MARKER = '.catkin'
 
 
 def _checkout_file(name):
-    path = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
-                        'cmake', name)
+    path = os.path.join(REPOSITORY_ROOT, 'cmake', name)
     return path if os.path.isfile(path) else None
 
 

@@ -14,8 +14,8 @@ that would write the same header (``Foo.srv`` gives ``FooRequest.h``, as
 import os
 import re
 
-from colcon_mros.c_names import GLOBAL_NAMES, MACROS
-from colcon_mros.definition import Definition
+from colcon_mros.generator.c_names import GLOBAL_NAMES, MACROS
+from colcon_mros.generator.definition import Definition
 from colcon_mros.errors import GenmrosError
 
 # The language's keywords and alternative tokens up to C++20, and NULL.

@@ -1,10 +1,10 @@
 """The type model: the structure of messages and services.
 
-Built from genmsg specs (see :mod:`colcon_mros.parse`): fields and constants,
+Built from genmsg specs (see :mod:`colcon_mros.generator.parse`): fields and constants,
 the ROS 1 wire sizes each field and message can take (which the storage
 choice bounds), the nested types, and the type identity (MD5 sum,
 definition text, type ID). It knows nothing of C++ spelling, which is
-:mod:`colcon_mros.cpp`'s job, nor of header layout, which is the templates'.
+:mod:`colcon_mros.generator.cpp`'s job, nor of header layout, which is the templates'.
 """
 
 import functools
@@ -12,9 +12,9 @@ import zlib
 
 from genmsg.msgs import is_valid_msg_field_name, parse_type
 
-from colcon_mros.definition import Definition
+from colcon_mros.generator.definition import Definition
 from colcon_mros.errors import GenmrosError
-from colcon_mros.storage import HeapStorage
+from colcon_mros.generator.storage import HeapStorage
 
 # .msg built-in type -> bytes on the wire (None: variable).
 BUILTIN_SIZES = {
@@ -176,7 +176,7 @@ class Service:
 
 
 class ModelBuilder:
-    """Turns specs loaded by a :class:`colcon_mros.parse.SpecLoader` into models."""
+    """Turns specs loaded by a :class:`colcon_mros.generator.parse.SpecLoader` into models."""
 
     def __init__(self, loader, storage=None, definition_text='full'):
         self.loader = loader

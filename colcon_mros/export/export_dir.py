@@ -31,9 +31,9 @@ pruning happen under an exclusive lock.
 import fcntl
 import os
 
-from colcon_mros.definition import KINDS, Definition, definitions_in
+from colcon_mros.generator.definition import KINDS, Definition, definitions_in
 from colcon_mros.errors import GenmrosError
-from colcon_mros.output import check_writable, write_files
+from colcon_mros.generator.output import check_writable, write_files
 
 INCLUDE_DIR = 'include'
 SHARE_DIR = 'share'
@@ -224,7 +224,7 @@ class ExportDir:
 
     def _write_tables(self, cmake_module):
         """mros_export.cmake (with the types the dir holds now) and COLCON_IGNORE."""
-        from colcon_mros.render import render_export_cmake  # empy, only when writing
+        from colcon_mros.generator.render import render_export_cmake  # empy, only when writing
         write_files(self.path, {
             CMAKE_FILE: render_export_cmake(INCLUDE_DIR, self.types(), cmake_module),
             IGNORE_MARKER: '',

@@ -11,10 +11,10 @@ EXPORT_PARTS = ('all', 'headers', 'aggregates')
 # PUB_MSG_MAX_SIZE share of a type without a maximum wire size.
 DEFAULT_VARIABLE_SIZE_BUDGET = 1024
 
-# How strings and variable arrays are stored (colcon_mros.storage).
+# How strings and variable arrays are stored (colcon_mros.generator.storage).
 STORAGE_KINDS = ('heap', 'bounded')
 
-# Which definition text the headers carry (colcon_mros.identity): gencpp's,
+# Which definition text the headers carry (colcon_mros.generator.identity): gencpp's,
 # or the same declarations without comments, for a firmware's flash.
 DEFINITION_TEXTS = ('full', 'compact')
 # genmros mros-v1-pc: 32-bit ARM Linux (the board's instruction set) or this PC.

@@ -1,8 +1,8 @@
 """The C++ names of the type model: what the templates read.
 
-Wraps a :class:`colcon_mros.model.Message` or ``Service`` in a view that
+Wraps a :class:`colcon_mros.generator.model.Message` or ``Service`` in a view that
 spells it in C++: type and member names (escaped where C++ or the headers
-own the name, see :mod:`colcon_mros.names`), field types with the containers
+own the name, see :mod:`colcon_mros.generator.names`), field types with the containers
 of the storage choice (``std::string``/``std::vector`` without bounds,
 ``mros::bounded_string``/``mros::bounded_vector`` with them), constant
 literals that compile without a warning from gnu++98 to C++17, header paths
@@ -13,8 +13,8 @@ import math
 import re
 
 from colcon_mros.errors import GenmrosError
-from colcon_mros.floats import FLOAT32_SMALLEST_NORMAL, round_to_type
-from colcon_mros.names import member_identifier
+from colcon_mros.generator.floats import FLOAT32_SMALLEST_NORMAL, round_to_type
+from colcon_mros.generator.names import member_identifier
 
 SUPPORT_HEADER = 'mros_message_support.h'
 # Included by message_headers.h, the mROS v1 aggregate: memCopy() and delivery.

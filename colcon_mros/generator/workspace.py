@@ -12,7 +12,7 @@ same name.
 import os
 import re
 
-from colcon_mros.definition import Definition
+from colcon_mros.generator.definition import Definition
 from colcon_mros.errors import GenmrosError
 
 

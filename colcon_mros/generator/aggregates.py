@@ -6,7 +6,7 @@ firmware's types, and says for each how it was found (exact, at most, or no
 maximum and which field has none).
 """
 
-from colcon_mros.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
+from colcon_mros.generator.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
 
 
 def _bytes(count):

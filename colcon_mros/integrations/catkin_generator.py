@@ -6,7 +6,7 @@ works as well. OUTDIR is the package's directory under the include root
 (``<root>/<pkg>``); the support header goes to the include root beside it.
 
 With an export dir (catkin's MROS_EXPORT_DIR), the same run also fills that
-dir for a firmware (:mod:`colcon_mros.export_dir`): the headers of the files'
+dir for a firmware (:mod:`colcon_mros.export.export_dir`): the headers of the files'
 types and of every type they contain, from whichever package, and the
 definitions they come from.
 
@@ -22,13 +22,13 @@ modification times, so nothing downstream rebuilds for nothing.
 import os
 import time
 
-from colcon_mros.definition import Definition
+from colcon_mros.generator.definition import Definition
 from colcon_mros.errors import GenmrosError
-from colcon_mros.export_dir import ExportDir
-from colcon_mros.model import ModelBuilder
-from colcon_mros.output import is_generated, write_files
-from colcon_mros.parse import SpecLoader
-from colcon_mros.render import Renderer
+from colcon_mros.export.export_dir import ExportDir
+from colcon_mros.generator.model import ModelBuilder
+from colcon_mros.generator.output import is_generated, write_files
+from colcon_mros.generator.parse import SpecLoader
+from colcon_mros.generator.render import Renderer
 
 GENERATED_LOG = 'Generating mROS headers from %s/%s'
 REMOVED_LOG = 'genmros: removed %s'
@@ -148,7 +148,7 @@ def generate_files(paths, package, output_dir, search_path, template_dir=None, e
 
     include_root = os.path.dirname(os.path.abspath(output_dir))
     if exports and cmake_module is None:
-        from colcon_mros.installed_files import CMAKE_MODULE, installed_file
+        from colcon_mros.integrations.installed_files import CMAKE_MODULE, installed_file
         cmake_module = installed_file(CMAKE_MODULE)
     if all_of_package:
         definitions = [generated.definition for generated in loaded]

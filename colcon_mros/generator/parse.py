@@ -7,7 +7,7 @@ syntax error by handing genmsg the file's declarations one line at a time
 (linear in the file's length), and loads dependencies itself, one field at a
 time, so a missing or recursive type is reported at the field that names it.
 It also refuses what genmsg accepts but C++ cannot take (see
-:mod:`colcon_mros.names`), integer constants beyond their type, which
+:mod:`colcon_mros.generator.names`), integer constants beyond their type, which
 genmsg checks in floating point, and floating-point constants beyond their
 type, which genmsg does not check.
 """
@@ -20,11 +20,11 @@ from genmsg import msg_loader
 from genmsg.msgs import bare_msg_type, is_builtin, parse_type
 from genmsg.names import is_legal_resource_base_name
 
-from colcon_mros.definition import Definition
+from colcon_mros.generator.definition import Definition
 from colcon_mros.errors import GenmrosError
-from colcon_mros.floats import FLOAT_LIMITS, round_to_type
-from colcon_mros.identity import Identities
-from colcon_mros.names import (check_member_name, check_service_name, check_type_name,
+from colcon_mros.generator.floats import FLOAT_LIMITS, round_to_type
+from colcon_mros.generator.identity import Identities
+from colcon_mros.generator.names import (check_member_name, check_service_name, check_type_name,
                                check_type_named_like_package, check_unique_headers)
 
 SERVICE_SEPARATOR = '---'

@@ -12,7 +12,7 @@ export fails ``colcon build`` (one line, exit code 1). Without the flag,
 colcon runs exactly as before. tests/test_colcon_versions.py holds this
 against Debian's colcon-core and the newest on PyPI.
 
-What the export does is :mod:`colcon_mros.colcon_build`'s job; it is imported
+What the export does is :mod:`colcon_mros.integrations.colcon_export`'s job; it is imported
 only when the flag is used, so colcon loads this module without genmsg.
 """
 
@@ -56,12 +56,12 @@ def _exporting(build_main):
     def main(*, context):
         export_dir = context.args.mros_export
         if export_dir:
-            from colcon_mros.output import check_writable
+            from colcon_mros.generator.output import check_writable
             _fail_as_colcon_error(check_writable, os.path.abspath(export_dir))
         rc = build_main(context=context)
         if rc or not export_dir:
             return rc
-        from colcon_mros.colcon_build import export_built_packages
+        from colcon_mros.integrations.colcon_export import export_built_packages
         _fail_as_colcon_error(export_built_packages, context.args, os.path.abspath(export_dir))
         return 0
     return main
