@@ -34,6 +34,9 @@
 # <prefix>/share/genmros/cmake/mros_generate.cmake; find_package(genmros)
 # includes it.
 
+# GENMROS_FIRMWARE_AGGREGATES and the other names genmros writes.
+include("${CMAKE_CURRENT_LIST_DIR}/genmros-names.cmake")
+
 find_program(GENMROS_BIN genmros
   HINTS "${CMAKE_CURRENT_LIST_DIR}/../../../bin"
   DOC "genmros, the mROS message generator of colcon-mros")
@@ -65,7 +68,7 @@ endfunction()
 # ARG_TARGET build after it with ARG_INCLUDE_DIRS.
 function(_mros_attach ARG_TARGET ARG_OUTPUT_DIR ARG_GENMROS_ARGS ARG_DEPENDS ARG_INCLUDE_DIRS)
   set(outputs "")
-  foreach(name message_headers.h message_class_specialization.h msg_max_size.h mros_v1_delivery.h)
+  foreach(name ${GENMROS_FIRMWARE_AGGREGATES})
     list(APPEND outputs "${ARG_OUTPUT_DIR}/${name}")
   endforeach()
   # genmros keeps unchanged files as they are (so the firmware's objects are

@@ -12,9 +12,10 @@ import os
 import sys
 
 from colcon_mros import __version__
-from colcon_mros.generator.defaults import (DEFAULT_VARIABLE_SIZE_BUDGET, DEFINITION_TEXTS, EXPORT_PARTS,
-                                  PC_TARGETS, STORAGE_KINDS)
 from colcon_mros.errors import GenmrosError
+from colcon_mros.generator.defaults import (DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE,
+                                            DEFAULT_VARIABLE_SIZE_BUDGET, DEFINITION_TEXTS,
+                                            EXPORT_PARTS, PC_TARGETS, STORAGE_KINDS)
 
 DESCRIPTION = '''\
 Generate mROS message headers from ROS 1 .msg and .srv files.
@@ -100,7 +101,7 @@ def _add_export(subparsers):
 
 def _add_header_arguments(parser):
     """What the headers hold: storage, bounds, definition text."""
-    parser.add_argument('--storage', choices=STORAGE_KINDS, default='heap',
+    parser.add_argument('--storage', choices=STORAGE_KINDS, default=DEFAULT_STORAGE,
                         help='strings and variable arrays as std::string/std::vector (heap, '
                              'default) or held in the message with maxima from options files '
                              '(bounded: no heap)')
@@ -109,7 +110,8 @@ def _add_header_arguments(parser):
                         help="bounds for --storage bounded: lines 'pkg/Type.field max_size:N "
                              "max_count:N' or '* ...' (repeatable; each package's "
                              'msg/genmros.options is read too)')
-    parser.add_argument('--definition-text', choices=DEFINITION_TEXTS, default='full',
+    parser.add_argument('--definition-text', choices=DEFINITION_TEXTS,
+                        default=DEFAULT_DEFINITION_TEXT,
                         help="the definition text each header carries: gencpp's (full, default; "
                              'what roscpp sends as message_definition) or the same declarations '
                              'without comments and blank lines (compact: less flash; the MD5 '
@@ -125,7 +127,10 @@ def _add_printers(subparsers):
             ('catkin-prefix', "print a catkin prefix that holds genmros' generator marker (and "
                               'leads find_package(genmros) to this install): with it on '
                               'CMAKE_PREFIX_PATH, catkin runs genmros (for installs that cannot '
-                              'write /etc/ros/genmsg: ROS Noetic, a user, a venv)', _catkin_prefix)):
+                              'write /etc/ros/genmsg: ROS Noetic, a user, a venv)', _catkin_prefix),
+            ('cmake-names', 'print genmros-names.cmake, the names the CMake module and the catkin '
+                            'generator take from genmros (the installed copy is this output)',
+             _cmake_names)):
         parser = subparsers.add_parser(name, help=help_text, description=help_text)
         parser.set_defaults(run=run)
 
@@ -213,12 +218,16 @@ def _generate(options):
 
 
 def export_request(options):
-    """The :class:`colcon_mros.export.firmware_export.ExportRequest` of ``genmros export``'s options."""
+    """The :class:`~colcon_mros.export.firmware_export.ExportRequest` of
+    ``genmros export``'s options."""
     from colcon_mros.export.firmware_export import ExportRequest
     return ExportRequest(
-        options.output_dir, options.prefixes, options.workspaces, options.packages, options.types,
-        options.variable_size_budget, options.template_dir, options.only or 'all', options.depfile,
-        options.storage, options.option_files, options.definition_text)
+        output_dir=options.output_dir, prefixes=options.prefixes, workspaces=options.workspaces,
+        package_names=options.packages, type_names=options.types,
+        variable_budget=options.variable_size_budget, template_dir=options.template_dir,
+        only=options.only or EXPORT_PARTS[0], depfile=options.depfile,
+        storage_kind=options.storage, option_files=options.option_files,
+        definition_text=options.definition_text)
 
 
 def _export(options):
@@ -243,6 +252,11 @@ def _cmake_dir(options):
 def _catkin_prefix(options):
     from colcon_mros.integrations.installed_files import CATKIN_MARKER, installed_file
     print(os.path.dirname(installed_file(CATKIN_MARKER)))
+
+
+def _cmake_names(options):
+    from colcon_mros.integrations.cmake_names import cmake_names
+    sys.stdout.write(cmake_names())
 
 
 def _prune_export(options):

@@ -13,5 +13,5 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
-"$here/scripts/setup.sh"
+"$here/scripts/setup.sh" --tests
 exec /usr/bin/python3 "$here/tests/evaluation.py" "$@"

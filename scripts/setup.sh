@@ -1,14 +1,22 @@
 #!/usr/bin/env bash
-# Installs what genmros needs on Debian 12, then the project itself as the
-# Debian package colcon-mros, built here from this tree: dpkg then owns every
-# file of it, the catkin generator marker /etc/ros/genmsg/genmros included,
+# Installs what a genmros user needs on Debian 12 (debian-packages.txt; with
+# --tests also what the tests and the evaluation use, debian-test-packages.txt),
+# then the project itself as the Debian package colcon-mros, built here from
+# this tree: dpkg then owns every file of it, the catkin generator marker
+# /etc/ros/genmsg/genmros included,
 # and `apt-get purge colcon-mros` (scripts/uninstall.sh) takes all of it
 # away. Idempotent; needs root (or sudo).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
 
-packages=$(grep -v '^#' "$here/scripts/debian-packages.txt" | tr '\n' ' ')
+lists=("$here/scripts/debian-packages.txt")
+case "${1:-}" in
+  --tests) lists+=("$here/scripts/debian-test-packages.txt") ;;
+  "") ;;
+  *) echo "usage: $0 [--tests]" >&2; exit 2 ;;
+esac
+packages=$(cat "${lists[@]}" | grep -v '^#' | tr '\n' ' ')
 missing=$(dpkg-query -W -f='${Package} ${Status}\n' $packages 2>/dev/null \
           | awk '$NF != "installed" {print $1}' || true)
 if [ -n "$missing" ] || ! dpkg-query -W $packages >/dev/null 2>&1; then

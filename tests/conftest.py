@@ -7,16 +7,27 @@ import sys
 import pytest
 
 import built_workspace
+from mros_v1_checkout import MROS_V1_ROOT, checkout_found
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TEST_WS = os.path.join(REPO, 'test_ws')
 
-# The Debian ROS message packages genmros is held against (issue 2).
+# The Debian ROS message packages genmros is held against.
 DEBIAN_MESSAGE_PACKAGES = [
     'std_msgs', 'geometry_msgs', 'sensor_msgs', 'nav_msgs', 'trajectory_msgs',
     'visualization_msgs', 'diagnostic_msgs', 'actionlib_msgs', 'shape_msgs',
     'stereo_msgs', 'tf2_msgs', 'map_msgs', 'pcl_msgs', 'std_srvs', 'rosgraph_msgs',
 ]
+
+
+def pytest_collection_modifyitems(config, items):
+    """Tests marked needs_mros_v1 are skipped, saying why, without a checkout."""
+    if checkout_found():
+        return
+    skip = pytest.mark.skip(reason='no mROS v1 checkout at %s (set MROS_V1_ROOT)' % MROS_V1_ROOT)
+    for item in items:
+        if 'needs_mros_v1' in item.keywords:
+            item.add_marker(skip)
 
 
 def run_genmros(*arguments, check=True):

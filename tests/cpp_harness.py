@@ -7,8 +7,10 @@ with roscpp's class and once with genmros' class, it gives both the same
 values, and the harness compares their wire images.
 """
 
+import glob
 import os
 import subprocess
+import sys
 
 from genmsg import msg_loader
 from genmsg.msgs import bare_msg_type, is_builtin
@@ -253,3 +255,59 @@ def write_sources(directory, type_set, with_roscpp=True, for_targets=False):
         with open(paths[name], 'w') as stream:
             stream.write(text)
     return paths
+
+
+# The roscpp side's reference program, shared by the target-CPU and compact
+# definition tests.
+TARGETS_DIR = os.path.join(HERE, 'cpp', 'targets')
+TEST_WS = os.path.join(os.path.dirname(HERE), 'test_ws')
+TEST_WS_PACKAGES = ['mros_test', 'mros_test_base']
+GENCPP = '/usr/lib/gencpp/gen_cpp.py'
+GENCPP_TEMPLATES = '/usr/share/gencpp'
+BINARY, TEXT, COMPACT = 0, 1, 2  # harness::Mode
+
+
+def search_path():
+    """genmsg's search path: Debian's message packages and test_ws's."""
+    search_path = {p: ['/usr/share/%s/msg' % p] for p in os.listdir('/usr/share')
+                   if os.path.isdir('/usr/share/%s/msg' % p)}
+    for package in TEST_WS_PACKAGES:
+        search_path[package] = [os.path.join(TEST_WS, 'src', package, 'msg')]
+    return search_path
+
+
+def test_ws_definitions(kind):
+    """(package, path) of every test_ws definition of kind (msg or srv)."""
+    for package in TEST_WS_PACKAGES:
+        for path in sorted(glob.glob(os.path.join(TEST_WS, 'src', package, kind, '*.' + kind))):
+            yield package, path
+
+
+def gencpp_headers(search_path, output_root):
+    """roscpp's headers of the test_ws types, from Debian's real gencpp."""
+    includes = []
+    for package, directories in sorted(search_path.items()):
+        includes += ['-I', '%s:%s' % (package, directories[0])]
+    for kind in ('msg', 'srv'):
+        for package, path in test_ws_definitions(kind):
+            subprocess.run([sys.executable, GENCPP, path, '-p', package, '-o', os.path.join(output_root, package),
+                            '-e', GENCPP_TEMPLATES] + includes, check=True, capture_output=True)
+    return output_root
+
+
+def expected_bytes_program(type_set, search_path, root, for_targets=False):
+    """The harness's sources for type_set under root/sources, and the host
+    program that prints roscpp's wire images of their instances (gencpp's
+    headers of the test_ws types, Debian's of the others)."""
+    gencpp = gencpp_headers(search_path, str(root / 'gencpp'))
+    directory = str(root / 'sources')
+    os.makedirs(directory)
+    sources = write_sources(directory, type_set, for_targets=for_targets)
+    objects = [
+        compile_object(sources['roscpp_side.cpp'], directory, [gencpp, directory], strict=False),
+        compile_object(os.path.join(TARGETS_DIR, 'expected_bytes.cpp'), directory,
+                                   [directory, TARGETS_DIR]),
+    ]
+    program = link_program(objects, os.path.join(directory, 'expected_bytes'),
+                                       libraries=ROSCPP_LIBRARIES)
+    return sources, program

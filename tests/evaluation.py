@@ -29,22 +29,17 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 import built_workspace  # noqa: E402
+from mros_v1_checkout import MROS_V1_ROOT, checkout_found  # noqa: E402
 from ros_processes import RosGraph, free_port, sourced_environment  # noqa: E402
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TEST_WS = os.path.join(REPO, 'test_ws')
-MROS_V1_ROOT = os.environ.get('MROS_V1_ROOT') or os.path.join(os.path.dirname(REPO), 'shared',
-                                                              'mros_v1')
 BOARD_IP = '127.0.0.2'
 PEER_IP = '127.0.0.1'
 # How long a message may take through qemu, the library's 100 ms polling
 # and a loaded machine.
 DELIVERY_TIMEOUT = 30
 APP_FIXTURE = os.path.join(REPO, 'tests', 'fixtures', 'mros_v1_pc_app')
-
-
-def checkout_found(root=MROS_V1_ROOT):
-    return os.path.isfile(os.path.join(root, 'mros-lib', 'Makefile.m'))
 
 
 def board_environment():

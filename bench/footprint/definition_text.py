@@ -1,4 +1,4 @@
-"""Definition-text bytes a header carries, full against compact (issue 15).
+"""Definition-text bytes a header carries, full against compact.
 
 Prints, for the big Debian types and for the whole Debian message set (every
 message and service half of the 15 packages the tests use), the bytes of the

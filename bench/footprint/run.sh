@@ -6,10 +6,10 @@
 # mROS v1's ros.cpp over the tests' ros.h, and one task that publishes and
 # subscribes one type),
 # minus the same firmware without any message type (baseline.cpp).
-#   issue 7: genmros' headers against hand-written v1-style ones (handwritten/)
-#   issue 9: heap against bounded storage, and the RAM a firmware's buffers take
-#   issue 15: heap with the compact definition text against the full one, and
-#             the definition bytes of the Debian message set (definition_text.py)
+#   genmros' headers against hand-written v1-style ones (handwritten/)
+#   heap against bounded storage, and the RAM a firmware's buffers take
+#   heap with the compact definition text against the full one, and
+#   the definition bytes of the Debian message set (definition_text.py)
 # Run by hand: bench/footprint/run.sh
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"

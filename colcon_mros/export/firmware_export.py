@@ -21,11 +21,12 @@ from colcon_mros.errors import GenmrosError
 from colcon_mros.generator.model import ModelBuilder
 from colcon_mros.generator.output import is_generated, write_files, write_tree
 from colcon_mros.generator.parse import SpecLoader
-from colcon_mros.generator.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
+from colcon_mros.generator.defaults import (DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE,
+                                            DEFAULT_VARIABLE_SIZE_BUDGET, EXPORT_PARTS)
 from colcon_mros.generator.render import Renderer
 from colcon_mros.generator.storage import storage_for
-from colcon_mros.generator.workspace import (environment_packages, installed_packages, msg_search_path,
-                                   workspace_packages)
+from colcon_mros.generator.workspace import (environment_packages, installed_packages,
+                                             msg_search_path, workspace_packages)
 
 
 class ExportResult:
@@ -88,9 +89,10 @@ class ExportRequest:
     prefixes=None searches the ROS environment for packages; only is 'all',
     'headers' or 'aggregates' (colcon_mros.generator.defaults.EXPORT_PARTS)."""
 
-    def __init__(self, output_dir, prefixes=None, workspaces=(), package_names=(), type_names=(),
-                 variable_budget=DEFAULT_VARIABLE_SIZE_BUDGET, template_dir=None, only='all',
-                 depfile=None, storage_kind='heap', option_files=(), definition_text='full'):
+    def __init__(self, *, output_dir, prefixes=None, workspaces=(), package_names=(),
+                 type_names=(), variable_budget=DEFAULT_VARIABLE_SIZE_BUDGET, template_dir=None,
+                 only=EXPORT_PARTS[0], depfile=None, storage_kind=DEFAULT_STORAGE,
+                 option_files=(), definition_text=DEFAULT_DEFINITION_TEXT):
         self.output_dir = output_dir
         self.prefixes = prefixes
         self.workspaces = list(workspaces)

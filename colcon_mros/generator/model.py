@@ -12,8 +12,9 @@ import zlib
 
 from genmsg.msgs import is_valid_msg_field_name, parse_type
 
-from colcon_mros.generator.definition import Definition
 from colcon_mros.errors import GenmrosError
+from colcon_mros.generator.defaults import DEFAULT_DEFINITION_TEXT
+from colcon_mros.generator.definition import Definition
 from colcon_mros.generator.storage import HeapStorage
 
 # .msg built-in type -> bytes on the wire (None: variable).
@@ -115,7 +116,7 @@ class Message:
     """One message type (or one half of a service)."""
 
     def __init__(self, full_name, spec, identities, declarations, element_of, storage,
-                 definition_text='full'):
+                 definition_text=DEFAULT_DEFINITION_TEXT):
         self.full_name = full_name
         self.package, self.name = full_name.split('/', 1)
         self.source = declarations.path
@@ -178,7 +179,7 @@ class Service:
 class ModelBuilder:
     """Turns specs loaded by a :class:`colcon_mros.generator.parse.SpecLoader` into models."""
 
-    def __init__(self, loader, storage=None, definition_text='full'):
+    def __init__(self, loader, storage=None, definition_text=DEFAULT_DEFINITION_TEXT):
         self.loader = loader
         self.storage = storage or HeapStorage()
         self.definition_text = definition_text

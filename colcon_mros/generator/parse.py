@@ -24,8 +24,9 @@ from colcon_mros.generator.definition import Definition
 from colcon_mros.errors import GenmrosError
 from colcon_mros.generator.floats import FLOAT_LIMITS, round_to_type
 from colcon_mros.generator.identity import Identities
-from colcon_mros.generator.names import (check_member_name, check_service_name, check_type_name,
-                               check_type_named_like_package, check_unique_headers)
+from colcon_mros.generator.names import (check_member_name, check_service_name,
+                                         check_type_name, check_type_named_like_package,
+                                         check_unique_headers)
 
 SERVICE_SEPARATOR = '---'
 

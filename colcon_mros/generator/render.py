@@ -5,7 +5,9 @@ Every function returns ``{relative path: text}`` (or the text) and touches no
 file; writing is :mod:`colcon_mros.generator.output`'s job.
 """
 
+import functools
 import hashlib
+import io
 import os
 import sys
 
@@ -17,6 +19,19 @@ from colcon_mros.generator.cpp import SUPPORT_HEADER, V1_DELIVERY_HEADER, CppMes
 from colcon_mros.generator.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
 
 TEMPLATE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'templates')
+# The per-firmware aggregates the mROS v1 library includes, each rendered
+# from <name>.em.
+FIRMWARE_AGGREGATES = ('message_headers.h', 'message_class_specialization.h', 'msg_max_size.h')
+
+
+@functools.lru_cache(maxsize=None)
+def _template_tokens(path):
+    """The template at path, scanned into empy's tokens once per process:
+    scanning is most of empy's work, and a run renders one template for
+    every message."""
+    with open(path) as template:
+        scanner = em.Scanner(em.DEFAULT_PREFIX, template.read())
+    return tuple(iter(scanner.one, None))
 
 
 def _render(template_dir, template_name, **context):
@@ -25,8 +40,18 @@ def _render(template_dir, template_name, **context):
     # does, per test); rendering in such a process wraps the current one.
     if not hasattr(sys.stdout, '_testProxy'):
         em.Interpreter._wasProxyInstalled = False
-    with open(os.path.join(template_dir, template_name)) as template:
-        return em.expand(template.read(), dict(context))
+    tokens = _template_tokens(os.path.join(template_dir, template_name))
+    output = io.StringIO()
+    interpreter = em.Interpreter(output, globals=dict(context))
+    try:
+        interpreter.contexts.push(em.Context(template_name))
+        for token in tokens:
+            token.run(interpreter, None)
+        interpreter.flush()
+        return output.getvalue()
+    finally:
+        interpreter.shutdown()
+        interpreter.unfix()
 
 
 class Renderer:
@@ -65,16 +90,12 @@ class Renderer:
     def aggregates(self, messages, variable_budget=DEFAULT_VARIABLE_SIZE_BUDGET):
         """The per-firmware files the mROS v1 communication library includes
         (and the v1 delivery header, which message_headers.h includes)."""
-        types = [CppType(message.full_name) for message in messages]
-        return {
-            V1_DELIVERY_HEADER: self._read(V1_DELIVERY_HEADER),
-            'message_headers.h': _render(
-                self.template_dir, 'message_headers.h.em', messages=types),
-            'message_class_specialization.h': _render(
-                self.template_dir, 'message_class_specialization.h.em', messages=types),
-            'msg_max_size.h': _render(
-                self.template_dir, 'msg_max_size.h.em', sizes=MaxSize(messages, variable_budget)),
-        }
+        context = {'messages': [CppType(message.full_name) for message in messages],
+                   'sizes': MaxSize(messages, variable_budget)}
+        files = {name: _render(self.template_dir, name + '.em', **context)
+                 for name in FIRMWARE_AGGREGATES}
+        files[V1_DELIVERY_HEADER] = self._read(V1_DELIVERY_HEADER)
+        return files
 
 
 def render_export_cmake(include_dir, types, cmake_module):

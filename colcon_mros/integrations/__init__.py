@@ -8,6 +8,8 @@
 - colcon_export: what that export holds, once colcon has built
 - installed_files: where the CMake module (cmake/mros_generate.cmake) and
   the make fragment (cmake/genmros.mk) are, in a checkout or an install
+- cmake_names: the names those CMake files take from genmros
+  (cmake/genmros-names.cmake)
 
 Imports the export and generator layers and colcon_mros.errors.
 """

@@ -56,7 +56,7 @@ def export_built_packages(args, export_dir):
     if os.path.isdir(target.include_dir) and _unchanged_since(target.colcon_record(), record):
         print('genmros: the export in %s is up to date' % export_dir)
         return
-    result = export(ExportRequest(target.include_dir, workspaces=[workspace],
+    result = export(ExportRequest(output_dir=target.include_dir, workspaces=[workspace],
                                   package_names=sorted(names), only='headers'))
     exported = {message.package for message in result.messages}
     exported.update(service.package for service in result.services)

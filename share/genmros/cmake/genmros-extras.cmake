@@ -65,15 +65,18 @@ macro(_genmros_note_file ARG_FILE ARG_IFLAGS ARG_FILE_DEPS)
 endmacro()
 
 # genmsg's header names (as gencpp's CMake has them): <Type>.h, and for a
-# service <Service>Request.h and <Service>Response.h besides.
+# service one header per half besides (<Service>Request.h, <Service>Response.h:
+# GENMROS_SERVICE_HALVES of genmros-names.cmake, which genmrosConfig.cmake
+# includes through mros_generate.cmake).
 macro(_genmros_devel_headers ARG_GEN_OUTPUT_DIR)
   set(_genmros_headers "")
   foreach(_genmros_file ${_genmros_files})
     get_filename_component(_genmros_name "${_genmros_file}" NAME_WE)
     list(APPEND _genmros_headers "${ARG_GEN_OUTPUT_DIR}/${_genmros_name}.h")
     if(_genmros_file MATCHES "\\.srv$")
-      list(APPEND _genmros_headers "${ARG_GEN_OUTPUT_DIR}/${_genmros_name}Request.h"
-        "${ARG_GEN_OUTPUT_DIR}/${_genmros_name}Response.h")
+      foreach(_genmros_half ${GENMROS_SERVICE_HALVES})
+        list(APPEND _genmros_headers "${ARG_GEN_OUTPUT_DIR}/${_genmros_name}${_genmros_half}.h")
+      endforeach()
     endif()
   endforeach()
 endmacro()
@@ -143,8 +146,8 @@ macro(_generate_module_mros ARG_PKG ARG_GEN_OUTPUT_DIR ARG_GENERATED_FILES)
       COMMENT "Generating mROS headers for package ${ARG_PKG}"
       VERBATIM)
     list(APPEND ALL_GEN_OUTPUT_FILES_mros ${_genmros_stamps})
-    # The support header (colcon_mros.generator.cpp.SUPPORT_HEADER) beside the packages' dirs.
-    install(FILES "${_genmros_include_root}/mros_message_support.h"
+    # The support header beside the packages' dirs.
+    install(FILES "${_genmros_include_root}/${GENMROS_SUPPORT_HEADER}"
       DESTINATION "${genmros_INSTALL_DIR}")
   endif()
   unset(_genmros_files)

@@ -13,6 +13,8 @@ import pytest
 import cpp_harness
 from conftest import DEBIAN_MESSAGE_PACKAGES
 
+pytestmark = pytest.mark.slow
+
 INSTANCES_PER_TYPE = 200
 
 
@@ -38,7 +40,7 @@ def harness_sources(debian_types, debian_export, tmp_path_factory):
     return directory, cpp_harness.write_sources(directory, debian_types)
 
 
-def test_debian_packages_cover_the_issue(debian_types):
+def test_debian_packages_cover_every_message_package(debian_types):
     # About 160 definition files; a missing package would shrink the check silently.
     files = len([t for t in debian_types.messages if not t.endswith(('Request', 'Response'))])
     assert files >= 140

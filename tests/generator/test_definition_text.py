@@ -1,4 +1,4 @@
-"""The compact definition text (issue 15): the same type to every ROS tool.
+"""The compact definition text: the same type to every ROS tool.
 
 For every Debian message type and every test_ws type, the compact text loads
 with genpy's dynamic message loader (what rosbag and ``rostopic echo`` use for
@@ -9,6 +9,7 @@ export, the CMake module and the make fragment carry the choice into headers.
 """
 
 import glob
+import io
 import os
 import re
 import subprocess
@@ -19,8 +20,6 @@ from genpy.dynamic import generate_dynamic
 
 import cpp_harness
 from conftest import DEBIAN_MESSAGE_PACKAGES, REPO, TEST_WS, run_genmros
-from test_genpy_compat import _encode
-from test_target_cpus import BINARY, COMPACT, TEXT, _search_path, expected_bytes_program
 
 from colcon_mros.export.export_dir import ExportDir
 from colcon_mros.generator.identity import compact_text
@@ -32,6 +31,13 @@ from colcon_mros.generator.workspace import installed_packages
 SEEDS = 6  # per type: binary, text and compact instances, twice
 
 
+def _encode(message):
+    """genpy's wire image of message."""
+    buffer = io.BytesIO()
+    message.serialize(buffer)
+    return buffer.getvalue()
+
+
 def test_compact_text_keeps_declarations_only():
     text = ('# A comment\n\nHeader   header   # the stamp\n  float64[36]\tcovariance\n'
             'int32 A = 5 # five\nstring S=a # kept: part of the value\n'
@@ -41,7 +47,7 @@ def test_compact_text_keeps_declarations_only():
 
 
 def _type_names():
-    loader = SpecLoader(_search_path())
+    loader = SpecLoader(cpp_harness.search_path())
     names = []
     for package in DEBIAN_MESSAGE_PACKAGES:
         for path in sorted(glob.glob('/usr/share/%s/msg/*.msg' % package)):
@@ -64,15 +70,16 @@ def roscpp_images(tmp_path_factory):
     Debian and test_ws message type, and the genmros loader of those types."""
     loader, names = _type_names()
     root = tmp_path_factory.mktemp('definition_text')
-    search_path = _search_path()
+    search_path = cpp_harness.search_path()
     test_ws_services = [(p, f) for p in ('mros_test', 'mros_test_base')
                         for f in sorted(glob.glob(os.path.join(TEST_WS, 'src', p, 'srv', '*.srv')))]
     debian_services = [(p, f) for p in DEBIAN_MESSAGE_PACKAGES
                        for f in sorted(glob.glob('/usr/share/%s/srv/*.srv' % p))]
     type_set = cpp_harness.TypeSet(search_path, [n for n in names if not n.endswith(('Request', 'Response'))],
                                    debian_services + test_ws_services)
-    _, program = expected_bytes_program(type_set, search_path, root)
-    output = subprocess.run([program, str(SEEDS), str(BINARY), str(TEXT), str(COMPACT)], check=True,
+    _, program = cpp_harness.expected_bytes_program(type_set, search_path, root)
+    modes = [cpp_harness.BINARY, cpp_harness.TEXT, cpp_harness.COMPACT]
+    output = subprocess.run([program, str(SEEDS)] + [str(mode) for mode in modes], check=True,
                             capture_output=True, text=True).stdout
     images = {}
     for line in output.splitlines():

@@ -7,12 +7,11 @@ import os
 import pytest
 
 from conftest import REPO
+from mros_v1_checkout import MROS_V1_ROOT
 from colcon_mros.targets.mros_v1_pc.asp_cfg import read_config, write_kernel_config
 from colcon_mros.errors import GenmrosError
 
 PC_CFG = os.path.join(REPO, 'colcon_mros', 'targets', 'mros_v1_pc', 'cfg', 'asp')
-MROS_V1_ROOT = os.environ.get('MROS_V1_ROOT') or os.path.join(os.path.dirname(REPO), 'shared',
-                                                              'mros_v1')
 
 
 def _write(directory, name, text):
@@ -67,8 +66,7 @@ def test_bad_cfg_stops_with_file_line_and_problem(tmp_path, text, line, problem)
     assert problem in str(error.value)
 
 
-@pytest.mark.skipif(not os.path.isdir(MROS_V1_ROOT), reason='no mROS v1 checkout at %s'
-                    % MROS_V1_ROOT)
+@pytest.mark.needs_mros_v1
 def test_the_real_mros_cfg_and_a_sample_apps_cfg(tmp_path):
     app_cfg = os.path.join(MROS_V1_ROOT, 'mros_ws', 'string_pubsub', 'app.cfg')
     config = read_config(app_cfg, [PC_CFG])

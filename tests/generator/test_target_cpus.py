@@ -1,4 +1,4 @@
-"""genmros headers on the CPUs mROS runs on, byte for byte against roscpp (issue 9).
+"""genmros headers on the CPUs mROS runs on, byte for byte against roscpp.
 
 For every test_ws type and a representative set of Debian types, a program
 for each target CPU fills random instances through genmros' classes (the
@@ -19,26 +19,21 @@ The M0 and A9 programs build at -std=gnu++98 (mROS v1's language mode), the
 M4 and s390x ones at C++11.
 """
 
-import glob
 import os
 import subprocess
-import sys
 
 import pytest
 
 import cpp_harness
-from conftest import REPO, TEST_WS, run_genmros
+from conftest import TEST_WS, run_genmros
 
-TARGETS_DIR = os.path.join(REPO, 'tests', 'targets')
+pytestmark = [pytest.mark.needs_qemu, pytest.mark.slow]
+
 DEBIAN_SET = ['sensor_msgs/Image', 'sensor_msgs/PointCloud2', 'sensor_msgs/JointState', 'nav_msgs/Odometry',
               'visualization_msgs/MarkerArray', 'std_msgs/Header', 'std_msgs/Float64MultiArray']
-TEST_WS_PACKAGES = ['mros_test', 'mros_test_base']
-GENCPP = '/usr/lib/gencpp/gen_cpp.py'
-GENCPP_TEMPLATES = '/usr/share/gencpp'
 
-BINARY, TEXT, COMPACT = 0, 1, 2  # harness::Mode
-CORTEX_M_LINK = ['--specs=rdimon.specs', '-nostartfiles', '-Wl,--gc-sections', '-L' + TARGETS_DIR]
-CORTEX_M_STARTUP = os.path.join(TARGETS_DIR, 'cortex_m_startup.c')
+CORTEX_M_LINK = ['--specs=rdimon.specs', '-nostartfiles', '-Wl,--gc-sections', '-L' + cpp_harness.TARGETS_DIR]
+CORTEX_M_STARTUP = os.path.join(cpp_harness.TARGETS_DIR, 'cortex_m_startup.c')
 # No serial port or monitor: with -nographic QEMU multiplexes them with the
 # semihosting output on stdio and drops output once the pipe is full.
 BARE_METAL = ['-display', 'none', '-serial', 'none', '-monitor', 'none',
@@ -62,25 +57,25 @@ class Cpu:
 CPUS = {
     'cortex-m0': Cpu('arm-none-eabi-g++', ['-mcpu=cortex-m0', '-mthumb', '-Os'], 'gnu++98',
                      ['qemu-system-arm', '-M', 'microbit'] + BARE_METAL,
-                     instances=40, modes=[COMPACT],
-                     link=CORTEX_M_LINK + ['-T', os.path.join(TARGETS_DIR, 'microbit.ld')], startup=CORTEX_M_STARTUP),
+                     instances=40, modes=[cpp_harness.COMPACT],
+                     link=CORTEX_M_LINK + ['-T', os.path.join(cpp_harness.TARGETS_DIR, 'microbit.ld')], startup=CORTEX_M_STARTUP),
     'cortex-m4': Cpu('arm-none-eabi-g++', ['-mcpu=cortex-m4', '-mthumb', '-mfloat-abi=hard', '-mfpu=fpv4-sp-d16',
                                            '-O1'], 'c++11',
                      ['qemu-system-arm', '-M', 'mps2-an386'] + BARE_METAL,
-                     instances=60, modes=[BINARY, TEXT, COMPACT],
-                     link=CORTEX_M_LINK + ['-T', os.path.join(TARGETS_DIR, 'mps2_an386.ld')], startup=CORTEX_M_STARTUP),
+                     instances=60, modes=[cpp_harness.BINARY, cpp_harness.TEXT, cpp_harness.COMPACT],
+                     link=CORTEX_M_LINK + ['-T', os.path.join(cpp_harness.TARGETS_DIR, 'mps2_an386.ld')], startup=CORTEX_M_STARTUP),
     'cortex-a9': Cpu('arm-none-eabi-g++', ['-mcpu=cortex-a9', '-marm', '-mfpu=vfpv3',
                                            '-mfloat-abi=hard', '-mno-unaligned-access', '-O1'], 'gnu++98',
-                     ['qemu-arm', '-cpu', 'cortex-a9'], instances=60, modes=[BINARY, TEXT, COMPACT],
+                     ['qemu-arm', '-cpu', 'cortex-a9'], instances=60, modes=[cpp_harness.BINARY, cpp_harness.TEXT, cpp_harness.COMPACT],
                      link=['--specs=rdimon.specs', '-Wl,--gc-sections']),
     's390x': Cpu('s390x-linux-gnu-g++', ['-O1'], 'c++11', ['qemu-s390x'], instances=60,
-                 modes=[BINARY, TEXT, COMPACT], link=['-static']),
+                 modes=[cpp_harness.BINARY, cpp_harness.TEXT, cpp_harness.COMPACT], link=['-static']),
 }
 # Bounded storage on the smallest core, at mROS v1's language mode, and on
 # the big-endian CPU: compact instances only, which fit the bounds.
 BOUNDED_CPUS = {
     'cortex-m0': CPUS['cortex-m0'],
-    's390x': Cpu('s390x-linux-gnu-g++', ['-O1'], 'gnu++98', ['qemu-s390x'], instances=60, modes=[COMPACT],
+    's390x': Cpu('s390x-linux-gnu-g++', ['-O1'], 'gnu++98', ['qemu-s390x'], instances=60, modes=[cpp_harness.COMPACT],
                  link=['-static']),
 }
 # -Wno-psabi: GCC's note that std::vector iterators pass differently since GCC 7.1 (ARM).
@@ -88,42 +83,16 @@ FIRMWARE_FLAGS = ['-fno-exceptions', '-fno-rtti', '-Wno-psabi']
 RUN_SECONDS = 120
 
 
-def _search_path():
-    search_path = {p: ['/usr/share/%s/msg' % p] for p in os.listdir('/usr/share')
-                   if os.path.isdir('/usr/share/%s/msg' % p)}
-    for package in TEST_WS_PACKAGES:
-        search_path[package] = [os.path.join(TEST_WS, 'src', package, 'msg')]
-    return search_path
-
-
-def _test_ws_definitions(kind):
-    for package in TEST_WS_PACKAGES:
-        for path in sorted(glob.glob(os.path.join(TEST_WS, 'src', package, kind, '*.' + kind))):
-            yield package, path
-
-
-def _gencpp_headers(search_path, output_root):
-    """roscpp's headers of the test_ws types, from Debian's real gencpp."""
-    includes = []
-    for package, directories in sorted(search_path.items()):
-        includes += ['-I', '%s:%s' % (package, directories[0])]
-    for kind in ('msg', 'srv'):
-        for package, path in _test_ws_definitions(kind):
-            subprocess.run([sys.executable, GENCPP, path, '-p', package, '-o', os.path.join(output_root, package),
-                            '-e', GENCPP_TEMPLATES] + includes, check=True, capture_output=True)
-    return output_root
-
-
 @pytest.fixture(scope='module')
 def target_sources(tmp_path_factory):
     """The type set's generated sources, genmros' and gencpp's headers, and
     the host program that prints roscpp's wire images."""
     root = tmp_path_factory.mktemp('target_cpus')
-    search_path = _search_path()
-    messages = ['%s/%s' % (package, os.path.basename(path)[:-4]) for package, path in _test_ws_definitions('msg')]
-    type_set = cpp_harness.TypeSet(search_path, messages + DEBIAN_SET, list(_test_ws_definitions('srv')))
+    search_path = cpp_harness.search_path()
+    messages = ['%s/%s' % (package, os.path.basename(path)[:-4]) for package, path in cpp_harness.test_ws_definitions('msg')]
+    type_set = cpp_harness.TypeSet(search_path, messages + DEBIAN_SET, list(cpp_harness.test_ws_definitions('srv')))
     arguments = ['export', '--workspace', TEST_WS, '--underlay', '/usr']
-    for package in TEST_WS_PACKAGES:
+    for package in cpp_harness.TEST_WS_PACKAGES:
         arguments += ['--package', package]
     for name in DEBIAN_SET:
         arguments += ['--type', name]
@@ -135,29 +104,11 @@ def target_sources(tmp_path_factory):
     bounds = root / 'compact.options'
     bounds.write_text('* max_size:4 max_count:4\n')
     run_genmros(*arguments, '-o', exports['bounded'], '--storage', 'bounded', '--options', str(bounds))
-    sources, expected = expected_bytes_program(type_set, search_path, root, for_targets=True)
+    sources, expected = cpp_harness.expected_bytes_program(type_set, search_path, root, for_targets=True)
     return type_set, exports, sources, expected
 
 
-def expected_bytes_program(type_set, search_path, root, for_targets=False):
-    """The harness's sources for type_set under root/sources, and the host
-    program that prints roscpp's wire images of their instances (gencpp's
-    headers of the test_ws types, Debian's of the others)."""
-    gencpp = _gencpp_headers(search_path, str(root / 'gencpp'))
-    directory = str(root / 'sources')
-    os.makedirs(directory)
-    sources = cpp_harness.write_sources(directory, type_set, for_targets=for_targets)
-    objects = [
-        cpp_harness.compile_object(sources['roscpp_side.cpp'], directory, [gencpp, directory], strict=False),
-        cpp_harness.compile_object(os.path.join(TARGETS_DIR, 'expected_bytes.cpp'), directory,
-                                   [directory, TARGETS_DIR]),
-    ]
-    program = cpp_harness.link_program(objects, os.path.join(directory, 'expected_bytes'),
-                                       libraries=cpp_harness.ROSCPP_LIBRARIES)
-    return sources, program
-
-
-def test_type_set_covers_the_issue(target_sources):
+def test_type_set_covers_the_types_named_for_the_targets(target_sources):
     type_set = target_sources[0]
     for name in DEBIAN_SET + ['mros_test/PersonalData', 'mros_test/ArrayTypes', 'mros_test/BuiltinTypes',
                               'mros_test/NestedTypes', 'mros_test/LookupPersonRequest',
@@ -182,9 +133,9 @@ def _build(cpu, sources, export, directory):
     warnings = ['-Wall', '-Wextra', '-Werror'] + (['-pedantic'] if cpu.standard != 'gnu++98' else [])
     command = ([cpu.compiler, '-std=' + cpu.standard] + cpu.flags + FIRMWARE_FLAGS + warnings +
                ['-DTARGET_INSTANCES=%du' % cpu.instances, '-DTARGET_MODES=%s' % ','.join(map(str, cpu.modes)),
-                '-I', export, '-I', os.path.dirname(sources['target_side.cpp']), '-I', TARGETS_DIR,
+                '-I', export, '-I', os.path.dirname(sources['target_side.cpp']), '-I', cpp_harness.TARGETS_DIR,
                 '-I', cpp_harness.RANDOM_HEADER_DIR, sources['target_side.cpp'],
-                os.path.join(TARGETS_DIR, 'target_main.cpp')] + link + ['-o', program])
+                os.path.join(cpp_harness.TARGETS_DIR, 'target_main.cpp')] + link + ['-o', program])
     _compile(command)
     return program
 

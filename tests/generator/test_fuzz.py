@@ -13,6 +13,10 @@ import sys
 
 from conftest import REPO
 
+import pytest
+
+pytestmark = pytest.mark.slow
+
 FUZZ_SECONDS = 60
 
 

@@ -19,6 +19,8 @@ import pytest
 from fixtures.build_integration.tools import (
     GENERATOR_LOG_LINE, MESSAGE_PACKAGES, genmros_export, headers_under, mtimes, new_workspace, run)
 
+pytestmark = pytest.mark.slow
+
 # Types that contain mros_test_base/Vector3i, directly or through another type.
 VECTOR3I_HEADERS = {
     os.path.join('mros_test_base', 'Vector3i.h'),

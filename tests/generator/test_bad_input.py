@@ -8,6 +8,7 @@ import sys
 import pytest
 
 from conftest import REPO, TEST_WS, run_genmros
+from file_trees import assert_one_line_error, snapshot, write_tree
 
 PACKAGE_XML = '''<?xml version="1.0"?>
 <package format="2">
@@ -60,68 +61,41 @@ DEFINITION_CASES = [
 ]
 
 
-def _write(root, files):
-    for relative, content in files.items():
-        path = os.path.join(root, relative)
-        os.makedirs(os.path.dirname(path), exist_ok=True)
-        with open(path, 'wb') as stream:
-            stream.write(content if isinstance(content, bytes) else content.encode())
-
-
-def _snapshot(root):
-    state = {}
-    for directory, _, names in os.walk(root):
-        for name in names:
-            path = os.path.join(directory, name)
-            with open(path, 'rb') as stream:
-                state[os.path.relpath(path, root)] = (stream.read(), os.stat(path).st_mtime_ns)
-    return state
-
-
 @pytest.fixture
 def workspace(tmp_path):
     """A workspace whose package mros_bad has one good message, already exported to out/."""
     package = tmp_path / 'ws' / 'src' / 'mros_bad'
-    _write(str(package), {'package.xml': PACKAGE_XML, 'msg/Good.msg': GOOD_MESSAGE})
+    write_tree(str(package), {'package.xml': PACKAGE_XML, 'msg/Good.msg': GOOD_MESSAGE})
     output = tmp_path / 'out'
     run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', str(output), '--underlay', '/usr')
     assert (output / 'mros_bad' / 'Good.h').is_file()
     return str(tmp_path / 'ws'), str(package), str(output)
 
 
-def _assert_one_line_error(result, *fragments):
-    assert result.returncode == 1, result.stdout + result.stderr
-    lines = result.stderr.strip().split('\n')
-    assert len(lines) == 1, result.stderr
-    assert lines[0].startswith('genmros: error: ')
-    for fragment in fragments:
-        assert fragment in lines[0], lines[0]
-
-
 @pytest.mark.parametrize('files, location, problem', [c[1:] for c in DEFINITION_CASES],
                          ids=[c[0] for c in DEFINITION_CASES])
 def test_bad_definition_in_export(workspace, files, location, problem):
     workspace_dir, package, output = workspace
-    _write(package, files)
-    before = _snapshot(output)
+    write_tree(package, files)
+    before = snapshot(output)
     result = run_genmros('export', '--workspace', workspace_dir, '-o', output, '--underlay', '/usr',
                          check=False)
-    _assert_one_line_error(result, os.path.join(package, location), problem)
-    assert _snapshot(output) == before
+    assert_one_line_error(result, os.path.join(package, location), problem)
+    assert snapshot(output) == before
 
 
 @pytest.mark.parametrize('files, location, problem', [c[1:] for c in DEFINITION_CASES],
                          ids=[c[0] for c in DEFINITION_CASES])
 def test_bad_definition_in_generator_mode(workspace, files, location, problem):
     _, package, output = workspace
-    _write(package, files)
+    write_tree(package, files)
     target = [name for name in files if name.startswith(('msg/Bad', 'srv/Bad'))][0]
-    before = _snapshot(output)
+    before = snapshot(output)
     result = run_genmros(os.path.join(package, target), '-p', 'mros_bad', '-o', os.path.join(output, 'mros_bad'),
                          '-I', 'mros_bad:' + os.path.join(package, 'msg'),
                          '-I', 'std_msgs:/usr/share/std_msgs/msg', check=False)
-    _assert_one_line_error(result, os.path.join(package, location), problem)
-    assert _snapshot(output) == before
+    assert_one_line_error(result, os.path.join(package, location), problem)
+    assert snapshot(output) == before
 
 
 ARGUMENT_CASES = [
@@ -134,11 +108,11 @@ ARGUMENT_CASES = [
 @pytest.mark.parametrize('arguments, problem', [c[1:] for c in ARGUMENT_CASES], ids=[c[0] for c in ARGUMENT_CASES])
 def test_bad_export_selection(workspace, arguments, problem):
     workspace_dir, _, output = workspace
-    before = _snapshot(output)
+    before = snapshot(output)
     result = run_genmros('export', '--workspace', workspace_dir, '-o', output, '--underlay', '/usr',
                          *arguments, check=False)
-    _assert_one_line_error(result, problem)
-    assert _snapshot(output) == before
+    assert_one_line_error(result, problem)
+    assert snapshot(output) == before
 
 
 def test_output_directory_that_is_a_file(workspace, tmp_path):
@@ -147,7 +121,7 @@ def test_output_directory_that_is_a_file(workspace, tmp_path):
     blocker.write_text('not a directory')
     result = run_genmros('export', '--workspace', workspace_dir, '-o', str(blocker / 'include'),
                          '--underlay', '/usr', check=False)
-    _assert_one_line_error(result, str(blocker), 'output directory is not a directory')
+    assert_one_line_error(result, str(blocker), 'output directory is not a directory')
     assert blocker.read_text() == 'not a directory'
 
 
@@ -165,7 +139,7 @@ def test_unwritable_output_directory(workspace, tmp_path):
             target = str(locked / 'include')
         result = run_genmros('export', '--workspace', workspace_dir, '-o', target, '--underlay', '/usr',
                              check=False)
-        _assert_one_line_error(result, os.path.dirname(target), 'cannot write to output directory')
+        assert_one_line_error(result, os.path.dirname(target), 'cannot write to output directory')
     finally:
         locked.chmod(0o755)
 
@@ -173,7 +147,7 @@ def test_unwritable_output_directory(workspace, tmp_path):
 def test_missing_input_file(tmp_path):
     result = run_genmros(str(tmp_path / 'Nope.msg'), '-p', 'mros_bad', '-o', str(tmp_path / 'out' / 'mros_bad'),
                          check=False)
-    _assert_one_line_error(result, str(tmp_path / 'Nope.msg'), 'cannot read file')
+    assert_one_line_error(result, str(tmp_path / 'Nope.msg'), 'cannot read file')
     assert not (tmp_path / 'out').exists()
 
 
@@ -181,12 +155,12 @@ def test_bad_include_flag(tmp_path):
     source = tmp_path / 'Good.msg'
     source.write_text(GOOD_MESSAGE)
     result = run_genmros(str(source), '-p', 'mros_bad', '-o', str(tmp_path / 'out'), '-I', 'std_msgs', check=False)
-    _assert_one_line_error(result, "bad include path 'std_msgs' (expected PACKAGE:DIRECTORY)")
+    assert_one_line_error(result, "bad include path 'std_msgs' (expected PACKAGE:DIRECTORY)")
 
 
 def test_removed_type_leaves_no_header(workspace):
     workspace_dir, package, output = workspace
-    _write(package, {'msg/Second.msg': 'int8 a\n'})
+    write_tree(package, {'msg/Second.msg': 'int8 a\n'})
     run_genmros('export', '--workspace', workspace_dir, '-o', output, '--underlay', '/usr')
     assert os.path.isfile(os.path.join(output, 'mros_bad', 'Second.h'))
     os.remove(os.path.join(package, 'msg', 'Second.msg'))
@@ -203,23 +177,23 @@ def test_removed_type_leaves_no_header(workspace):
 
 def test_unchanged_headers_keep_their_mtime(workspace):
     workspace_dir, _, output = workspace
-    before = _snapshot(output)
+    before = snapshot(output)
     run_genmros('export', '--workspace', workspace_dir, '-o', output, '--underlay', '/usr')
-    assert _snapshot(output) == before
+    assert snapshot(output) == before
 
 
 def test_failed_write_changes_no_file(workspace):
     workspace_dir, package, output = workspace
-    _write(package, {'msg/Good.msg': GOOD_MESSAGE + 'float64 added\n'})
+    write_tree(package, {'msg/Good.msg': GOOD_MESSAGE + 'float64 added\n'})
     # std_msgs/Header.h sorts after the headers that would change, so they are
     # already written out (to temporaries) when std_msgs/ turns out to be a file.
     shutil.rmtree(os.path.join(output, 'std_msgs'))
     with open(os.path.join(output, 'std_msgs'), 'w') as stream:
         stream.write('in the way\n')
-    before = _snapshot(output)
+    before = snapshot(output)
     result = run_genmros('export', '--workspace', workspace_dir, '-o', output, '--underlay', '/usr', check=False)
-    _assert_one_line_error(result, 'cannot write to output directory')
-    assert _snapshot(output) == before
+    assert_one_line_error(result, 'cannot write to output directory')
+    assert snapshot(output) == before
 
 
 @pytest.mark.parametrize('mode', ['export', 'generator'])

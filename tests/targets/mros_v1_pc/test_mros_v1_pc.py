@@ -1,5 +1,5 @@
 """The real mROS v1 library, unchanged, with genmros' headers, on the PC
-target (issue 14): `genmros mros-v1-pc` builds the sample apps
+target: `genmros mros-v1-pc` builds the sample apps
 custom_pubsub and string_pubsub from their own sources and the checkout's
 mros-lib for 32-bit ARM Linux (the board's instruction set), and they run
 under qemu-arm against a real rosmaster, the sample's own roscpp nodes
@@ -32,14 +32,13 @@ import pytest
 import evaluation
 from conftest import run_genmros
 from fixtures.build_integration.tools import run
-from evaluation import BOARD_IP, DELIVERY_TIMEOUT, MROS_V1_ROOT, PEER_IP, Board
+from evaluation import BOARD_IP, DELIVERY_TIMEOUT, PEER_IP, Board
+from mros_v1_checkout import MROS_V1_ROOT
 from ros_processes import RosGraph, sourced_environment
 from sanitizer_reports import LIBRARY_REPORTS, sanitizer_reports
 from tcpros_peer import HostilePublisher, RawSubscriber, encode_header
 
-pytestmark = pytest.mark.skipif(
-    not os.path.isfile(os.path.join(MROS_V1_ROOT, 'mros-lib', 'Makefile.m')),
-    reason='no mROS v1 checkout at %s (set MROS_V1_ROOT)' % MROS_V1_ROOT)
+pytestmark = [pytest.mark.needs_mros_v1, pytest.mark.needs_qemu, pytest.mark.slow]
 
 APPS = ('string_pubsub', 'custom_pubsub')
 STRING_MD5 = '992ce8a1687cec8c8bd883ec73ca41d1'

@@ -8,12 +8,8 @@ import os
 import pytest
 
 from conftest import REPO, run_genmros
+from mros_v1_checkout import MROS_V1_ROOT
 
-MROS_V1_ROOT = os.environ.get('MROS_V1_ROOT') or os.path.join(os.path.dirname(REPO), 'shared',
-                                                              'mros_v1')
-needs_checkout = pytest.mark.skipif(
-    not os.path.isfile(os.path.join(MROS_V1_ROOT, 'mros-lib', 'Makefile.m')),
-    reason='no mROS v1 checkout at %s (set MROS_V1_ROOT)' % MROS_V1_ROOT)
 
 
 def _error_line(*arguments):
@@ -53,7 +49,7 @@ def test_an_app_outside_a_checkout_needs_mros_root(tmp_path):
         '%s: no mROS v1 checkout here (no mros-lib/Makefile.m)' % tmp_path)
 
 
-@needs_checkout
+@pytest.mark.needs_mros_v1
 def test_a_task_the_app_does_not_define(tmp_path):
     # The library's own tasks are in the sample app's mros_config/; this
     # app's cfg names two tasks, and its app.cpp defines only the second:
@@ -77,7 +73,7 @@ def test_a_task_the_app_does_not_define(tmp_path):
         "found no definition)" % os.path.join(app, 'app.cfg'))
 
 
-@needs_checkout
+@pytest.mark.needs_mros_v1
 def test_an_unsupported_static_api(tmp_path):
     app = _app(tmp_path, '\nCRE_MBX(BOX, { TA_NULL, 0, NULL });\n')
     problem = _error_line(app, '--mros-root', MROS_V1_ROOT)

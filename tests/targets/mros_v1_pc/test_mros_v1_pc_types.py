@@ -1,4 +1,4 @@
-"""Every message type of test_ws through the real mROS v1 library (issue 14):
+"""Every message type of test_ws through the real mROS v1 library:
 the aggregates (callCallback, getMD5Sum, the explicit instantiations) for
 all of them in one app, with both storage kinds, on the library's wire and
 on-board paths.
@@ -33,14 +33,13 @@ import time
 import pytest
 
 import evaluation
-from evaluation import DELIVERY_TIMEOUT, MROS_V1_ROOT, PEER_IP, Board
+from evaluation import DELIVERY_TIMEOUT, PEER_IP, Board
+from mros_v1_checkout import MROS_V1_ROOT
 from ros_processes import RosGraph, sourced_environment
 from sanitizer_reports import sanitizer_reports
 from tcpros_peer import HostilePublisher, RawSubscriber, encode_header, frame
 
-pytestmark = pytest.mark.skipif(
-    not evaluation.checkout_found(),
-    reason='no mROS v1 checkout at %s (set MROS_V1_ROOT)' % MROS_V1_ROOT)
+pytestmark = [pytest.mark.needs_mros_v1, pytest.mark.needs_qemu, pytest.mark.slow]
 
 # The app's groups, in the order of its switch statement.
 GROUPS = [['PersonalData', 'BuiltinTypes'], ['ArrayTypes', 'NestedTypes'], ['Constants', 'Empty'],

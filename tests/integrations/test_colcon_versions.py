@@ -15,6 +15,8 @@ from conftest import TEST_WS
 from fixtures.build_integration.tools import run, user_environment
 from user_install import copy_sources, pip_flags
 
+pytestmark = pytest.mark.slow
+
 
 @pytest.fixture(scope='module')
 def colcons(tmp_path_factory):

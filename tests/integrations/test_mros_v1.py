@@ -1,4 +1,4 @@
-"""genmros headers as a drop-in for the mROS v1 library and its apps (issue 7).
+"""genmros headers as a drop-in for the mROS v1 library and its apps.
 
 mROS v1 apps build with make at -std=gnu++98 for ARM boards; the headers must
 compile there and in every later standard, deliver frames the way the v1
@@ -17,56 +17,14 @@ import sys
 
 import pytest
 
+from compile_checks import LANGUAGE_MODES, STRICT_FLAGS, TARGETS, every_header_translation_unit
 from conftest import REPO, TEST_WS, run_genmros
 
 FIXTURES = os.path.join(REPO, 'tests', 'fixtures')
 APP_FIXTURE = os.path.join(FIXTURES, 'mros_v1_app')
 MAKE_FRAGMENT = os.path.join(REPO, 'cmake', 'genmros.mk')
-STRICT_FLAGS = ['-Wall', '-Wextra', '-Wshadow', '-pedantic', '-Werror', '-fno-exceptions', '-fno-rtti']
-LANGUAGE_MODES = ['gnu++98', 'c++11', 'c++14', 'c++17']
-# The CPUs of mROS boards: GR-PEACH's Cortex-A9 (its Makefile's line) and
-# two Cortex-M cores.
-TARGETS = {
-    'host': ['g++'],
-    'cortex-m0': ['arm-none-eabi-g++', '-mcpu=cortex-m0', '-mthumb'],
-    'cortex-m4': ['arm-none-eabi-g++', '-mcpu=cortex-m4', '-mthumb', '-mfloat-abi=hard',
-                  '-mfpu=fpv4-sp-d16'],
-    'cortex-a9': ['arm-none-eabi-g++', '-mcpu=cortex-a9', '-marm', '-mfpu=vfpv3',
-                  '-mfloat-abi=hard', '-mno-unaligned-access'],
-}
 # genmros run from this checkout, the way make runs a command.
 GENMROS_COMMAND = 'env PYTHONPATH=%s %s -m colcon_mros' % (REPO, sys.executable)
-
-
-def _every_header_translation_unit(include_root, path):
-    """A translation unit that includes every header under include_root and
-    instantiates the whole interface of every message type."""
-    headers = sorted(os.path.relpath(p, include_root)
-                     for p in glob.glob(os.path.join(include_root, '**', '*.h'), recursive=True))
-    types = []
-    for header in headers:
-        with open(os.path.join(include_root, header)) as stream:
-            types.extend(re.findall(r'struct Fields<(\S+)>', stream.read()))
-    lines = ['#include <%s>' % h for h in headers if h != 'message_class_specialization.h']
-    lines += ['',
-              'template <class T> int exercise(uint8_t* buffer, uint32_t size) {',
-              '  T message;',
-              '  char* cursor = reinterpret_cast<char*>(buffer);',
-              '  int total = message.dataSize() + message.serialize(buffer, size) +',
-              '              message.deserialize(buffer, size);',
-              '  message.memCopy(cursor);',
-              '  message.deserialize(cursor);',
-              '  subtask_methods::CallCallbackFuncs<T::MROS_TYPE_ID>::call(0, cursor);',
-              '  return total + static_cast<int>(message.serializedLength());',
-              '}',
-              '',
-              'int exerciseAll(uint8_t* buffer, uint32_t size) {',
-              '  int total = 0;']
-    lines += ['  total += exercise<%s>(buffer, size);' % name for name in types]
-    lines += ['  return total + (getMD5Sum(0) != 0);', '}', '']
-    with open(path, 'w') as stream:
-        stream.write('\n'.join(lines))
-    return len(types)
 
 
 @pytest.fixture(scope='module')
@@ -75,7 +33,7 @@ def every_header_sources(debian_export, test_ws_export, tmp_path_factory):
     sources = []
     for name, root in (('debian', debian_export), ('test_ws', test_ws_export)):
         source = str(directory / ('%s.cpp' % name))
-        assert _every_header_translation_unit(root, source) > (150 if name == 'debian' else 14)
+        assert every_header_translation_unit(root, source) > (150 if name == 'debian' else 14)
         sources.append((source, root))
     return sources
 

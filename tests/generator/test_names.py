@@ -5,9 +5,9 @@ import os
 import re
 
 from colcon_mros.generator.names import SUPPORT_HEADER_NAMES, member_identifier
+from conftest import REPO
 
-TEMPLATES = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'colcon_mros',
-                         'generator', 'templates')
+TEMPLATES = os.path.join(REPO, 'colcon_mros', 'generator', 'templates')
 # A template's parameter list, nested template arguments included.
 _TEMPLATE_HEAD = re.compile(r'template\s*<(?:[^<>]|<[^<>]*>)*>')
 _DECLARATION = re.compile(r'\b(?:struct|class|namespace|using)\s+([A-Za-z_]\w*)')

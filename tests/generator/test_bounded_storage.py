@@ -1,4 +1,4 @@
-"""Bounded storage (issue 9): strings and arrays inside the message, no heap,
+"""Bounded storage: strings and arrays inside the message, no heap,
 exact maximum sizes, and bounds that are never exceeded silently."""
 
 import os
@@ -8,7 +8,7 @@ import subprocess
 import pytest
 
 from conftest import TEST_WS, run_genmros
-from test_mros_v1 import LANGUAGE_MODES, STRICT_FLAGS, TARGETS, _every_header_translation_unit
+from compile_checks import LANGUAGE_MODES, STRICT_FLAGS, TARGETS, every_header_translation_unit
 
 DEBIAN_SET = ['sensor_msgs/Image', 'sensor_msgs/PointCloud2', 'sensor_msgs/JointState', 'nav_msgs/Odometry',
               'visualization_msgs/MarkerArray', 'std_msgs/Header', 'std_msgs/Float64MultiArray']
@@ -43,7 +43,7 @@ def bounded_sources(bounded_exports, tmp_path_factory):
     sources = {}
     for name, root in bounded_exports.items():
         sources[name] = str(directory / ('%s.cpp' % name))
-        assert _every_header_translation_unit(root, sources[name]) >= 7
+        assert every_header_translation_unit(root, sources[name]) >= 7
     return sources
 
 
@@ -67,7 +67,7 @@ def test_bounded_firmware_links_without_an_allocator(bounded_exports, bounded_so
     include = bounded_exports['test_ws'] if storage == 'bounded' else test_ws_export
     source = bounded_sources['test_ws'] if storage == 'bounded' else str(tmp_path / 'heap.cpp')
     if storage == 'heap':
-        _every_header_translation_unit(include, source)
+        every_header_translation_unit(include, source)
     main = tmp_path / 'main.cpp'
     main.write_text('#include "%s"\nstatic uint8_t buffer[4096];\n'
                     'int main() { return exerciseAll(buffer, sizeof buffer); }\n' % source)

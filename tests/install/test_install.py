@@ -1,4 +1,4 @@
-"""Installing and uninstalling colcon-mros (issue 8): scripts/setup.sh
+"""Installing and uninstalling colcon-mros: scripts/setup.sh
 installs it as the Debian package colcon-mros, so dpkg owns every file of it,
 the catkin generator marker included; after scripts/uninstall.sh nothing of
 genmros is left, and an ordinary message workspace still builds with
@@ -11,6 +11,10 @@ import subprocess
 
 from conftest import REPO, TEST_WS
 from user_install import NOBODY, install_as_nobody, pip_flags
+
+import pytest
+
+pytestmark = pytest.mark.slow
 
 MARKER = '/etc/ros/genmsg/genmros'
 

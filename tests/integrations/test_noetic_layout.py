@@ -19,6 +19,8 @@ import pytest
 from conftest import TEST_WS
 from user_install import copy_sources
 
+pytestmark = pytest.mark.slow
+
 # What a sourced Noetic puts on PYTHONPATH that genmros uses (from Debian here).
 ROS_PYTHON_MODULES = ('genmsg', 'em.py', 'rospkg', 'catkin_pkg', 'pyparsing', 'yaml', 'dateutil',
                       'docutils', 'six.py')

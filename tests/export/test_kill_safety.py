@@ -19,8 +19,7 @@ import time
 import pytest
 
 from conftest import REPO, run_genmros
-from test_bad_input import _snapshot, _write
-from test_hostile_definitions import package_xml
+from file_trees import package_xml, snapshot, write_tree
 
 TYPES = 40
 KILLS = 30
@@ -77,7 +76,7 @@ def _sources(version):
 
 
 def _contents(root):
-    return {relative: content for relative, (content, _) in _snapshot(root).items()}
+    return {relative: content for relative, (content, _) in snapshot(root).items()}
 
 
 def _temporaries(root):
@@ -94,7 +93,7 @@ def exports(tmp_path_factory):
     states = {}
     for version in ('old', 'new'):
         workspace = root / version / 'ws'
-        _write(str(workspace / 'src' / 'kill_ws'), _sources(version))
+        write_tree(str(workspace / 'src' / 'kill_ws'), _sources(version))
         output = str(root / version / 'out')
         run_genmros('export', '--workspace', str(workspace), '-o', output, '--underlay', '/usr')
         states[version] = output
@@ -152,7 +151,7 @@ def test_kill_at_each_phase_of_an_export(exports, tmp_path, phase, expected):
 
 def test_generator_mode_kill_between_renames_leaves_no_temporary(tmp_path):
     package = str(tmp_path / 'src' / 'kill_ws')
-    _write(package, {'package.xml': package_xml('kill_ws'), 'srv/Ask.srv': 'int32 a\n---\nint32 b\n'})
+    write_tree(package, {'package.xml': package_xml('kill_ws'), 'srv/Ask.srv': 'int32 a\n---\nint32 b\n'})
     output = str(tmp_path / 'include' / 'kill_ws')
     arguments = [os.path.join(package, 'srv', 'Ask.srv'), '-p', 'kill_ws', '-o', output]
     result = subprocess.run([sys.executable, '-c', LAUNCHER, 'between-renames'] + arguments,

@@ -21,18 +21,13 @@ from genmsg import gentools, msg_loader
 from genmsg.msgs import bare_msg_type, is_builtin, parse_type
 
 from conftest import run_genmros
-from test_bad_input import _assert_one_line_error, _snapshot, _write
+from file_trees import assert_one_line_error, package_xml, snapshot, write_tree
+
+pytestmark = pytest.mark.slow
 
 LANGUAGE_MODES = ['gnu++98', 'c++11', 'c++14', 'c++17']
 STRICT = ['-Wall', '-Wextra', '-Wshadow', '-Werror', '-pedantic', '-fno-exceptions', '-fno-rtti']
 SANITIZERS = ['-fsanitize=address,undefined', '-fno-sanitize-recover=all', '-g']
-
-
-def package_xml(name):
-    return ('<?xml version="1.0"?>\n<package format="2">\n  <name>%s</name>\n  <version>0.0.1</version>\n'
-            '  <description>Hostile definitions.</description>\n'
-            '  <maintainer email="dev@colcon-mros.invalid">colcon-mros developers</maintainer>\n'
-            '  <license>BSD</license>\n  <buildtool_depend>catkin</buildtool_depend>\n</package>\n' % name)
 
 
 def _type_per_line(prefix, declarations):
@@ -338,8 +333,8 @@ GUARD_TWIN = {'package.xml': package_xml('hostile_ok_b'), 'msg/C.msg': 'string f
 def accepted_export(tmp_path_factory):
     root = tmp_path_factory.mktemp('hostile_ok')
     package = root / 'ws' / 'src' / 'hostile_ok'
-    _write(str(package), _accepted_files())
-    _write(str(root / 'ws' / 'src' / 'hostile_ok_b'), GUARD_TWIN)
+    write_tree(str(package), _accepted_files())
+    write_tree(str(root / 'ws' / 'src' / 'hostile_ok_b'), GUARD_TWIN)
     output = str(root / 'out')
     run_genmros('export', '--workspace', str(root / 'ws'), '-o', output, '--underlay', '/usr')
     return str(root), str(package), output
@@ -492,7 +487,7 @@ int main() {
 def good_export(tmp_path_factory):
     """An export of a good package, copied into every refused case's output."""
     root = tmp_path_factory.mktemp('hostile_good')
-    _write(str(root / 'ws' / 'src' / 'hostile_good'),
+    write_tree(str(root / 'ws' / 'src' / 'hostile_good'),
            {'package.xml': package_xml('hostile_good'), 'msg/Good.msg': 'std_msgs/Header header\nint32 a\n'})
     output = str(root / 'out')
     run_genmros('export', '--workspace', str(root / 'ws'), '-o', output, '--underlay', '/usr')
@@ -506,22 +501,22 @@ def test_refused_definition(good_export, tmp_path, package_name, files, target, 
     workspace = tmp_path / 'ws'
     shutil.copytree(good_workspace, str(workspace))
     package = str(workspace / 'src' / 'case')
-    _write(package, dict(files, **{'package.xml': package_xml(package_name)}))
+    write_tree(package, dict(files, **{'package.xml': package_xml(package_name)}))
     output = str(tmp_path / 'out')
     shutil.copytree(good_output, output)
-    before = _snapshot(output)
+    before = snapshot(output)
     location = os.path.join(package, target) + line
     result = run_genmros('export', '--workspace', str(workspace), '-o', output, '--underlay', '/usr', check=False)
-    _assert_one_line_error(result, location, problem)
-    assert _snapshot(output) == before
+    assert_one_line_error(result, location, problem)
+    assert snapshot(output) == before
     includes = ['-I', '%s:%s' % (package_name, os.path.join(package, 'msg')),
                 '-I', 'std_msgs:/usr/share/std_msgs/msg']
     if not os.path.isdir(os.path.join(package, 'msg')):
         includes = includes[2:]
     result = run_genmros(os.path.join(package, target), '-p', package_name,
                          '-o', os.path.join(output, package_name), *includes, check=False)
-    _assert_one_line_error(result, location, problem)
-    assert _snapshot(output) == before
+    assert_one_line_error(result, location, problem)
+    assert snapshot(output) == before
 
 
 def test_non_ascii_package_in_generator_mode(tmp_path):
@@ -530,7 +525,7 @@ def test_non_ascii_package_in_generator_mode(tmp_path):
     source = tmp_path / 'A.msg'
     source.write_text('int32 a\n')
     result = run_genmros(str(source), '-p', 'paquete_\u00f1', '-o', str(tmp_path / 'out' / 'x'), check=False)
-    _assert_one_line_error(result, str(source) + ':',
+    assert_one_line_error(result, str(source) + ':',
                            "package name 'paquete_\u00f1' cannot be a C++ namespace: not an ASCII identifier")
     assert not (tmp_path / 'out').exists()
 
@@ -545,7 +540,7 @@ def _chain(depth):
 def test_nesting_as_deep_as_gencpp_handles(tmp_path):
     """250 levels (gencpp's limit): generated, compiled, and equal to genmsg."""
     package = str(tmp_path / 'ws' / 'src' / 'hostile_deep')
-    _write(package, _chain(250))
+    write_tree(package, _chain(250))
     output = str(tmp_path / 'out')
     run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', output, '--underlay', '/usr')
     source = tmp_path / 'deep.cpp'
@@ -562,10 +557,10 @@ def test_nesting_as_deep_as_gencpp_handles(tmp_path):
 
 def test_nesting_beyond_the_limit_is_refused(tmp_path):
     package = str(tmp_path / 'ws' / 'src' / 'hostile_deep')
-    _write(package, _chain(1002))
+    write_tree(package, _chain(1002))
     result = run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', str(tmp_path / 'out'),
                          '--underlay', '/usr', check=False)
-    _assert_one_line_error(result, os.path.join(package, 'msg', 'D999.msg') + ':2:',
+    assert_one_line_error(result, os.path.join(package, 'msg', 'D999.msg') + ':2:',
                            "field 'next' nests types more than 1000 levels deep")
     assert not os.path.exists(str(tmp_path / 'out'))
 
@@ -582,7 +577,7 @@ def test_diamond_nesting_takes_linear_time(tmp_path):
     """Each type holds the next twice: genmsg's own recursion takes 2**depth
     steps; genmros computes each type's identity once, with genmsg's result."""
     package = str(tmp_path / 'ws' / 'src' / 'hostile_wide')
-    _write(package, _diamond(40))
+    write_tree(package, _diamond(40))
     output = str(tmp_path / 'out')
     started = time.monotonic()
     run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', output, '--underlay', '/usr')
@@ -600,10 +595,10 @@ def test_diamond_nesting_takes_linear_time(tmp_path):
 def test_error_on_the_last_line_of_a_long_file_is_found_quickly(tmp_path):
     package = str(tmp_path / 'ws' / 'src' / 'hostile_long')
     lines = ['int32 field%d' % i for i in range(19999)] + ['int32 1bad']
-    _write(package, {'package.xml': package_xml('hostile_long'), 'msg/Long.msg': '\n'.join(lines) + '\n'})
+    write_tree(package, {'package.xml': package_xml('hostile_long'), 'msg/Long.msg': '\n'.join(lines) + '\n'})
     started = time.monotonic()
     result = run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', str(tmp_path / 'out'),
                          '--underlay', '/usr', check=False)
     assert time.monotonic() - started < 20
-    _assert_one_line_error(result, os.path.join(package, 'msg', 'Long.msg') + ':20000:',
+    assert_one_line_error(result, os.path.join(package, 'msg', 'Long.msg') + ':20000:',
                            '1bad is not a legal message field name')

@@ -18,6 +18,8 @@ from fixtures.build_integration.tools import (
     MESSAGE_PACKAGES, SUPPORT_HEADER, TEST_WS_SRC, compile_headers, expected_header_names, genmros_export,
     headers_under, new_workspace, package_headers, run, unwrapped, user_environment)
 
+pytestmark = pytest.mark.slow
+
 GENMROS_INCLUDE = os.path.join('share', 'genmros', 'include')
 
 

@@ -5,8 +5,9 @@ import os
 
 import pytest
 
-from colcon_mros.generator.cpp import (SUPPORT_HEADER, CppMessage, CppType, cpp_constant_literal,
-                             cpp_string_literal_lines, field_cpp_type)
+from colcon_mros.generator.cpp import (SUPPORT_HEADER, CppMessage, CppType,
+                                       cpp_constant_literal, cpp_string_literal_lines,
+                                       field_cpp_type)
 from colcon_mros.errors import GenmrosError
 from colcon_mros.generator.model import ModelBuilder
 from colcon_mros.generator.parse import SpecLoader

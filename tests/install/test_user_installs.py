@@ -1,4 +1,4 @@
-"""colcon-mros installed without root, and into a venv (issue 8).
+"""colcon-mros installed without root, and into a venv.
 
 An ordinary user (nobody, through setpriv) runs `pip install --user`; a venv
 made with --system-site-packages gets its own install. Each install runs its
@@ -16,9 +16,12 @@ import subprocess
 import pytest
 
 import evaluation
+from mros_v1_checkout import MROS_V1_ROOT
 from conftest import REPO, TEST_WS
 from ros_processes import RosGraph
 from user_install import NOBODY, Install, copy_sources, install_as_nobody, pip_flags
+
+pytestmark = pytest.mark.slow
 
 FIRMWARE_CMAKE = '''\
 cmake_minimum_required(VERSION 3.10)
@@ -96,10 +99,9 @@ def test_colcon_export_points_a_firmware_at_the_install(install):
     assert install.run([os.path.join(build, 'firmware')], firmware, check=False).returncode == 0
 
 
+@pytest.mark.needs_mros_v1
 def test_the_pc_target_builds_and_runs_an_app_from_the_installed_package(venv_install, tmp_path):
-    mros_root = evaluation.MROS_V1_ROOT
-    if not evaluation.checkout_found():
-        pytest.skip('no mROS v1 checkout at %s (set MROS_V1_ROOT)' % mros_root)
+    mros_root = MROS_V1_ROOT
     output = str(tmp_path / 'string_pubsub')
     built = venv_install.run(['genmros', 'mros-v1-pc', '-v', '--target', 'native', '-j2', '-o',
                               output, os.path.join(mros_root, 'mros_ws', 'string_pubsub')],

@@ -1,0 +1,34 @@
+"""cmake/genmros-names.cmake is what `genmros cmake-names` prints: the names
+the CMake module and the catkin generator use come from Python, and neither
+CMake file spells them again."""
+
+import os
+import re
+
+from conftest import REPO, run_genmros
+
+CMAKE_FILES = [os.path.join(REPO, 'cmake', 'mros_generate.cmake'),
+               os.path.join(REPO, 'share', 'genmros', 'cmake', 'genmros-extras.cmake')]
+
+
+def _code(path):
+    """path's CMake code without its comments."""
+    with open(path) as stream:
+        return re.sub(r'#[^\n]*', '', stream.read())
+
+
+def test_the_committed_names_file_is_genmros_output():
+    with open(os.path.join(REPO, 'cmake', 'genmros-names.cmake')) as stream:
+        committed = stream.read()
+    assert committed == run_genmros('cmake-names').stdout
+    assert 'set(GENMROS_SERVICE_HALVES "Request;Response")' in committed
+
+
+def test_the_cmake_files_take_the_names_from_it():
+    for path in CMAKE_FILES:
+        code = _code(path)
+        for name in ('mros_message_support.h', 'message_headers.h', 'msg_max_size.h',
+                     'Request', 'Response'):
+            assert name not in code, '%s spells %s' % (path, name)
+    assert '${GENMROS_SERVICE_HALVES}' in _code(CMAKE_FILES[1])
+    assert '${GENMROS_FIRMWARE_AGGREGATES}' in _code(CMAKE_FILES[0])
