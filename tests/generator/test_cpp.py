@@ -78,9 +78,12 @@ def test_constant_literals(ros_type, value, literal):
 
 
 def test_catkins_cmake_installs_the_support_header_by_its_name():
-    # genmros-extras.cmake names it without asking genmros (no process per package).
+    # genmros-extras.cmake takes the name from genmros-names.cmake, without
+    # asking genmros (no process per package).
     with open(os.path.join(REPO, 'share', 'genmros', 'cmake', 'genmros-extras.cmake')) as stream:
-        assert '"${_genmros_include_root}/%s"' % SUPPORT_HEADER in stream.read()
+        assert '"${_genmros_include_root}/${GENMROS_SUPPORT_HEADER}"' in stream.read()
+    with open(os.path.join(REPO, 'cmake', 'genmros-names.cmake')) as stream:
+        assert 'set(GENMROS_SUPPORT_HEADER "%s")' % SUPPORT_HEADER in stream.read()
 
 
 @pytest.mark.parametrize('text, pieces', [
