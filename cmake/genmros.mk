@@ -30,7 +30,6 @@
 
 GENMROS ?= genmros
 MROS_MSG_INCLUDE_DIR ?= include
-MROS_MSG_DEFINITION_TEXT ?= full
 
 ifeq ($(strip $(MROS_MSG_TYPES)),)
 $(error genmros.mk: MROS_MSG_TYPES names no message type (pkg/Type ...))
@@ -46,7 +45,7 @@ _mros_msg_args := export -o $(MROS_MSG_INCLUDE_DIR) \
   $(addprefix --type ,$(MROS_MSG_TYPES)) \
   $(addprefix --underlay ,$(_mros_msg_prefixes)) \
   $(addprefix --workspace ,$(_mros_msg_sources)) \
-  --definition-text $(MROS_MSG_DEFINITION_TEXT) $(MROS_MSG_FLAGS)
+  $(if $(MROS_MSG_DEFINITION_TEXT),--definition-text $(MROS_MSG_DEFINITION_TEXT)) $(MROS_MSG_FLAGS)
 
 # genmros lists in this file the definitions the headers come from, as rules
 # whose change remakes it; make remakes an included makefile before anything

@@ -85,30 +85,18 @@ function(_mros_attach ARG_TARGET ARG_OUTPUT_DIR ARG_GENMROS_ARGS ARG_DEPENDS ARG
 endfunction()
 
 # genmros' arguments for the headers' form, from STORAGE, OPTIONS and
-# DEFINITION_TEXT, checked.
-function(_mros_form_args ARG_FUNCTION ARG_STORAGE ARG_OPTIONS ARG_DEFINITION_TEXT ARG_OUTPUT_VAR)
-  if(NOT ARG_DEFINITION_TEXT)
-    set(ARG_DEFINITION_TEXT full)
+# DEFINITION_TEXT as given: genmros has the defaults and checks the values
+# (at configure time, see _mros_export_now).
+function(_mros_form_args ARG_STORAGE ARG_OPTIONS ARG_DEFINITION_TEXT ARG_OUTPUT_VAR)
+  set(arguments "")
+  if(ARG_STORAGE)
+    list(APPEND arguments --storage "${ARG_STORAGE}")
   endif()
-  if(NOT ARG_DEFINITION_TEXT MATCHES "^(full|compact)$")
-    message(FATAL_ERROR "${ARG_FUNCTION}(): DEFINITION_TEXT is full or compact, not "
-      "'${ARG_DEFINITION_TEXT}'")
+  if(ARG_DEFINITION_TEXT)
+    list(APPEND arguments --definition-text "${ARG_DEFINITION_TEXT}")
   endif()
-  if(NOT ARG_STORAGE)
-    set(ARG_STORAGE heap)
-  endif()
-  if(NOT ARG_STORAGE MATCHES "^(heap|bounded)$")
-    message(FATAL_ERROR "${ARG_FUNCTION}(): STORAGE is heap or bounded, not '${ARG_STORAGE}'")
-  endif()
-  if(ARG_OPTIONS AND ARG_STORAGE STREQUAL "heap")
-    message(FATAL_ERROR "${ARG_FUNCTION}(): OPTIONS sets bounds, which only STORAGE bounded uses")
-  endif()
-  set(arguments --storage ${ARG_STORAGE} --definition-text ${ARG_DEFINITION_TEXT})
   foreach(file ${ARG_OPTIONS})
     get_filename_component(file "${file}" ABSOLUTE)
-    if(NOT EXISTS "${file}")
-      message(FATAL_ERROR "${ARG_FUNCTION}(): OPTIONS file '${file}' does not exist")
-    endif()
     list(APPEND arguments --options "${file}")
   endforeach()
   set(${ARG_OUTPUT_VAR} ${arguments} PARENT_SCOPE)
@@ -124,8 +112,12 @@ function(_mros_export_now ARG_FUNCTION ARG_GENMROS_ARGS ARG_OUTPUT_DIR ARG_OUTPU
   execute_process(COMMAND "${GENMROS_BIN}" export ${ARG_GENMROS_ARGS} --depfile "${depfile}"
     RESULT_VARIABLE result ERROR_VARIABLE error OUTPUT_QUIET)
   if(NOT result EQUAL 0)
-    string(STRIP "${error}" error)
-    message(FATAL_ERROR "${ARG_FUNCTION}(): ${error}")
+    # genmros' one error line (argparse puts its usage before it).
+    string(REGEX MATCH "[^\n]*error: [^\n]*" error_line "${error}")
+    if(NOT error_line)
+      string(STRIP "${error}" error_line)
+    endif()
+    message(FATAL_ERROR "${ARG_FUNCTION}(): ${error_line}")
   endif()
   # After the main rule, one rule "<file>:" per file.
   set(inputs "")
@@ -159,8 +151,7 @@ function(mros_import_messages)
     message(FATAL_ERROR "mros_import_messages(): EXPORT_DIR '${export_dir}' holds no message types")
   endif()
 
-  _mros_form_args(mros_import_messages "${ARG_STORAGE}" "${ARG_OPTIONS}" "${ARG_DEFINITION_TEXT}"
-    form_args)
+  _mros_form_args("${ARG_STORAGE}" "${ARG_OPTIONS}" "${ARG_DEFINITION_TEXT}" form_args)
   set(genmros_args --underlay "${export_dir}")
   foreach(type ${types})
     list(FIND MROS_EXPORT_TYPES "${type}" index)
@@ -172,11 +163,10 @@ function(mros_import_messages)
   endforeach()
 
   _mros_output_dir(${ARG_TARGET} output_dir)
-  list(APPEND genmros_args -o "${output_dir}")
+  list(APPEND genmros_args -o "${output_dir}" ${form_args})
   if(ARG_STORAGE STREQUAL "bounded" OR ARG_DEFINITION_TEXT STREQUAL "compact")
     # Every header anew, in the form asked for: the export's heap headers
     # with full texts stay out of t.
-    list(APPEND genmros_args ${form_args})
     set(include_dirs "${output_dir}")
   else()
     # The aggregates only: the export dir has none, and a firmware's own
@@ -198,8 +188,7 @@ function(mros_generate_messages)
     message(FATAL_ERROR "mros_generate_messages(): TYPES lists no message type")
   endif()
 
-  _mros_form_args(mros_generate_messages "${ARG_STORAGE}" "${ARG_OPTIONS}" "${ARG_DEFINITION_TEXT}"
-    genmros_args)
+  _mros_form_args("${ARG_STORAGE}" "${ARG_OPTIONS}" "${ARG_DEFINITION_TEXT}" genmros_args)
   set(workspace "")
   foreach(path ${ARG_PACKAGE_PATHS})
     get_filename_component(path "${path}" ABSOLUTE)

@@ -195,7 +195,8 @@ def test_cmake_module_and_make_fragment_take_the_choice(tmp_path):
     bad = subprocess.run(['cmake', '-S', str(project), '-B', str(build), '-DBAD=ON'], capture_output=True,
                          text=True)
     assert bad.returncode != 0
-    assert "mros_generate_messages(): DEFINITION_TEXT is full or compact, not 'short'" in bad.stderr
+    assert ("mros_generate_messages(): genmros export: error: argument --definition-text: "
+            "invalid choice: 'short' (choose from 'full', 'compact')") in ' '.join(bad.stderr.split())
 
     app = tmp_path / 'app'
     app.mkdir()

@@ -293,11 +293,14 @@ def test_import_bounded_storage_generates_its_own_headers(firmware, catkin_expor
 
 
 @pytest.mark.parametrize('cache, expected', [
-    ({'MROS_STORAGE': 'stack'}, "mros_generate_messages(): STORAGE is heap or bounded, not 'stack'"),
+    ({'MROS_STORAGE': 'stack'}, "mros_generate_messages(): genmros export: error: argument "
+                                "--storage: invalid choice: 'stack' (choose from 'heap', 'bounded')"),
     ({'MROS_STORAGE': 'bounded', 'MROS_OPTIONS': '/nonexistent/firmware.options'},
-     "mros_generate_messages(): OPTIONS file '/nonexistent/firmware.options' does not exist"),
+     "mros_generate_messages(): genmros: error: /nonexistent/firmware.options: cannot read "
+     'options file: No such file or directory'),
     ({'MROS_OPTIONS': '/nonexistent/firmware.options'},
-     'mros_generate_messages(): OPTIONS sets bounds, which only STORAGE bounded uses'),
+     'mros_generate_messages(): genmros: error: --options sets bounds, which only --storage '
+     'bounded uses'),
 ])
 def test_bad_storage_arguments_fail_the_configure_step(firmware, workspace, cache, expected):
     result = firmware.configure(check=False, MROS_PACKAGE_PATHS=os.path.join(workspace, 'src'), **cache)
