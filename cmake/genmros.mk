@@ -12,7 +12,7 @@
 # every type they contain, and the aggregates the mROS library includes
 # (message_headers.h, message_class_specialization.h, msg_max_size.h), into
 # the app's include directory; it writes them again whenever one of the
-# .msg/.srv files they come from, or the app's Makefile, changes.
+# .msg/.srv files they come from, or a setting below, changes.
 #
 #   MROS_MSG_TYPES        pkg/Type ... the app publishes or subscribes (required)
 #   MROS_MSG_PATHS        where packages are: catkin source trees (searched for
@@ -47,23 +47,20 @@ _mros_msg_args := export -o $(MROS_MSG_INCLUDE_DIR) \
   $(addprefix --workspace ,$(_mros_msg_sources)) \
   $(if $(MROS_MSG_DEFINITION_TEXT),--definition-text $(MROS_MSG_DEFINITION_TEXT)) $(MROS_MSG_FLAGS)
 
-# genmros lists in this file the definitions the headers come from, as rules
-# whose change remakes it; make remakes an included makefile before anything
-# else, so the headers are current before the first object is compiled.
-_mros_msg_depfile := $(MROS_MSG_INCLUDE_DIR)/.genmros.d
+# genmros keeps the run record in this file, a makefile; make remakes an
+# included makefile before anything else, so the headers are current before
+# the first object is compiled. genmros runs every time and decides from the
+# record whether anything changed (a definition, an options file, a setting);
+# when nothing did it writes nothing, and make goes on without reading the
+# makefiles again.
+_mros_msg_record := $(MROS_MSG_INCLUDE_DIR)/.genmros.d
 _mros_msg_default_goal := $(.DEFAULT_GOAL)
 
-$(_mros_msg_depfile): $(firstword $(MAKEFILE_LIST))
-	$(GENMROS) $(_mros_msg_args) --depfile $@
-	@echo '_mros_msg_made_with := $(_mros_msg_args)' >> $@
+$(_mros_msg_record): _mros_msg_ask_genmros
+	@$(GENMROS) $(_mros_msg_args) --record $@
 
-include $(_mros_msg_depfile)
-
-# Other types or paths (from make's command line, say) make the headers anew.
-ifneq ($(strip $(_mros_msg_made_with)),$(strip $(_mros_msg_args)))
-$(_mros_msg_depfile): _mros_msg_arguments_changed
-.PHONY: _mros_msg_arguments_changed
-endif
+.PHONY: _mros_msg_ask_genmros
+include $(_mros_msg_record)
 
 # The app's first target stays make's default goal.
 .DEFAULT_GOAL := $(_mros_msg_default_goal)

@@ -64,22 +64,31 @@ function(_mros_check_arguments ARG_FUNCTION ARG_TARGET ARG_UNPARSED)
   endif()
 endfunction()
 
-# A custom target that writes OUTPUTS with COMMAND_ARGS to genmros, and makes
-# ARG_TARGET build after it with ARG_INCLUDE_DIRS.
+# The run record of the target's genmros export (the rule of
+# colcon_mros/export/run_record.py), beside its output directory.
+function(_mros_record ARG_OUTPUT_DIR ARG_OUTPUT_VAR)
+  set(${ARG_OUTPUT_VAR} "${ARG_OUTPUT_DIR}.d" PARENT_SCOPE)
+endfunction()
+
+# A custom target that runs genmros export with ARG_GENMROS_ARGS whenever an
+# input its run record names changes, and makes ARG_TARGET build after it
+# with ARG_INCLUDE_DIRS.
 function(_mros_attach ARG_TARGET ARG_OUTPUT_DIR ARG_GENMROS_ARGS ARG_DEPENDS ARG_INCLUDE_DIRS)
-  set(outputs "")
+  set(aggregates "")
   foreach(name ${GENMROS_FIRMWARE_AGGREGATES})
-    list(APPEND outputs "${ARG_OUTPUT_DIR}/${name}")
+    list(APPEND aggregates "${ARG_OUTPUT_DIR}/${name}")
   endforeach()
-  # genmros keeps unchanged files as they are (so the firmware's objects are
-  # not rebuilt for nothing); the touch marks the rule as done for make.
-  add_custom_command(OUTPUT ${outputs}
-    COMMAND "${GENMROS_BIN}" export ${ARG_GENMROS_ARGS}
-    COMMAND "${CMAKE_COMMAND}" -E touch_nocreate ${outputs}
+  _mros_record("${ARG_OUTPUT_DIR}" record)
+  # genmros keeps unchanged files as they are, so the firmware's objects are
+  # not rebuilt for nothing; the touch marks the rule as done for make.
+  add_custom_command(OUTPUT "${record}"
+    BYPRODUCTS ${aggregates}
+    COMMAND "${GENMROS_BIN}" export ${ARG_GENMROS_ARGS} --record "${record}"
+    COMMAND "${CMAKE_COMMAND}" -E touch_nocreate "${record}"
     DEPENDS "${GENMROS_BIN}" ${ARG_DEPENDS}
     COMMENT "Generating mROS message headers for ${ARG_TARGET}"
     VERBATIM)
-  add_custom_target(${ARG_TARGET}_mros_messages DEPENDS ${outputs})
+  add_custom_target(${ARG_TARGET}_mros_messages DEPENDS "${record}")
   add_dependencies(${ARG_TARGET} ${ARG_TARGET}_mros_messages)
   target_include_directories(${ARG_TARGET} PUBLIC ${ARG_INCLUDE_DIRS})
 endfunction()
@@ -104,12 +113,12 @@ endfunction()
 
 # Runs genmros export once at configure time, so a bad type, package or
 # options file fails the configure step with genmros' one line rather than
-# the first build, and sets ARG_OUTPUT_VAR to the files its depfile names:
-# every .msg/.srv and options file the headers come from, wherever genmros
-# found them, so that a change to any of them regenerates the headers.
+# the first build, and sets ARG_OUTPUT_VAR to the inputs its run record
+# names: every .msg/.srv and options file the headers come from, wherever
+# genmros found them, so that a change to any of them regenerates the headers.
 function(_mros_export_now ARG_FUNCTION ARG_GENMROS_ARGS ARG_OUTPUT_DIR ARG_OUTPUT_VAR)
-  set(depfile "${ARG_OUTPUT_DIR}.d")
-  execute_process(COMMAND "${GENMROS_BIN}" export ${ARG_GENMROS_ARGS} --depfile "${depfile}"
+  _mros_record("${ARG_OUTPUT_DIR}" record)
+  execute_process(COMMAND "${GENMROS_BIN}" export ${ARG_GENMROS_ARGS} --record "${record}"
     RESULT_VARIABLE result ERROR_VARIABLE error OUTPUT_QUIET)
   if(NOT result EQUAL 0)
     # genmros' one error line (argparse puts its usage before it).
@@ -119,12 +128,15 @@ function(_mros_export_now ARG_FUNCTION ARG_GENMROS_ARGS ARG_OUTPUT_DIR ARG_OUTPU
     endif()
     message(FATAL_ERROR "${ARG_FUNCTION}(): ${error_line}")
   endif()
-  # After the main rule, one rule "<file>:" per file.
+  # The record is a make rule too: after its main rule, one rule "<input>:"
+  # per input, in make's escapes.
   set(inputs "")
-  file(STRINGS "${depfile}" rules REGEX ":$")
+  file(STRINGS "${record}" rules REGEX "^[^#].*:$")
   foreach(rule ${rules})
     string(REGEX REPLACE ":$" "" input "${rule}")
     string(REPLACE "\\ " " " input "${input}")
+    string(REPLACE "\\#" "#" input "${input}")
+    string(REPLACE "$$" "$" input "${input}")
     list(APPEND inputs "${input}")
   endforeach()
   set(${ARG_OUTPUT_VAR} ${inputs} PARENT_SCOPE)
@@ -152,7 +164,7 @@ function(mros_import_messages)
   endif()
 
   _mros_form_args("${ARG_STORAGE}" "${ARG_OPTIONS}" "${ARG_DEFINITION_TEXT}" form_args)
-  set(genmros_args --underlay "${export_dir}")
+  set(genmros_args --export-dir "${export_dir}")
   foreach(type ${types})
     list(FIND MROS_EXPORT_TYPES "${type}" index)
     if(index EQUAL -1)
@@ -164,17 +176,14 @@ function(mros_import_messages)
 
   _mros_output_dir(${ARG_TARGET} output_dir)
   list(APPEND genmros_args -o "${output_dir}" ${form_args})
-  if(ARG_STORAGE STREQUAL "bounded" OR ARG_DEFINITION_TEXT STREQUAL "compact")
-    # Every header anew, in the form asked for: the export's heap headers
-    # with full texts stay out of t.
+  _mros_export_now(mros_import_messages "${genmros_args}" "${output_dir}" inputs)
+  # genmros writes the aggregates, and every header too where the export's
+  # are not in the form asked for: then those stay out of t.
+  if(EXISTS "${output_dir}/${GENMROS_SUPPORT_HEADER}")
     set(include_dirs "${output_dir}")
   else()
-    # The aggregates only: the export dir has none, and a firmware's own
-    # aggregates must win over any a user copied there.
-    list(INSERT genmros_args 0 --only aggregates)
     set(include_dirs "${output_dir};${MROS_EXPORT_INCLUDE_DIR}")
   endif()
-  _mros_export_now(mros_import_messages "${genmros_args}" "${output_dir}" inputs)
   # A ROS build that changes the export rewrites its definitions and, when
   # types come or go, mros_export.cmake.
   list(APPEND inputs "${export_dir}/mros_export.cmake")

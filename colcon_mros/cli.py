@@ -23,7 +23,7 @@ Generate mROS message headers from ROS 1 .msg and .srv files.
 Generator mode, with gencpp's arguments and one or more files of a package
 (catkin runs it once per package, with all its files):
   genmros FILE.msg|FILE.srv -p PKG -o OUTDIR [-I PKG:DIR ...] [-e TEMPLATE_DIR]
-          [--export-dir DIR] [--stamp FILE ...] [--all-of-package]
+          [--export-dir DIR] [--record FILE ...] [--all-of-package]
 
 Export mode, what one firmware needs:
   genmros export [--workspace WS ...] [--package PKG ...] [--type PKG/TYPE ...] -o DIR ...
@@ -48,10 +48,10 @@ def _add_generate(subparsers):
                              "contain, and their definitions, into the export dir DIR (catkin's "
                              'MROS_EXPORT_DIR)')
     _add_catkin_arguments(parser)
-    parser.add_argument('--stamp', dest='stamps', action='append', default=[], metavar='FILE',
-                        help='a file that marks the run as done (repeatable): only the files '
-                             'whose definitions changed since the stamps were written are '
-                             'generated again (catkin gives one per package)')
+    parser.add_argument('--record', dest='records', action='append', default=[], metavar='FILE',
+                        help="the run's record (repeatable): only the files whose definitions "
+                             'changed since the last run recorded there are generated again '
+                             '(catkin gives one per package, and one in the export dir)')
     parser.add_argument('--all-of-package', action='store_true',
                         help='FILE... are all the definitions the package has: the headers (and '
                              'export dir claims) of any other, removed from the package, go')
@@ -85,6 +85,11 @@ def _add_export(subparsers):
                         help='installed prefix holding share/<pkg>/msg, instead of the ROS '
                              "environment (repeatable; default: rospkg's packages on "
                              'ROS_PACKAGE_PATH, then the spaces on CMAKE_PREFIX_PATH)')
+    parser.add_argument('--export-dir', metavar='DIR',
+                        help='an export dir (catkin\'s MROS_EXPORT_DIR, colcon\'s --mros-export) '
+                             'the types come from: an underlay whose headers serve where they '
+                             'have the form asked for (heap storage, full text), so that only '
+                             'the aggregates are written')
     parser.add_argument('--variable-size-budget', type=int, metavar='BYTES',
                         default=DEFAULT_VARIABLE_SIZE_BUDGET,
                         help='PUB_MSG_MAX_SIZE share of a type without an upper size '
@@ -93,9 +98,10 @@ def _add_export(subparsers):
                         help='write only the headers, or only the per-firmware aggregates')
     parser.add_argument('-e', dest='template_dir', help='template directory to use instead of ours')
     _add_header_arguments(parser)
-    parser.add_argument('--depfile', metavar='FILE',
-                        help='also write FILE, a make rule naming every .msg/.srv file and '
-                             'options file the headers come from')
+    parser.add_argument('--record', metavar='FILE',
+                        help="keep the run's record in FILE, and do nothing when it says that "
+                             'nothing the output comes from changed; FILE is also a make rule '
+                             'naming every .msg/.srv and options file the headers come from')
     parser.set_defaults(run=_export)
 
 
@@ -147,7 +153,7 @@ def _add_export_dir_commands(subparsers):
                                   '(genmros-extras.cmake)',
         description="What catkin's configure step asks once when MROS_EXPORT_DIR is set: the "
                     'export dir is checked and prepared, and a CMake file says where the '
-                    "packages' stamps in it go.")
+                    "packages' run records in it go.")
     parser.add_argument('--export-dir', required=True, metavar='DIR')
     parser.add_argument('--cmake-file', required=True, metavar='FILE')
     _add_catkin_arguments(parser)
@@ -213,7 +219,7 @@ def _generate(options):
     from colcon_mros.generator.workspace import parse_include_flags
     generate_files(options.files, options.package, options.output_dir,
                    parse_include_flags(options.include_paths), options.template_dir,
-                   options.export_dir, options.stamps, options.cmake_module,
+                   options.export_dir, options.records, options.cmake_module,
                    options.all_of_package)
 
 
@@ -225,9 +231,9 @@ def export_request(options):
         output_dir=options.output_dir, prefixes=options.prefixes, workspaces=options.workspaces,
         package_names=options.packages, type_names=options.types,
         variable_budget=options.variable_size_budget, template_dir=options.template_dir,
-        only=options.only or EXPORT_PARTS[0], depfile=options.depfile,
+        only=options.only or EXPORT_PARTS[0], record=options.record,
         storage_kind=options.storage, option_files=options.option_files,
-        definition_text=options.definition_text)
+        definition_text=options.definition_text, export_dir=options.export_dir)
 
 
 def _export(options):
@@ -235,8 +241,11 @@ def _export(options):
     require_ros_python()
     from colcon_mros.export.firmware_export import export  # needs genmsg and empy
     result = export(export_request(options))
-    print('genmros: exported %d message and %d service types to %s'
-          % (len(result.messages), len(result.services), options.output_dir))
+    if result.up_to_date:
+        print('genmros: the headers in %s are up to date' % options.output_dir)
+    else:
+        print('genmros: exported %d message and %d service types to %s'
+              % (len(result.messages), len(result.services), options.output_dir))
 
 
 def _make_fragment(options):

@@ -12,10 +12,13 @@ reads one. This module is the only code that knows its layout::
                                    --underlay DIR reads them)
     DIR/COLCON_IGNORE              so no tool takes share/<pkg> for packages
     DIR/.genmros/                  private: which definition put which file here,
-                                   catkin's stamps, colcon's record of its last export
+                                   the run records of catkin's packages and of
+                                   colcon's export
 
 Every type ``mros_export.cmake`` lists (messages, services and their
-Request/Response halves) can be imported by name.
+Request/Response halves) can be imported by name. The headers are in one
+form, :data:`HEADER_FORM`: a firmware that asks for another has them
+generated anew from the definitions beside them.
 
 catkin's generator run for a package puts into the dir, for each definition
 file it generates, the headers and definitions of every type the file
@@ -31,10 +34,13 @@ pruning happen under an exclusive lock.
 import fcntl
 import os
 
+from colcon_mros.generator.defaults import DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE
 from colcon_mros.generator.definition import KINDS, Definition, definitions_in
 from colcon_mros.errors import GenmrosError
 from colcon_mros.generator.output import check_writable, write_files
 
+# (storage, definition text) of the headers catkin and colcon export.
+HEADER_FORM = (DEFAULT_STORAGE, DEFAULT_DEFINITION_TEXT)
 INCLUDE_DIR = 'include'
 SHARE_DIR = 'share'
 CMAKE_FILE = 'mros_export.cmake'
@@ -44,8 +50,8 @@ _STATE_DIR = '.genmros'
 _CLAIMS_DIR = 'claims'
 _LEDGER = 'ledger'
 _LOCK = 'lock'
-_STAMPS_DIR = 'stamps'
-_COLCON_RECORD = 'colcon-export'
+_RECORDS_DIR = 'runs'
+_COLCON_RECORD = '.colcon-export'
 
 
 def _read(path):
@@ -116,17 +122,15 @@ class ExportDir:
         return sorted(messages) + sorted(services)
 
     @property
-    def stamps_dir(self):
-        """Where catkin's run for a package leaves its stamp, named after the
-        package: its time says when the package was last generated here, and
-        when the dir is removed the package is generated again."""
-        return os.path.join(self._state_dir, _STAMPS_DIR)
+    def records_dir(self):
+        """Where catkin's run for a package leaves its run record, named after
+        the package: when the dir is removed, the package is generated again."""
+        return os.path.join(self._state_dir, _RECORDS_DIR)
 
+    @property
     def colcon_record(self):
-        """What colcon build --mros-export recorded of its last export here
-        (text), or None."""
-        path = os.path.join(self._state_dir, _COLCON_RECORD)
-        return _read(path) if os.path.isfile(path) else None
+        """The run record of colcon build --mros-export's last export here."""
+        return os.path.join(self._state_dir, _RECORDS_DIR, _COLCON_RECORD)
 
     def outputs_of(self, definition):
         """The paths generating definition for catkin writes here (its own
@@ -207,10 +211,6 @@ class ExportDir:
                     os.unlink(os.path.join(self.share_dir, old.key))
             write_files(self.path, files)
             self._write_tables(cmake_module)
-
-    def record_colcon_export(self, text):
-        """Keep text as the record of colcon's export just made."""
-        write_files(self._state_dir, {_COLCON_RECORD: text})
 
     # Layout.
 

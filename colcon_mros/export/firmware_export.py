@@ -12,14 +12,19 @@ aggregates, which cover the selected types only, under the output directory::
 Everything is rendered before anything is written, so a bad definition
 leaves OUT as it was, and OUT is switched to the new export in one step
 (:func:`colcon_mros.generator.output.write_tree`). Headers left over from types that
-no longer exist in a package the run exported are removed.
+no longer exist in a package the run exported are removed. With a run
+record (:mod:`colcon_mros.export.run_record`), a run whose inputs, arguments
+and genmros are those of the last one does nothing.
 """
 
 import os
+import time
 
 from colcon_mros.errors import GenmrosError
+from colcon_mros.export.export_dir import HEADER_FORM
+from colcon_mros.export.run_record import RunRecord, definition_directories, snapshot
 from colcon_mros.generator.model import ModelBuilder
-from colcon_mros.generator.output import is_generated, write_files, write_tree
+from colcon_mros.generator.output import is_generated, write_tree
 from colcon_mros.generator.parse import SpecLoader
 from colcon_mros.generator.defaults import (DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE,
                                             DEFAULT_VARIABLE_SIZE_BUDGET, EXPORT_PARTS)
@@ -30,13 +35,15 @@ from colcon_mros.generator.workspace import (environment_packages, installed_pac
 
 
 class ExportResult:
-    """What an export wrote: the message models, the changed and removed paths."""
+    """What an export wrote: the message models, the changed and removed
+    paths; up_to_date when its run record said there was nothing to do."""
 
-    def __init__(self, messages, services, changed, removed):
+    def __init__(self, messages, services, changed, removed, up_to_date=False):
         self.messages = messages
         self.services = services
         self.changed = changed
         self.removed = removed
+        self.up_to_date = up_to_date
 
 
 class Selection:
@@ -87,24 +94,46 @@ class ExportRequest:
     and ``colcon build --mros-export`` both make one.
 
     prefixes=None searches the ROS environment for packages; only is 'all',
-    'headers' or 'aggregates' (colcon_mros.generator.defaults.EXPORT_PARTS)."""
+    'headers' or 'aggregates' (colcon_mros.generator.defaults.EXPORT_PARTS);
+    export_dir: an export dir the types come from, whose headers serve
+    where they have the form asked for; record: the run record's path."""
 
     def __init__(self, *, output_dir, prefixes=None, workspaces=(), package_names=(),
                  type_names=(), variable_budget=DEFAULT_VARIABLE_SIZE_BUDGET, template_dir=None,
-                 only=EXPORT_PARTS[0], depfile=None, storage_kind=DEFAULT_STORAGE,
-                 option_files=(), definition_text=DEFAULT_DEFINITION_TEXT):
+                 only=EXPORT_PARTS[0], record=None, storage_kind=DEFAULT_STORAGE,
+                 option_files=(), definition_text=DEFAULT_DEFINITION_TEXT, export_dir=None):
         self.output_dir = output_dir
-        self.prefixes = prefixes
+        # An export dir is an installed prefix of its definitions.
+        self.prefixes = (list(prefixes or []) + [export_dir] if export_dir else prefixes)
         self.workspaces = list(workspaces)
         self.package_names = list(package_names)
         self.type_names = list(type_names)
         self.variable_budget = variable_budget
         self.template_dir = template_dir
         self.only = only
-        self.depfile = depfile
+        self.record = record
         self.storage_kind = storage_kind
         self.option_files = list(option_files)
         self.definition_text = definition_text
+        self.export_dir = export_dir
+
+    @property
+    def parts(self):
+        """What the run writes (EXPORT_PARTS): with an export dir whose
+        headers have the form asked for, the aggregates only."""
+        if self.export_dir and (self.storage_kind, self.definition_text) == HEADER_FORM:
+            return 'aggregates'
+        return self.only
+
+    def run_arguments(self):
+        """Everything but the definitions that decides what the run writes:
+        its arguments, and where the ROS environment finds packages."""
+        environment = (None if self.prefixes is not None else
+                       [os.environ.get(name) for name in ('ROS_PACKAGE_PATH', 'CMAKE_PREFIX_PATH')])
+        return (os.path.abspath(self.output_dir), self.prefixes, environment,
+                [os.path.abspath(path) for path in self.workspaces], self.package_names,
+                self.type_names, self.variable_budget, self.parts, self.storage_kind,
+                [os.path.abspath(path) for path in self.option_files], self.definition_text)
 
 
 def _check_type_ids(messages):
@@ -116,19 +145,16 @@ def _check_type_ids(messages):
                                % (message.type_id, other, message.full_name))
 
 
-def _depfile_text(target, inputs):
-    """A make rule: target depends on every input, each of which may vanish."""
-    escaped = [path.replace(' ', '\\ ') for path in inputs]
-    lines = ['# Generated by genmros: the definitions and options files %s comes from.'
-             % os.path.basename(target),
-             '%s: %s' % (target, ' \\\n  '.join(escaped))]
-    lines.extend('%s:' % path for path in escaped)
-    return '\n'.join(lines) + '\n'
-
-
 def export(request):
     """Run one :class:`ExportRequest`; returns an :class:`ExportResult`."""
     output_dir = request.output_dir
+    renderer = Renderer(request.template_dir)
+    if request.record:
+        run = renderer.fingerprint(request.run_arguments())
+        last = RunRecord.read(request.record)
+        if last and last.is_current(run):
+            return ExportResult([], [], [], [], up_to_date=True)
+    started_ns = time.time_ns()
     packages = (environment_packages() if request.prefixes is None
                 else installed_packages(request.prefixes))
     local = {}
@@ -144,7 +170,6 @@ def export(request):
     loader = SpecLoader(search_path)
     storage.check(loader)
     builder = ModelBuilder(loader, storage, request.definition_text)
-    renderer = Renderer(request.template_dir)
     roots = [loader.load_message_file(d.path, d.package).full_name for d in selection.messages]
     services = [builder.service(loader.load_service_file(d.path, d.package))
                 for d in selection.services]
@@ -160,7 +185,8 @@ def export(request):
     # nested in them: only those get API instantiations and callback cases.
     firmware_messages = [builder.message(name) for name in dict.fromkeys(roots)]
 
-    writes_headers = request.only != 'aggregates'
+    parts = request.parts
+    writes_headers = parts != 'aggregates'
     files = {}
     if writes_headers:
         files.update(renderer.support_header())
@@ -168,7 +194,7 @@ def export(request):
             files.update(renderer.message(message))
         for service in services:
             files.update(renderer.service(service))
-    if request.only != 'headers':
+    if parts != 'headers':
         files.update(renderer.aggregates(firmware_messages, request.variable_budget))
 
     # Headers left over from types that no longer exist in an exported package.
@@ -178,16 +204,20 @@ def export(request):
             keep[name] = {'%s.h' % type_name for type_name in packages[name].type_names()}
 
     def stale(relative):
+        """A header of a type gone from its package or, when the export
+        dir's headers serve, one this dir held in another form."""
+        if request.export_dir and not writes_headers:
+            return (relative.endswith('.h') and relative not in files
+                    and is_generated(os.path.join(output_dir, relative)))
         package, _, header = relative.partition('/')
         return (package in keep and header.endswith('.h') and header not in keep[package]
                 and is_generated(os.path.join(output_dir, relative)))
 
     changed, removed = write_tree(output_dir, files, stale)
-    depfile = request.depfile
-    if depfile:
-        inputs = sorted({os.path.abspath(m.source) for m in messages} |
-                        {os.path.abspath(s.source) for s in services} |
-                        {os.path.abspath(path) for path in storage.option_files})
-        write_files(os.path.dirname(os.path.abspath(depfile)),
-                    {os.path.basename(depfile): _depfile_text(depfile, inputs)})
+    if request.record:
+        sources = sorted({model.source for model in messages + services})
+        inputs = sources + definition_directories(sources) + list(storage.option_files)
+        RunRecord(run, snapshot(inputs, started_ns),
+                  [os.path.join(output_dir, relative) for relative in files]
+                  ).write(request.record)
     return ExportResult(messages, services, changed, removed)

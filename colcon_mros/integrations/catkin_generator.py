@@ -11,12 +11,13 @@ types and of every type they contain, from whichever package, and the
 definitions they come from.
 
 Every file is loaded and every header rendered before anything is written,
-so one bad file leaves the package's headers as they were. With stamps (the
-outputs make knows the run by), only the files whose definition, or the
-definition of a type they contain, changed since the stamps were written are
-generated again: their headers are rewritten where their text changed and
-touched otherwise, as a per-file rule would; the other headers keep their
-modification times, so nothing downstream rebuilds for nothing.
+so one bad file leaves the package's headers as they were. With run records
+(:mod:`colcon_mros.export.run_record`; the outputs make knows the run by),
+only the files whose definition, or the definition of a type they contain,
+changed since the records were written are generated again: their headers
+are rewritten where their text changed and touched otherwise, as a per-file
+rule would; the other headers keep their modification times, so nothing
+downstream rebuilds for nothing.
 """
 
 import os
@@ -25,6 +26,7 @@ import time
 from colcon_mros.generator.definition import Definition
 from colcon_mros.errors import GenmrosError
 from colcon_mros.export.export_dir import ExportDir
+from colcon_mros.export.run_record import RunRecord, snapshot
 from colcon_mros.generator.model import ModelBuilder
 from colcon_mros.generator.output import is_generated, write_files
 from colcon_mros.generator.parse import SpecLoader
@@ -62,33 +64,21 @@ def _load(loader, builder, definition):
     return _Generated(definition, model, builder.closure(model.dependencies))
 
 
-def _stamped_time(stamps, fingerprint):
-    """When the stamps were written, or None when one is missing or another
-    run's (different fingerprint)."""
-    times = []
-    for stamp in stamps:
-        try:
-            with open(stamp) as stream:
-                if stream.read() != fingerprint:
-                    return None
-            times.append(os.stat(stamp).st_mtime)
-        except OSError:
-            return None
-    return min(times) if times else None
+def _last_runs(records, run):
+    """The records of the last run, or None when one is missing or another
+    run's (a different genmros, template or argument)."""
+    last = [RunRecord.read(path) for path in records]
+    if not last or any(record is None or record.run != run.strip() for record in last):
+        return None
+    return last
 
 
-def _is_stale(generated, since, outputs):
-    """Whether a file needs generating: no stamps, an output missing, or a
-    definition it reads changed since the stamps."""
-    if since is None or not all(os.path.exists(path) for path in outputs):
+def _is_stale(generated, last_runs, outputs):
+    """Whether a file needs generating: no records of the same run, an output
+    missing, or a definition it reads changed since the records."""
+    if last_runs is None or not all(os.path.exists(path) for path in outputs):
         return True
-    for source in generated.sources():
-        try:
-            if os.stat(source).st_mtime >= since:
-                return True
-        except OSError:
-            return True
-    return False
+    return any(record.changed(generated.sources()) for record in last_runs)
 
 
 def _touch(paths, moment):
@@ -110,22 +100,21 @@ def _remove_stale_headers(output_dir, definitions):
 
 
 def generate_files(paths, package, output_dir, search_path, template_dir=None, export_dir=None,
-                   stamps=(), cmake_module=None, all_of_package=False, log=print):
+                   records=(), cmake_module=None, all_of_package=False, log=print):
     """Generate the headers of a package's definition files; returns the
     paths written. log receives one line per file generated or removed.
     all_of_package: paths are all the package has, so the headers and export
     claims of its other (removed) definitions go."""
-    started = time.time()
+    started_ns = time.time_ns()
     loader = SpecLoader(search_path)
     builder = ModelBuilder(loader)
     renderer = Renderer(template_dir)
     loaded = [_load(loader, builder, Definition(package, path)) for path in paths]
-    fingerprint = renderer.fingerprint((package, sorted(paths), sorted(search_path.items()),
-                                          export_dir))
-    since = _stamped_time(stamps, fingerprint)
+    run = renderer.fingerprint((package, sorted(paths), sorted(search_path.items()), export_dir))
+    last_runs = _last_runs(records, run)
     exports = ExportDir(export_dir) if export_dir else None
     stale = [generated for generated in loaded
-             if _is_stale(generated, since, generated.outputs(output_dir, exports))]
+             if _is_stale(generated, last_runs, generated.outputs(output_dir, exports))]
     # Rendered in full before anything is written: a bad file changes nothing.
     support = renderer.support_header()
     rendered = {}  # full name: headers, as many files contain the same types
@@ -174,7 +163,10 @@ def generate_files(paths, package, output_dir, search_path, template_dir=None, e
     # As a per-file rule's touch: the outputs of a regenerated file are newer than its inputs.
     for generated in stale:
         _touch(generated.outputs(output_dir, exports), time.time())
-    for stamp in stamps:
-        write_files(os.path.dirname(os.path.abspath(stamp)), {os.path.basename(stamp): fingerprint})
-        _touch([stamp], started)
+    sources = {source for generated in loaded for source in generated.sources()}
+    record = RunRecord(run, snapshot(sorted(sources), started_ns),
+                       [path for generated in loaded
+                        for path in generated.outputs(output_dir, exports)])
+    for path in records:
+        record.write(path, touch_ns=started_ns)
     return written

@@ -8,16 +8,18 @@ rewrites only what changed and removes what no longer exists; a build of some
 packages (``--packages-select``) adds to the export, never shrinks it. A build
 that changed no definition the export comes from (and no package's list of
 definitions, and not genmros) leaves the export as it is without reading a
-definition: the export dir keeps a record of the last export's inputs.
+definition: the export dir keeps the run record of the last export
+(:mod:`colcon_mros.export.run_record`).
 """
 
-import json
 import os
+import time
 
 from colcon_core.package_selection import get_packages
 
 from colcon_mros.errors import GenmrosError
 from colcon_mros.export.export_dir import ExportDir
+from colcon_mros.export.run_record import RunRecord, definition_directories, snapshot
 from colcon_mros.integrations.installed_files import CMAKE_MODULE, installed_file
 from colcon_mros.generator.ros_environment import require_ros_python
 
@@ -51,51 +53,23 @@ def export_built_packages(args, export_dir):
                            'export', export_dir)
 
     target = ExportDir(export_dir)
-    record = {'genmros': Renderer().fingerprint((workspace, sorted(names))),
-              'definitions': _times(_definition_files(packages[name] for name in names))}
-    if os.path.isdir(target.include_dir) and _unchanged_since(target.colcon_record(), record):
+    run = Renderer().fingerprint((workspace, sorted(names)))
+    last = RunRecord.read(target.colcon_record)
+    if last and last.is_current(run):
         print('genmros: the export in %s is up to date' % export_dir)
         return
+    started_ns = time.time_ns()
+    # Every definition of the named packages, and their directories: a file
+    # added to a package counts as a change too.
+    named = [path for name in names for path in packages[name].message_files() +
+             packages[name].service_files()]
     result = export(ExportRequest(output_dir=target.include_dir, workspaces=[workspace],
                                   package_names=sorted(names), only='headers'))
     exported = {message.package for message in result.messages}
     exported.update(service.package for service in result.services)
     target.replace_packages({name: packages[name] for name in exported}, installed_file(CMAKE_MODULE))
-    # Also the definitions of types contained from packages not named; the
-    # named packages' files keep the times they had before the export read them.
-    sources = {os.path.abspath(model.source) for model in result.messages + result.services}
-    record['definitions'].update(_times(sources - set(record['definitions'])))
-    target.record_colcon_export(json.dumps(record, indent=0, sort_keys=True))
+    # Also the definitions of types contained from packages not named.
+    sources = {model.source for model in result.messages + result.services} | set(named)
+    RunRecord(run, snapshot(sorted(sources) + definition_directories(named), started_ns),
+              [target.include_dir, target.cmake_file]).write(target.colcon_record)
 
-
-def _definition_files(packages):
-    return [path for package in packages
-            for path in package.message_files() + package.service_files()]
-
-
-def _times(paths):
-    """{path: [modification time in ns, size]}; a missing file is [0, -1]."""
-    times = {}
-    for path in paths:
-        try:
-            status = os.stat(path)
-            times[os.path.abspath(path)] = [status.st_mtime_ns, status.st_size]
-        except FileNotFoundError:
-            times[os.path.abspath(path)] = [0, -1]
-    return times
-
-
-def _unchanged_since(recorded, record):
-    """Whether record (this build's genmros and definitions) adds nothing to
-    recorded (the last export's, as text): the same genmros, the same
-    definition files unchanged, and each file recorded unchanged too."""
-    try:
-        last = json.loads(recorded)
-        if last['genmros'] != record['genmros']:
-            return False
-    except (TypeError, ValueError, KeyError):  # no record, or not one of ours
-        return False
-    paths = set(last['definitions'])
-    if not set(record['definitions']) <= paths:
-        return False
-    return _times(paths) == last['definitions']

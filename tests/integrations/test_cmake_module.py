@@ -105,10 +105,10 @@ def test_generate_takes_installed_packages_from_the_ros_environment(firmware, wo
     firmware.configure(MROS_PACKAGE_PATHS=os.path.join(workspace, 'src'), FIRMWARE_TYPES='mros_test/NestedTypes')
     firmware.build()
     with open(firmware.build_dir + '/mros_messages/firmware.d') as stream:
-        depfile = stream.read()
+        record = stream.read()
     for definition in ('/usr/share/geometry_msgs/msg/Pose.msg', '/usr/share/std_msgs/msg/Header.msg',
                        os.path.join(workspace, 'src', 'mros_test', 'msg', 'NestedTypes.msg')):
-        assert '\n%s:\n' % definition in depfile
+        assert '\n%s:\n' % definition in record
     assert '/usr/share/geometry_msgs/msg/Pose.msg' in _makefiles(firmware, 'build.make')
 
 

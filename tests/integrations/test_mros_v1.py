@@ -101,7 +101,14 @@ def test_make_regenerates_headers_when_a_definition_changes(app_dir, tmp_path):
     assert 'int32_t score;' in header.read_text()
 
     again = _make(app_dir, paths)
+    assert 'genmros: the headers in include are up to date' in again.stdout
     assert 'genmros: exported' not in again.stdout and "'app' is up to date" in again.stdout
+
+    # A setting is part of the run: another definition text makes the headers anew.
+    compact = _make(app_dir, paths, 'MROS_MSG_DEFINITION_TEXT=compact')
+    assert compact.returncode == 0, compact.stderr[-3000:]
+    assert 'genmros: exported 13 message' in compact.stdout
+    assert '(genmros export --definition-text compact)' in header.read_text()
 
     definition = workspace / 'src' / 'mros_test' / 'msg' / 'PersonalData.msg'
     definition.write_text(definition.read_text() + 'float64 height\n')

@@ -82,10 +82,10 @@ macro(_genmros_devel_headers ARG_GEN_OUTPUT_DIR)
 endmacro()
 
 # With an export dir, genmros checks and prepares it once per CMake run and
-# says where the packages' stamps in it go (the layout is genmros').
+# says where the packages' run records in it go (the layout is genmros').
 macro(_genmros_configure_export_dir)
-  get_property(_genmros_export_stamps GLOBAL PROPERTY "_genmros_export_stamps:${MROS_EXPORT_DIR}")
-  if(NOT _genmros_export_stamps)
+  get_property(_genmros_export_records GLOBAL PROPERTY "_genmros_export_records:${MROS_EXPORT_DIR}")
+  if(NOT _genmros_export_records)
     set(_genmros_answer "${CMAKE_BINARY_DIR}/genmros/export-dir.cmake")
     execute_process(
       COMMAND "${GENMROS_BIN}" catkin-export-dir --export-dir "${MROS_EXPORT_DIR}"
@@ -97,8 +97,8 @@ macro(_genmros_configure_export_dir)
       message(FATAL_ERROR "${_genmros_error}")
     endif()
     include("${_genmros_answer}")
-    set_property(GLOBAL PROPERTY "_genmros_export_stamps:${MROS_EXPORT_DIR}"
-      "${_genmros_export_stamps}")
+    set_property(GLOBAL PROPERTY "_genmros_export_records:${MROS_EXPORT_DIR}"
+      "${_genmros_export_records}")
   endif()
 endmacro()
 
@@ -113,10 +113,10 @@ macro(_generate_module_mros ARG_PKG ARG_GEN_OUTPUT_DIR ARG_GENERATED_FILES)
     get_filename_component(_genmros_include_root "${ARG_GEN_OUTPUT_DIR}" DIRECTORY)
     get_filename_component(_genmros_share_dir "${_genmros_include_root}" DIRECTORY)
     # Beside the include root, not in it: genmsg installs the package's dir.
-    set(_genmros_stamps "${_genmros_share_dir}/stamps/${ARG_PKG}")
+    set(_genmros_records "${_genmros_share_dir}/runs/${ARG_PKG}")
     set(_genmros_export_args "")
     if(MROS_EXPORT_DIR)
-      list(APPEND _genmros_stamps "${_genmros_export_stamps}/${ARG_PKG}")
+      list(APPEND _genmros_records "${_genmros_export_records}/${ARG_PKG}")
       set(_genmros_export_args --export-dir "${MROS_EXPORT_DIR}"
         --cmake-module "${_GENMROS_CMAKE_DIR}/mros_generate.cmake")
     endif()
@@ -124,28 +124,29 @@ macro(_generate_module_mros ARG_PKG ARG_GEN_OUTPUT_DIR ARG_GENERATED_FILES)
     if(_genmros_depends)
       list(REMOVE_DUPLICATES _genmros_depends)
     endif()
-    # The run's inputs that make cannot see in the files' times: a removed
-    # definition or another export dir. Written only when they change.
+    # What make cannot see in the files' times, a removed definition or
+    # another export dir, makes it call genmros too (the run record says what
+    # to generate). Written only when it changes.
     set(_genmros_inputs "${CMAKE_CURRENT_BINARY_DIR}/genmros/${ARG_PKG}.inputs")
     string(REPLACE ";" "\n" _genmros_inputs_text "${_genmros_files};${MROS_EXPORT_DIR}")
     file(GENERATE OUTPUT "${_genmros_inputs}" CONTENT "${_genmros_inputs_text}\n")
-    # make and ninja know the run by its stamps; the headers are byproducts,
+    # make and ninja know the run by its records; the headers are byproducts,
     # which genmros rewrites only where their text changes. genmros writes
     # the export dir atomically and under its lock, so packages built in
     # parallel can share it.
-    set(_genmros_stamp_args "")
-    foreach(_genmros_stamp ${_genmros_stamps})
-      list(APPEND _genmros_stamp_args --stamp "${_genmros_stamp}")
+    set(_genmros_record_args "")
+    foreach(_genmros_record ${_genmros_records})
+      list(APPEND _genmros_record_args --record "${_genmros_record}")
     endforeach()
-    add_custom_command(OUTPUT ${_genmros_stamps}
+    add_custom_command(OUTPUT ${_genmros_records}
       BYPRODUCTS ${_genmros_headers}
       COMMAND "${GENMROS_BIN}" ${_genmros_files} ${_genmros_iflags} -p "${ARG_PKG}"
-        -o "${ARG_GEN_OUTPUT_DIR}" ${_genmros_export_args} ${_genmros_stamp_args}
+        -o "${ARG_GEN_OUTPUT_DIR}" ${_genmros_export_args} ${_genmros_record_args}
         --all-of-package
       DEPENDS "${GENMROS_BIN}" ${_genmros_files} ${_genmros_depends} "${_genmros_inputs}"
       COMMENT "Generating mROS headers for package ${ARG_PKG}"
       VERBATIM)
-    list(APPEND ALL_GEN_OUTPUT_FILES_mros ${_genmros_stamps})
+    list(APPEND ALL_GEN_OUTPUT_FILES_mros ${_genmros_records})
     # The support header beside the packages' dirs.
     install(FILES "${_genmros_include_root}/${GENMROS_SUPPORT_HEADER}"
       DESTINATION "${genmros_INSTALL_DIR}")
