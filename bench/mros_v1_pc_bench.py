@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Throughput and latency of the real mROS v1 library on the PC target
 against roscpp, side by side in one run: the library's talker
-(bench/mros_v1_pc/app.cpp, built natively by genmros mros-v1-pc with the
-evaluation app's app.cfg and custom_pubsub's configuration) -> a roscpp node,
+(bench/mros_v1_pc/, built natively by genmros mros-v1-pc with
+custom_pubsub's configuration and app.h) -> a roscpp node,
 and a roscpp talker (mros_test_nodes bench_talker) -> the same roscpp node,
 both with mros_test/PersonalData, through a real rosmaster on a free
 loopback port. The library's sample memory pools hold at most 1 KiB a
@@ -18,20 +18,24 @@ to the last arrival; the share delivered is shown beside it.
 Prints a table with ratios (mROS v1 / roscpp).
 
   bench/mros_v1_pc_bench.py [--build-dir DIR] [--rounds N]
+
+with the installed genmros (scripts/setup.sh --tests) and the mROS v1
+checkout in MROS_V1_ROOT.
 """
 
 import argparse
 import os
+import shutil
 import statistics
+import subprocess
 import sys
 import tempfile
 
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(REPO, 'tests'))
+from colcon_mros.targets.mros_v1_pc.ros_graph import CatkinWorkspace, RosGraph, board_environment
 
-import built_workspace  # noqa: E402
-import evaluation  # noqa: E402
-from ros_processes import RosGraph, sourced_environment  # noqa: E402
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+TEST_WS_SRC = os.path.join(REPO, 'test_ws', 'src')
+TALKER_APP = os.path.join(REPO, 'bench', 'mros_v1_pc')
 
 # (count, rate per second; 0: as fast as publish() returns)
 LATENCY = (2000, 1000)
@@ -86,7 +90,7 @@ def measure(graph, workspace, talker, on_board, scratch, tag):
         listener = workspace.roscpp('bench_listener', 'personal', str(count), '3')
         if on_board:
             argv = talker
-            environment = dict(evaluation.board_environment(), MROS_BENCH='%d %d' % (count, rate))
+            environment = dict(board_environment(), MROS_BENCH='%d %d' % (count, rate))
         else:
             argv, environment = talker + [str(count), str(rate)], None
         send, receive = run_once(graph, argv, listener, scratch, '%s-%s' % (tag, kind),
@@ -100,32 +104,42 @@ def measure(graph, workspace, talker, on_board, scratch, tag):
     return results
 
 
+def build(mros_root, build_root):
+    """(the ROS nodes of test_ws, the library's talker program), built in build_root."""
+    shutil.copytree(TEST_WS_SRC, os.path.join(build_root, 'test_ws', 'src'), dirs_exist_ok=True)
+    workspace = CatkinWorkspace(os.path.join(build_root, 'test_ws'), 'mros_test_nodes')
+    workspace.build(os.path.join(build_root, 'catkin_make.log'), '-DCMAKE_BUILD_TYPE=Release')
+    talker = shutil.copytree(TALKER_APP, os.path.join(build_root, 'talker'), dirs_exist_ok=True)
+    for sample_file in ('mros_config', 'app.h'):  # custom_pubsub's configuration and tasks
+        if not os.path.lexists(os.path.join(talker, sample_file)):
+            os.symlink(os.path.join(mros_root, 'mros_ws', 'custom_pubsub', sample_file),
+                       os.path.join(talker, sample_file))
+    subprocess.run(['genmros', 'mros-v1-pc', talker, '--target', 'native', '--mros-root',
+                    mros_root, '--msg-path', TEST_WS_SRC, '--type', 'mros_test/PersonalData',
+                    '-o', os.path.join(build_root, 'talker-build')], check=True)
+    return workspace, os.path.join(build_root, 'talker-build', 'bench_talker')
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     parser.add_argument('--build-dir', help='keep the builds here (default: a temporary dir)')
     parser.add_argument('--rounds', type=int, default=1,
                         help='alternate the library and roscpp this many times; medians are shown')
     args = parser.parse_args()
-    if not evaluation.checkout_found():
-        print('no mROS v1 checkout at %s: set MROS_V1_ROOT' % evaluation.MROS_V1_ROOT,
-              file=sys.stderr)
+    mros_root = os.environ.get('MROS_V1_ROOT', '')
+    if not os.path.isfile(os.path.join(mros_root, 'mros-lib', 'Makefile.m')):
+        print("no mROS v1 checkout at '%s': set MROS_V1_ROOT" % mros_root, file=sys.stderr)
         return 1
-    build_root = os.path.abspath(args.build_dir) if args.build_dir else \
-        built_workspace.scratch('mros_v1_pc_bench_')
-    os.makedirs(os.path.join(build_root, 'test_ws'), exist_ok=True)
-    workspace = built_workspace.workspace(os.path.join(build_root, 'test_ws'))
-    program = evaluation.build_app(evaluation.MROS_V1_ROOT, os.path.join(build_root, 'app'),
-                                   os.path.join(REPO, 'bench', 'mros_v1_pc', 'app.cpp'),
-                                   target='native')
     samples = {'mros_v1': [], 'roscpp': []}
-    with tempfile.TemporaryDirectory(prefix='mros_v1_pc_bench_') as scratch, \
-            RosGraph(sourced_environment(workspace.setup_bash)) as graph:
-        for round_index in range(args.rounds):
-            samples['mros_v1'].append(measure(graph, workspace, [program], True, scratch,
-                                              'mros_v1-%d' % round_index))
-            samples['roscpp'].append(measure(graph, workspace,
-                                             workspace.roscpp('bench_talker', 'personal'), False,
-                                             scratch, 'roscpp-%d' % round_index))
+    with tempfile.TemporaryDirectory(prefix='mros_v1_pc_bench_') as scratch:
+        workspace, program = build(mros_root, os.path.abspath(args.build_dir or scratch))
+        with RosGraph(workspace.environment()) as graph:
+            for round_index in range(args.rounds):
+                samples['mros_v1'].append(measure(graph, workspace, [program], True, scratch,
+                                                  'mros_v1-%d' % round_index))
+                samples['roscpp'].append(measure(graph, workspace,
+                                                 workspace.roscpp('bench_talker', 'personal'),
+                                                 False, scratch, 'roscpp-%d' % round_index))
     print_table(samples, args.rounds)
     return 0
 

@@ -57,7 +57,7 @@ _mros_msg_record := $(MROS_MSG_INCLUDE_DIR)/.genmros.d
 _mros_msg_default_goal := $(.DEFAULT_GOAL)
 
 $(_mros_msg_record): _mros_msg_ask_genmros
-	@$(GENMROS) $(_mros_msg_args) --record $@
+	@$(GENMROS) $(_mros_msg_args) --record $@ --quiet
 
 .PHONY: _mros_msg_ask_genmros
 include $(_mros_msg_record)

@@ -102,6 +102,9 @@ def _add_export(subparsers):
                         help="keep the run's record in FILE, and do nothing when it says that "
                              'nothing the output comes from changed; FILE is also a make rule '
                              'naming every .msg/.srv and options file the headers come from')
+    parser.add_argument('--quiet', action='store_true',
+                        help='say nothing when the run record says the headers are up to date '
+                             '(the make fragment runs genmros on every make)')
     parser.set_defaults(run=_export)
 
 
@@ -242,7 +245,8 @@ def _export(options):
     from colcon_mros.export.firmware_export import export  # needs genmsg and empy
     result = export(export_request(options))
     if result.up_to_date:
-        print('genmros: the headers in %s are up to date' % options.output_dir)
+        if not options.quiet:
+            print('genmros: the headers in %s are up to date' % options.output_dir)
     else:
         print('genmros: exported %d message and %d service types to %s'
               % (len(result.messages), len(result.services), options.output_dir))

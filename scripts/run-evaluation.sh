@@ -9,9 +9,10 @@
 # beside this repository. Stops everything it started; exits 0 only if every
 # direction delivered the right values.
 #
-#   scripts/run-evaluation.sh [--messages N] [--build-dir DIR]
+#   scripts/run-evaluation.sh [--messages N] [--build-dir DIR]   (evaluation/run.py)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
 "$here/scripts/setup.sh" --tests
-exec /usr/bin/python3 "$here/tests/evaluation.py" "$@"
+export MROS_V1_ROOT="${MROS_V1_ROOT:-$(dirname "$here")/shared/mros_v1}"
+exec /usr/bin/python3 "$here/evaluation/run.py" "$@"

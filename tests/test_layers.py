@@ -60,3 +60,53 @@ def test_the_check_sees_an_upward_import(tmp_path):
     module.write_text('def f():\n    from colcon_mros.integrations import installed_files\n')
     assert list(_imports(str(module))) == ['integrations']
     assert LAYERS.index(_layer('integrations')) < LAYERS.index(_layer('generator.parse'))
+
+
+# The trees beside the package; each shares code with the others only
+# through the package.
+TREES = ('tests', 'bench', 'scripts', 'evaluation')
+
+
+def _python_files(tree):
+    for directory, _, files in os.walk(os.path.join(REPO, tree)):
+        for name in sorted(files):
+            if name.endswith('.py'):
+                yield os.path.join(directory, name)
+
+
+def _imported_names(path):
+    """The top-level names path imports."""
+    with open(path) as stream:
+        tree = ast.parse(stream.read(), path)
+    names = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            names.update(alias.name.split('.')[0] for alias in node.names)
+        elif isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
+            names.add(node.module.split('.')[0])
+    return names
+
+
+def test_tests_bench_scripts_and_evaluation_import_nothing_from_each_other():
+    modules = {tree: {os.path.basename(path)[:-3] for path in _python_files(tree)}
+               | {name for name in os.listdir(os.path.join(REPO, tree))
+                  if os.path.isdir(os.path.join(REPO, tree, name))}
+               for tree in TREES}
+    crossing = []
+    checked = 0
+    for tree in TREES:
+        others = set().union(*(modules[other] for other in TREES if other != tree))
+        others -= modules[tree]
+        for path in _python_files(tree):
+            checked += 1
+            crossing += ['%s imports %s' % (os.path.relpath(path, REPO), name)
+                         for name in sorted(_imported_names(path) & (others | set(TREES)))]
+    assert checked > 50
+    assert crossing == []
+
+
+def test_the_check_sees_a_crossing_import(tmp_path):
+    module = tmp_path / 'crossing.py'
+    module.write_text('import os\nfrom built_workspace import workspace\n')
+    assert _imported_names(str(module)) == {'os', 'built_workspace'}
+    assert 'built_workspace' in {os.path.basename(path)[:-3] for path in _python_files('tests')}

@@ -6,8 +6,7 @@
 // starves the library's own lower-priority tasks) and writes "sequence
 // send_time_ns" lines (CLOCK_MONOTONIC, just before publish) to FILE, then
 // ends the program. An app has no command line: MROS_BENCH="COUNT RATE FILE".
-// Built with the evaluation app's app.cfg, app.h and Makefile
-// (tests/fixtures/mros_v1_pc_app).
+// Built with the app.cfg, app.h and Makefile beside it.
 #include "app.h"
 #include "ros.h"
 

@@ -15,10 +15,9 @@ import subprocess
 
 import pytest
 
-import evaluation
+from colcon_mros.targets.mros_v1_pc.ros_graph import Board, RosGraph
 from mros_v1_checkout import MROS_V1_ROOT
 from conftest import REPO, TEST_WS
-from ros_processes import RosGraph
 from user_install import NOBODY, Install, copy_sources, install_as_nobody, pip_flags
 
 pytestmark = pytest.mark.slow
@@ -116,6 +115,6 @@ def test_the_pc_target_builds_and_runs_an_app_from_the_installed_package(venv_in
     program = os.path.join(output, 'string_pubsub')
     assert built.stdout.rstrip().endswith('run it with ROS_MASTER_URI and ROS_IP set: ' + program)
     with RosGraph() as graph:
-        evaluation.Board(graph, program, str(tmp_path), runner=[])
+        Board(graph, program, str(tmp_path), runner=[])
         graph.wait_for_graph(publishers=[('/mros_msg', '/mros_node')],
                              subscribers=[('/test_string', '/mros_node2')])

@@ -12,29 +12,12 @@ import os
 import shutil
 
 import pytest
-from genmsg import gentools, msg_loader
-
 from fixtures.build_integration.tools import (
-    FIRMWARE_FIXTURE, TEST_WS_SRC, new_workspace, run, unwrapped)
+    FIRMWARE_FIXTURE, TEST_WS_SRC, genmsg_md5, new_workspace, run, search_path_of, unwrapped)
 
 # What genmros itself gives a type with strings (--variable-size-budget).
 VARIABLE_SIZE_BUDGET = 1024
 REGENERATION_LOG_LINE = 'Generating mROS message headers for firmware'
-
-
-def genmsg_md5(full_name, search_path):
-    context = msg_loader.MsgContext.create_default()
-    spec = msg_loader.load_msg_by_type(context, full_name, search_path)
-    msg_loader.load_depends(context, spec, search_path)
-    return gentools.compute_md5(context, spec)
-
-
-def search_path_of(source):
-    search_path = {'std_msgs': ['/usr/share/std_msgs/msg'],
-                   'geometry_msgs': ['/usr/share/geometry_msgs/msg']}
-    for package in ('mros_test', 'mros_test_base'):
-        search_path[package] = [os.path.join(source, package, 'msg')]
-    return search_path
 
 
 class Firmware:

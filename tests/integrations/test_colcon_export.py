@@ -10,9 +10,9 @@ import os
 import pytest
 
 from fixtures.build_integration.tools import (
-    build_firmware_of_whole_export,
-    FIRMWARE_FIXTURE, MESSAGE_PACKAGES, SUPPORT_HEADER, compile_headers,
-    expected_header_names, genmros_export, headers_under, mtimes, new_workspace, run,
+    FIRMWARE_FIXTURE, MESSAGE_PACKAGES, SUPPORT_HEADER, TEST_WS_SRC,
+    build_firmware_of_whole_export, compile_headers, expected_header_names, genmros_export,
+    genmsg_md5, genpy_default_size, headers_under, mtimes, new_workspace, run, search_path_of,
     unwrapped)
 
 # The packages the export holds: the built ones and the installed message
@@ -87,7 +87,10 @@ def test_firmware_imports_the_export_through_its_cmake_file(workspace, tmp_path)
          '-DFIRMWARE_TYPES=mros_test/NestedTypes'], '/')
     run(['cmake', '--build', build_dir], build_dir)
     output = run([os.path.join(build_dir, 'firmware')], build_dir).stdout
-    assert 'md5=' in output and 'serialized=' in output
+    values = dict(line.split('=', 1) for line in output.split())
+    search_path = search_path_of(TEST_WS_SRC)
+    assert values['md5'] == genmsg_md5('mros_test/NestedTypes', search_path)
+    assert values['serialized'] == str(genpy_default_size('mros_test/NestedTypes', search_path))
 
 
 def test_build_without_the_flag_leaves_the_export_alone(workspace):

@@ -32,10 +32,10 @@ import time
 
 import pytest
 
-import evaluation
-from evaluation import DELIVERY_TIMEOUT, PEER_IP, Board
+from colcon_mros.targets.mros_v1_pc.ros_graph import (
+    DELIVERY_TIMEOUT, PEER_IP, Board, RosGraph, sourced_environment)
 from mros_v1_checkout import MROS_V1_ROOT
-from ros_processes import RosGraph, sourced_environment
+from pc_target_apps import build_app
 from sanitizer_reports import sanitizer_reports
 from tcpros_peer import HostilePublisher, RawSubscriber, encode_header, frame
 
@@ -90,7 +90,7 @@ def build_relay(mros_root, build_root, storage='heap', target='arm', sanitize=Fa
         options = build_root / 'bounds.options'
         options.write_text(BOUNDS)
         flags += ['--options', str(options)]
-    program = evaluation.build_app(mros_root, str(build_root), 'type_relay.cpp', target=target,
+    program = build_app(mros_root, str(build_root), 'type_relay.cpp', target=target,
                                    types=TYPES, header_flags=flags)
     header = (build_root / 'build' / 'include' / 'mros_test' / 'PersonalData.h').read_text()
     assert ('mros::bounded_string<48> first_name;' if storage == 'bounded'

@@ -1,8 +1,21 @@
-"""Real ROS processes for the mROS v1 tests, the evaluation and the benchmark:
-a rosmaster on a free 127.0.0.1 port, nodes started in their own process
-groups with their output captured line by line, and a RosGraph context that
-stops every process it started (SIGINT, then SIGKILL to the whole group),
-also when the code using it fails."""
+"""A ROS graph on this machine for apps the PC target built: run an mROS v1
+app beside real ROS nodes, as it will run on the board beside them.
+
+- :class:`RosGraph`: a rosmaster on a free 127.0.0.1 port and the processes
+  started against it, each in its own process group with its output kept
+  line by line; leaving the context stops every one (SIGINT, then SIGKILL to
+  the whole group), also when the code using it fails.
+- :class:`Board`: an app of the PC target in that graph, at its own loopback
+  address with free slave and publisher ports (the library ignores
+  publishers at its own address, and roscpp with a loopback ROS_IP takes
+  TCPROS connections on 127.0.0.1 only), its pins in files (the mbed
+  stand-in's ``MROS_PC_INPUTS`` and ``MROS_PC_OUTPUT_LOG``).
+- :class:`CatkinWorkspace`: the ROS nodes of a catkin workspace, built with
+  catkin_make.
+
+The paper's evaluation, the tests and the benchmarks run apps this way;
+only the standard library and ROS' own programs are used.
+"""
 
 import os
 import re
@@ -14,13 +27,23 @@ import threading
 import time
 import xmlrpc.client
 
-# A shell that starts a command in the background (`cmd &`, as some CI
-# runners and nohup do) makes it ignore SIGINT, and its children inherit
-# that: every node would then sit out stop()'s grace period before SIGKILL
-# (the suite takes half again as long) and no node would stop the way it does
-# for a user's Ctrl-C. A handled signal is reset to the default in a child.
-if signal.getsignal(signal.SIGINT) == signal.SIG_IGN:
-    signal.signal(signal.SIGINT, signal.default_int_handler)
+BOARD_IP = '127.0.0.2'
+PEER_IP = '127.0.0.1'
+# How long a message may take through qemu, the library's 100 ms polling
+# and a loaded machine.
+DELIVERY_TIMEOUT = 30
+PYTHON = '/usr/bin/python3'  # Debian's, the one that has rospy
+
+
+def _let_nodes_stop_on_sigint():
+    """A shell that starts a command in the background (`cmd &`, as some CI
+    runners and nohup do) makes it ignore SIGINT, and its children inherit
+    that: every node would then sit out stop()'s grace period before SIGKILL
+    and none would stop as it does for a user's Ctrl-C. A handled signal is
+    reset to the default in a child."""
+    if (signal.getsignal(signal.SIGINT) == signal.SIG_IGN
+            and threading.current_thread() is threading.main_thread()):
+        signal.signal(signal.SIGINT, signal.default_int_handler)
 
 
 def free_port():
@@ -121,11 +144,12 @@ class RosGraph:
     """
 
     def __init__(self, base_env=None):
+        _let_nodes_stop_on_sigint()
         self.port = free_port()
         self.uri = 'http://127.0.0.1:%d/' % self.port
         self._home = tempfile.TemporaryDirectory(prefix='ros_home_')
         env = dict(base_env if base_env is not None else os.environ)
-        env.update(ROS_MASTER_URI=self.uri, ROS_IP='127.0.0.1', ROS_HOME=self._home.name,
+        env.update(ROS_MASTER_URI=self.uri, ROS_IP=PEER_IP, ROS_HOME=self._home.name,
                    ROS_LOG_DIR=os.path.join(self._home.name, 'log'), PYTHONUNBUFFERED='1')
         env.pop('ROS_HOSTNAME', None)
         self.env = env
@@ -192,3 +216,87 @@ class RosGraph:
             if time.monotonic() > deadline:
                 raise AssertionError('not registered at the master: %r' % missing)
             time.sleep(0.1)
+
+
+def board_environment():
+    """The environment of an app on the PC target beside this machine's ROS
+    nodes: its own address and free slave and publisher ports."""
+    return {'ROS_IP': BOARD_IP, 'MROS_V1_SLAVE_PORT': str(free_port()),
+            'MROS_V1_PUBLISHER_PORT': str(free_port())}
+
+
+class Board:
+    """An app on the PC target in a ROS graph: its log, its pins.
+
+    runner: what runs the program (qemu-arm for the arm target, nothing for
+    native); inputs: the pins' levels at start."""
+
+    def __init__(self, graph, program, directory, runner=('qemu-arm',), inputs=None):
+        self.inputs = os.path.join(directory, 'inputs')
+        self.outputs = os.path.join(directory, 'outputs')
+        self.set_inputs(**(inputs or {'P6_0': 1}))
+        environment = board_environment()
+        self.slave_port = int(environment['MROS_V1_SLAVE_PORT'])
+        self.publisher_port = int(environment['MROS_V1_PUBLISHER_PORT'])
+        environment.update(MROS_PC_INPUTS=self.inputs, MROS_PC_OUTPUT_LOG=self.outputs)
+        self.process = graph.start(os.path.basename(program), list(runner) + [program],
+                                   environment)
+
+    def set_inputs(self, **pins):
+        with open(self.inputs + '.new', 'w') as stream:
+            stream.writelines('%s %d\n' % item for item in sorted(pins.items()))
+        os.replace(self.inputs + '.new', self.inputs)
+
+    def output_lines(self):
+        if not os.path.exists(self.outputs):
+            return []
+        with open(self.outputs) as stream:
+            return stream.read().splitlines()
+
+    def wait_for_output(self, line, timeout=DELIVERY_TIMEOUT):
+        """Waits until the app writes line to an output pin; raises
+        AssertionError with its outputs and log if it does not in time."""
+        deadline = time.monotonic() + timeout
+        while line not in self.output_lines():
+            if time.monotonic() > deadline:
+                raise AssertionError('no output %r; outputs: %s; log:\n%s' % (
+                    line, self.output_lines()[-20:], self.process.output()))
+            time.sleep(0.1)
+
+    @property
+    def slave_uri(self):
+        return 'http://%s:%d/' % (BOARD_IP, self.slave_port)
+
+
+class CatkinWorkspace:
+    """A catkin workspace at root (its packages in root/src) and the
+    commands of the nodes of one of its packages."""
+
+    def __init__(self, root, package):
+        self.root = root
+        self.setup_bash = os.path.join(root, 'devel', 'setup.bash')
+        self.mros_export = os.path.join(root, 'mros_export')
+        self.lib = os.path.join(root, 'devel', 'lib', package)
+        self.scripts = os.path.join(root, 'src', package, 'scripts')
+
+    def build(self, log_path, *cmake_arguments):
+        """catkin_make with Debian's Python and genmros' export into
+        mros_export/; raises RuntimeError with the log's end if it fails."""
+        argv = ['catkin_make', '-C', self.root, '-DPYTHON_EXECUTABLE=' + PYTHON,
+                '-DMROS_EXPORT_DIR=' + self.mros_export] + list(cmake_arguments)
+        with open(log_path, 'w') as log:
+            result = subprocess.run(argv, stdout=log, stderr=subprocess.STDOUT, cwd=self.root)
+        if result.returncode != 0:
+            with open(log_path) as log:
+                raise RuntimeError('%s failed:\n%s' % (' '.join(argv), log.read()[-6000:]))
+        return self
+
+    def environment(self):
+        """The environment after sourcing the devel space's setup.bash."""
+        return sourced_environment(self.setup_bash)
+
+    def roscpp(self, node, *arguments):
+        return [os.path.join(self.lib, node)] + list(arguments)
+
+    def rospy(self, script, *arguments):
+        return [PYTHON, os.path.join(self.scripts, script)] + list(arguments)

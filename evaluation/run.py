@@ -1,117 +1,64 @@
 #!/usr/bin/env python3
 """The paper's evaluation (section 6.2) on the real mROS v1 library, run by
 the PC target as users run it (genmros mros-v1-pc), against a real rosmaster
-and real ROS nodes. The app (tests/fixtures/mros_v1_pc_app/personal_data.cpp)
-is Fig. 6 and Fig. 7 written for mROS v1: it publishes mros_test/PersonalData
-("Phil", "Woods", 83, score counting up), which a rospy and a roscpp node
-print and which the library also delivers on the board; then a rospy and a
-roscpp node publish ("Charlie", "Parker", 32, ...) and the app prints it.
-Exits 0 only if every direction delivered the right values in order.
+and real ROS nodes. The app (evaluation/app/app.cpp) is Fig. 6 and Fig. 7
+written for mROS v1: it publishes mros_test/PersonalData ("Phil", "Woods",
+83, score counting up), which a rospy and a roscpp node print and which the
+library also delivers on the board; then a rospy and a roscpp node publish
+("Charlie", "Parker", 32, ...) and the app prints it. Exits 0 only if every
+direction delivered the right values in order.
 
-  evaluation.py [--messages N] [--build-dir DIR]
+  run.py [--messages N] [--build-dir DIR] [--workspace DIR]
 
-Builds test_ws (catkin_make) and the app first, in DIR or in a temporary
-directory. The mROS v1 checkout is MROS_V1_ROOT (default ../shared/mros_v1
-beside this repository). The tests import Board, build_app and run.
-
-The library ignores publishers at its own address, and roscpp with a
-loopback ROS_IP takes TCPROS connections on 127.0.0.1 only: apps run with
-ROS_IP=127.0.0.2, ROS nodes with 127.0.0.1.
+Builds test_ws (catkin_make; --workspace: one built already) and the app
+first, in DIR or in a temporary directory, with the installed genmros
+(scripts/run-evaluation.sh installs it). The mROS v1 checkout is
+MROS_V1_ROOT (run-evaluation.sh: default ../shared/mros_v1 beside this
+repository).
 """
 
 import argparse
 import os
 import re
+import shutil
 import subprocess
 import sys
-import time
+import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-
-import built_workspace  # noqa: E402
-from mros_v1_checkout import MROS_V1_ROOT, checkout_found  # noqa: E402
-from ros_processes import RosGraph, free_port, sourced_environment  # noqa: E402
+from colcon_mros.targets.mros_v1_pc.ros_graph import (DELIVERY_TIMEOUT, Board, CatkinWorkspace,
+                                                      RosGraph)
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-TEST_WS = os.path.join(REPO, 'test_ws')
-BOARD_IP = '127.0.0.2'
-PEER_IP = '127.0.0.1'
-# How long a message may take through qemu, the library's 100 ms polling
-# and a loaded machine.
-DELIVERY_TIMEOUT = 30
-APP_FIXTURE = os.path.join(REPO, 'tests', 'fixtures', 'mros_v1_pc_app')
+TEST_WS_SRC = os.path.join(REPO, 'test_ws', 'src')
+APP = os.path.join(REPO, 'evaluation', 'app')
+NODES_PACKAGE = 'mros_test_nodes'
+# What the app takes from a sample app, as a new app does: the library's
+# tasks and memory pools, and the declarations of the user tasks.
+SAMPLE_FILES = ('mros_config', 'app.h')
 
 
-def board_environment():
-    """The environment of an app on the PC target beside this machine's ROS
-    nodes: its own address and free slave and publisher ports."""
-    return {'ROS_IP': BOARD_IP, 'MROS_V1_SLAVE_PORT': str(free_port()),
-            'MROS_V1_PUBLISHER_PORT': str(free_port())}
+def build_workspace(root):
+    """test_ws's packages copied to root and built: the ROS nodes."""
+    shutil.copytree(TEST_WS_SRC, os.path.join(root, 'src'), dirs_exist_ok=True)
+    return CatkinWorkspace(root, NODES_PACKAGE).build(
+        os.path.join(root, 'catkin_make.log'), '-DCMAKE_BUILD_TYPE=Release', '-j2')
 
 
-class Board:
-    """An app on the PC target in a ROS graph: its log, its pins."""
-
-    def __init__(self, graph, program, directory, runner=('qemu-arm',), inputs=None):
-        self.inputs = os.path.join(directory, 'inputs')
-        self.outputs = os.path.join(directory, 'outputs')
-        self.set_inputs(**(inputs or {'P6_0': 1}))
-        environment = board_environment()
-        self.slave_port = int(environment['MROS_V1_SLAVE_PORT'])
-        self.publisher_port = int(environment['MROS_V1_PUBLISHER_PORT'])
-        environment.update(MROS_PC_INPUTS=self.inputs, MROS_PC_OUTPUT_LOG=self.outputs)
-        self.process = graph.start(os.path.basename(program), list(runner) + [program],
-                                   environment)
-
-    def set_inputs(self, **pins):
-        with open(self.inputs + '.new', 'w') as stream:
-            stream.writelines('%s %d\n' % item for item in sorted(pins.items()))
-        os.replace(self.inputs + '.new', self.inputs)
-
-    def output_lines(self):
-        if not os.path.exists(self.outputs):
-            return []
-        with open(self.outputs) as stream:
-            return stream.read().splitlines()
-
-    def wait_for_output(self, line, timeout=DELIVERY_TIMEOUT):
-        deadline = time.monotonic() + timeout
-        while line not in self.output_lines():
-            assert time.monotonic() < deadline, 'no output %r; outputs: %s; log:\n%s' % (
-                line, self.output_lines()[-20:], self.process.output())
-            time.sleep(0.1)
-
-    @property
-    def slave_uri(self):
-        return 'http://%s:%d/' % (BOARD_IP, self.slave_port)
-
-
-def build_app(mros_root, build_root, source='personal_data.cpp', target='arm',
-              types=('mros_test/PersonalData',), header_flags=()):
-    """A test app: source (a name in tests/fixtures/mros_v1_pc_app, or a
-    path) as its app.cpp beside that dir's Makefile, app.cfg and app.h, with
-    custom_pubsub's mros_config/ linked in (the library's tasks and memory
-    pools, as a new app takes them from a sample), built by genmros
-    mros-v1-pc for target with the headers of types (header_flags: more
-    options of mros-v1-pc, such as --storage); returns the program."""
+def build_app(mros_root, build_root):
+    """The app in build_root/app, with custom_pubsub's mros_config/ and
+    app.h (the user tasks' declarations) linked in, built for qemu-arm;
+    returns the program."""
     app = os.path.join(build_root, 'app')
-    os.makedirs(app, exist_ok=True)
-    links = {name: os.path.join(APP_FIXTURE, name) for name in ('Makefile', 'app.cfg', 'app.h')}
-    links['app.cpp'] = os.path.join(APP_FIXTURE, source)
-    links['mros_config'] = os.path.join(mros_root, 'mros_ws', 'custom_pubsub', 'mros_config')
-    for name, origin in links.items():
+    shutil.copytree(APP, app, dirs_exist_ok=True)
+    for name in SAMPLE_FILES:
         if not os.path.lexists(os.path.join(app, name)):
-            os.symlink(origin, os.path.join(app, name))
+            os.symlink(os.path.join(mros_root, 'mros_ws', 'custom_pubsub', name),
+                       os.path.join(app, name))
     output = os.path.join(build_root, 'build')
-    type_args = [argument for name in types for argument in ('--type', name)]
-    result = subprocess.run(
-        [sys.executable, '-m', 'colcon_mros', 'mros-v1-pc', app, '--mros-root', mros_root,
-         '--msg-path', os.path.join(TEST_WS, 'src'), '-o', output, '--target', target, '-j2']
-        + type_args + list(header_flags), cwd=REPO, capture_output=True, text=True)
-    if result.returncode != 0:
-        raise RuntimeError('genmros mros-v1-pc failed:\n' + result.stdout[-3000:]
-                           + result.stderr[-3000:])
-    return os.path.join(output, 'test_app')
+    subprocess.run(['genmros', 'mros-v1-pc', app, '--mros-root', mros_root, '--msg-path',
+                    TEST_WS_SRC, '-o', output, '--type', 'mros_test/PersonalData', '-j2'],
+                   check=True)
+    return os.path.join(output, 'personal_data')
 
 
 ROS_HEARD = re.compile(r'I heard from mROS: (\S*) (\S*) age:(\d+) score:(-?\d+)')
@@ -179,7 +126,7 @@ def _waited(process, pattern, count, start=0):
 
 def run(workspace, program, count, scratch):
     """Every direction of the evaluation: a list of Direction."""
-    environment = sourced_environment(workspace.setup_bash)
+    environment = workspace.environment()
     directions = []
     with RosGraph(environment) as graph:
         listeners = [
@@ -219,23 +166,27 @@ def main():
     parser.add_argument('--messages', type=int, default=5,
                         help='messages each receiver must print (default 5)')
     parser.add_argument('--build-dir', help='keep the builds here (default: a temporary dir)')
+    parser.add_argument('--workspace', metavar='DIR',
+                        help='a copy of test_ws built already with catkin_make (default: build one)')
     args = parser.parse_args()
-    if not checkout_found():
-        print('evaluation: no mROS v1 checkout at %s (mros-lib/Makefile.m): set '
-              'MROS_V1_ROOT=<checkout of mROS-base/mROS>' % MROS_V1_ROOT, file=sys.stderr)
+    mros_root = os.environ.get('MROS_V1_ROOT', '')
+    if not os.path.isfile(os.path.join(mros_root, 'mros-lib', 'Makefile.m')):
+        print("evaluation: no mROS v1 checkout at '%s' (mros-lib/Makefile.m): set "
+              'MROS_V1_ROOT=<checkout of mROS-base/mROS>' % mros_root, file=sys.stderr)
         return 1
-    build_root = os.path.abspath(args.build_dir) if args.build_dir else \
-        built_workspace.scratch('mros_evaluation_')
-    ws_root = os.path.join(build_root, 'test_ws')
-    os.makedirs(ws_root, exist_ok=True)
-    print('building test_ws with catkin_make (genmros beside gencpp and genpy) ...', flush=True)
-    workspace = built_workspace.workspace(ws_root)
-    print('building the evaluation app with the mROS v1 library of %s (genmros mros-v1-pc) ...'
-          % MROS_V1_ROOT, flush=True)
-    app_root = os.path.join(build_root, 'app')
-    program = build_app(MROS_V1_ROOT, app_root)
-    directions = run(workspace, program, args.messages, app_root)
-    print('\n==== the paper\'s evaluation on the real mROS v1 library (PC target, qemu-arm) ====')
+    with tempfile.TemporaryDirectory(prefix='mros_evaluation_') as scratch:
+        build_root = os.path.abspath(args.build_dir or scratch)
+        if args.workspace:
+            workspace = CatkinWorkspace(os.path.abspath(args.workspace), NODES_PACKAGE)
+        else:
+            print('building test_ws with catkin_make (genmros beside gencpp and genpy) ...',
+                  flush=True)
+            workspace = build_workspace(os.path.join(build_root, 'test_ws'))
+        print('building the evaluation app with the mROS v1 library of %s (genmros mros-v1-pc) ...'
+              % mros_root, flush=True)
+        program = build_app(mros_root, os.path.join(build_root, 'app'))
+        directions = run(workspace, program, args.messages, build_root)
+    print("\n==== the paper's evaluation on the real mROS v1 library (PC target, qemu-arm) ====")
     for direction in directions:
         print(direction.summary())
     passed = all(direction.problem is None for direction in directions)

@@ -1,0 +1,41 @@
+"""Test apps on the real mROS v1 library, built by genmros mros-v1-pc from
+this checkout: tests/fixtures/mros_v1_pc_app's Makefile and app.cfg with one
+of its sources as app.cpp."""
+
+import os
+import subprocess
+import sys
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+TEST_WS = os.path.join(REPO, 'test_ws')
+APP_FIXTURE = os.path.join(REPO, 'tests', 'fixtures', 'mros_v1_pc_app')
+
+
+def build_app(mros_root, build_root, source, target='arm', types=('mros_test/PersonalData',),
+              header_flags=()):
+    """source (a name in tests/fixtures/mros_v1_pc_app, or a path) as the
+    app's app.cpp beside that dir's Makefile and app.cfg, with custom_pubsub's
+    mros_config/ and app.h linked in (the library's tasks and memory pools and
+    the user tasks' declarations, as a new app takes them from a sample),
+    built for target with the
+    headers of types (header_flags: more options of mros-v1-pc, such as
+    --storage); returns the program."""
+    app = os.path.join(build_root, 'app')
+    os.makedirs(app, exist_ok=True)
+    links = {name: os.path.join(APP_FIXTURE, name) for name in ('Makefile', 'app.cfg')}
+    links['app.cpp'] = os.path.join(APP_FIXTURE, source)
+    for name in ('mros_config', 'app.h'):
+        links[name] = os.path.join(mros_root, 'mros_ws', 'custom_pubsub', name)
+    for name, origin in links.items():
+        if not os.path.lexists(os.path.join(app, name)):
+            os.symlink(origin, os.path.join(app, name))
+    output = os.path.join(build_root, 'build')
+    type_args = [argument for name in types for argument in ('--type', name)]
+    result = subprocess.run(
+        [sys.executable, '-m', 'colcon_mros', 'mros-v1-pc', app, '--mros-root', mros_root,
+         '--msg-path', os.path.join(TEST_WS, 'src'), '-o', output, '--target', target, '-j2']
+        + type_args + list(header_flags), cwd=REPO, capture_output=True, text=True)
+    if result.returncode != 0:
+        raise RuntimeError('genmros mros-v1-pc failed:\n' + result.stdout[-3000:]
+                           + result.stderr[-3000:])
+    return os.path.join(output, 'test_app')
