@@ -162,12 +162,15 @@ def test_every_type_through_the_board_comes_back_byte_equal_to_genpy(
 
 @pytest.fixture(scope='module')
 def raised_buffers_root(tmp_path_factory):
-    """A copy of the library (mros-lib and custom_pubsub's mros_config) whose
-    connection-header buffers are raised as the README says."""
+    """A copy of the library (mros-lib, and custom_pubsub's mros_config and
+    app.h, which the test apps take) whose connection-header buffers are
+    raised as the README says."""
     root = tmp_path_factory.mktemp('mros_v1_raised')
     shutil.copytree(os.path.join(MROS_V1_ROOT, 'mros-lib'), str(root / 'mros-lib'))
-    config = os.path.join('mros_ws', 'custom_pubsub', 'mros_config')
-    shutil.copytree(os.path.join(MROS_V1_ROOT, config), str(root / config))
+    sample = os.path.join('mros_ws', 'custom_pubsub')
+    shutil.copytree(os.path.join(MROS_V1_ROOT, sample, 'mros_config'),
+                    str(root / sample / 'mros_config'))
+    shutil.copy(os.path.join(MROS_V1_ROOT, sample, 'app.h'), str(root / sample / 'app.h'))
     path = root / PACKET_CONFIG
     text, count = HEADER_BUFFERS.subn(r'\g<1>%d' % RAISED_HEADER_BUFFER, path.read_text())
     assert count == 2, 'the header buffer sizes are not where the README says'
