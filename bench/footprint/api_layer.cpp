@@ -62,18 +62,20 @@
 template <class T>
 ros::Subscriber ros::NodeHandle::subscribe(std::string topic, int queue_size, void (*fp)(T)) {
   Subscriber subscriber;
-  subscriber.object = 0;
+  void* object = 0;
   API_REGISTER_TOPIC(message_traits::DataType<T>().value(), message_traits::DataTypeId<T>().value(),
                      message_traits::Definition<T>().value(), 1, reinterpret_cast<void (*)(void*)>(fp),
-                     queue_size, subscriber.object);
+                     queue_size, object);
+  subscriber.set(object);
   return subscriber;
 }
 
 template <class T> ros::Publisher ros::NodeHandle::advertise(std::string topic, int queue_size) {
   Publisher publisher;
-  publisher.object = 0;
+  void* object = 0;
   API_REGISTER_TOPIC(message_traits::DataType<T*>().value(), message_traits::DataTypeId<T*>().value(),
-                     message_traits::Definition<T*>().value(), 0, 0, queue_size, publisher.object);
+                     message_traits::Definition<T*>().value(), 0, 0, queue_size, object);
+  publisher.set(object);
   return publisher;
 }
 
@@ -81,7 +83,7 @@ template <class T> void ros::Publisher::publish(T& data) {
   char* block;
   const unsigned size = static_cast<unsigned>(data.dataSize()) + 4;  // mros_protocol_get_buffersize
   library_lock();
-  const library_return ret = library_alloc_data(object, &block, size);
+  const library_return ret = library_alloc_data(get(), &block, size);
   if (ret != LIBRARY_OK) {
     API_ERROR(ret);
   } else {

@@ -3,17 +3,20 @@
 # each mROS CPU, -Os -fno-builtin -fno-exceptions -fno-rtti -std=gnu++98 (mROS v1's
 # flags), --gc-sections.
 # Each row is one firmware (start-up, newlib, the API layer in the shape of
-# mROS v1's ros.cpp over the tests' ros.h, and one task that publishes and
-# subscribes one type),
+# mROS v1's ros.cpp over the library's own api/ros.h, from MROS_V1_ROOT,
+# with the PC target's ASP headers for its kernel.h and t_syslog.h, and one
+# task that publishes and subscribes one type),
 # minus the same firmware without any message type (baseline.cpp).
 #   genmros' headers against hand-written v1-style ones (handwritten/)
 #   heap against bounded storage, and the RAM a firmware's buffers take
 #   heap with the compact definition text against the full one, and
 #   the definition bytes of the Debian message set (definition_text.py)
-# Run by hand: bench/footprint/run.sh
+# Run by hand: MROS_V1_ROOT=<mROS v1 checkout> bench/footprint/run.sh
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 repo="$here/../.."
+mros_src="${MROS_V1_ROOT:?set MROS_V1_ROOT to an mROS v1 checkout (its api/ros.h declares the API)}/mros-lib/mros-src"
+ros_h=(-I"$mros_src/api" -I"$mros_src/os/target/os_asp" -I"$repo/colcon_mros/targets/mros_v1_pc/asp")
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 
@@ -51,7 +54,7 @@ build() {  # cpu output include_dir type header -> elf
       "$out.library.o" "$out.sink.o" "${link[@]}" -o "$out.elf"
   else
     arm-none-eabi-g++ ${cpus[$cpu]} "${common[@]}" -std=gnu++98 -Wno-psabi -I"$include" -I"$here" \
-      -DBENCH_TYPE="$type" -DBENCH_HEADER="<$header>" -I"$repo/tests/fixtures/mros_v1" "$here/api_layer.cpp" "$here/task.cpp" \
+      -DBENCH_TYPE="$type" -DBENCH_HEADER="<$header>" "${ros_h[@]}" "$here/api_layer.cpp" "$here/task.cpp" \
       "$out.library.o" "$out.sink.o" "${link[@]}" -o "$out.elf"
   fi
   echo "$out.elf"
