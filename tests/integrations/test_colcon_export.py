@@ -10,9 +10,9 @@ import os
 import pytest
 
 from fixtures.build_integration.tools import (
-    FIRMWARE_FIXTURE, MESSAGE_PACKAGES, SUPPORT_HEADER, TEST_WS_SRC,
+    MESSAGE_PACKAGES, SUPPORT_HEADER, TEST_WS_SRC,
     build_firmware_of_whole_export, compile_headers, expected_header_names, genmros_export,
-    genmsg_md5, genpy_default_size, headers_under, mtimes, new_workspace, run, search_path_of,
+    genmsg_md5, genpy_default_size, headers_under, imported_firmware_output, mtimes, new_workspace, run, search_path_of,
     unwrapped)
 
 # The packages the export holds: the built ones and the installed message
@@ -81,13 +81,7 @@ def test_cmake_file_lists_the_types_and_definitions_are_exported(workspace):
 
 
 def test_firmware_imports_the_export_through_its_cmake_file(workspace, tmp_path):
-    build_dir = str(tmp_path / 'firmware')
-    run(['cmake', '-S', FIRMWARE_FIXTURE, '-B', build_dir, '-DMROS_MODE=import',
-         '-DMROS_EXPORT_CMAKE=%s' % os.path.join(workspace.export_dir, 'mros_export.cmake'),
-         '-DFIRMWARE_TYPES=mros_test/NestedTypes'], '/')
-    run(['cmake', '--build', build_dir], build_dir)
-    output = run([os.path.join(build_dir, 'firmware')], build_dir).stdout
-    values = dict(line.split('=', 1) for line in output.split())
+    values = imported_firmware_output(workspace.export_dir, str(tmp_path))
     search_path = search_path_of(TEST_WS_SRC)
     assert values['md5'] == genmsg_md5('mros_test/NestedTypes', search_path)
     assert values['serialized'] == str(genpy_default_size('mros_test/NestedTypes', search_path))
