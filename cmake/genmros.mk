@@ -38,13 +38,9 @@ ifeq ($(shell command -v $(firstword $(GENMROS)) 2>/dev/null),)
 $(error genmros.mk: '$(firstword $(GENMROS))' not found: install colcon-mros or set GENMROS)
 endif
 
-# A directory with share/ is an installed prefix; any other, a source tree.
-_mros_msg_prefixes := $(foreach path,$(MROS_MSG_PATHS),$(if $(wildcard $(path)/share/.),$(path)))
-_mros_msg_sources := $(filter-out $(_mros_msg_prefixes),$(MROS_MSG_PATHS))
 _mros_msg_args := export -o $(MROS_MSG_INCLUDE_DIR) \
   $(addprefix --type ,$(MROS_MSG_TYPES)) \
-  $(addprefix --underlay ,$(_mros_msg_prefixes)) \
-  $(addprefix --workspace ,$(_mros_msg_sources)) \
+  $(addprefix --msg-path ,$(MROS_MSG_PATHS)) \
   $(if $(MROS_MSG_DEFINITION_TEXT),--definition-text $(MROS_MSG_DEFINITION_TEXT)) $(MROS_MSG_FLAGS)
 
 # genmros keeps the run record in this file, a makefile; make remakes an

@@ -81,6 +81,9 @@ def _add_export(subparsers):
                                                  'a service (PKG/SrvRequest) (repeatable)')
     parser.add_argument('-o', dest='output_dir', required=True, metavar='DIR',
                         help='include root to write to')
+    parser.add_argument('--msg-path', dest='msg_paths', action='append', default=[],
+                        metavar='DIR', help='an installed prefix (with share/) as --underlay, or '
+                                            'a source tree as --workspace (repeatable)')
     parser.add_argument('--underlay', dest='prefixes', action='append', metavar='PREFIX',
                         help='installed prefix holding share/<pkg>/msg, instead of the ROS '
                              "environment (repeatable; default: rospkg's packages on "
@@ -102,6 +105,15 @@ def _add_export(subparsers):
                         help="keep the run's record in FILE, and do nothing when it says that "
                              'nothing the output comes from changed; FILE is also a make rule '
                              'naming every .msg/.srv and options file the headers come from')
+    parser.add_argument('--mros-v1-settings', dest='library_settings', action='append',
+                        default=[], metavar='FILE',
+                        help="check the types against an mROS v1 library's settings: the "
+                             "library's mros_packet_config.h and the app's mros_usr_config.h "
+                             '(repeatable, the one the build includes first first); each setting '
+                             'too small for a type is one error line with the value it needs')
+    parser.add_argument('--fit-strict', action='store_true',
+                        help='with --mros-v1-settings, refuse a type that only might not fit (a '
+                             'frame without a largest size) too, instead of warning')
     parser.add_argument('--quiet', action='store_true',
                         help='say nothing when the run record says the headers are up to date '
                              '(the make fragment runs genmros on every make)')
@@ -190,6 +202,13 @@ def _add_mros_v1_pc(subparsers):
     _add_header_arguments(parser)
     parser.add_argument('-j', dest='jobs', type=int, default=os.cpu_count() or 1,
                         help='parallel make jobs (default: the number of CPUs)')
+    parser.add_argument('--no-fit-check', action='store_true',
+                        help="build even where the app's types do not fit the library's "
+                             "settings (the check in genmros' make step and in ros.cpp); the "
+                             'program will then overrun what the check names')
+    parser.add_argument('--fit-strict', action='store_true',
+                        help='refuse a type that only might not fit a memory pool (no largest '
+                             'frame, heap storage) too, instead of warning')
     parser.add_argument('--sanitize', action='store_true',
                         help='build library, stand-ins and app with AddressSanitizer and '
                              'UndefinedBehaviorSanitizer (with --target native), so that an '
@@ -212,6 +231,7 @@ def _parser():
     _add_printers(subparsers)
     _add_export_dir_commands(subparsers)
     _add_mros_v1_pc(subparsers)
+    _add_mros_v1_fit(subparsers)
     return parser, set(subparsers.choices)
 
 
@@ -230,13 +250,18 @@ def export_request(options):
     """The :class:`~colcon_mros.export.firmware_export.ExportRequest` of
     ``genmros export``'s options."""
     from colcon_mros.export.firmware_export import ExportRequest
+    from colcon_mros.generator.workspace import split_msg_paths
+    prefixes, workspaces = split_msg_paths(options.msg_paths)
+    prefixes = (options.prefixes or []) + prefixes
     return ExportRequest(
-        output_dir=options.output_dir, prefixes=options.prefixes, workspaces=options.workspaces,
+        output_dir=options.output_dir, prefixes=prefixes or None,
+        workspaces=options.workspaces + workspaces,
         package_names=options.packages, type_names=options.types,
         variable_budget=options.variable_size_budget, template_dir=options.template_dir,
         only=options.only or EXPORT_PARTS[0], record=options.record,
         storage_kind=options.storage, option_files=options.option_files,
-        definition_text=options.definition_text, export_dir=options.export_dir)
+        definition_text=options.definition_text, export_dir=options.export_dir,
+        library_settings=options.library_settings, fit_strict=options.fit_strict)
 
 
 def _export(options):
@@ -244,6 +269,8 @@ def _export(options):
     require_ros_python()
     from colcon_mros.export.firmware_export import export  # needs genmsg and empy
     result = export(export_request(options))
+    for warning in result.warnings:
+        print('genmros: warning: %s' % warning, file=sys.stderr)
     if result.up_to_date:
         if not options.quiet:
             print('genmros: the headers in %s are up to date' % options.output_dir)
@@ -281,6 +308,42 @@ def _prune_export(options):
         print('genmros: removed %s' % os.path.join(options.export_dir, relative))
 
 
+def _add_mros_v1_fit(subparsers):
+    parser = subparsers.add_parser(
+        'mros-v1-fit', help="an mROS v1 app's message types against its library's settings",
+        description="One table row per message type of an mROS v1 app (or of an export dir): "
+                    'its definition text, the connection headers ROS nodes send for it, its '
+                    "largest frame, and for each of the library's settings (header buffers, "
+                    "type name field, memory pools) 'ok' or the value it needs; then the "
+                    "library's tables and the lines a build would stop with.")
+    parser.add_argument('app_dir', metavar='APP_DIR', nargs='?',
+                        help="the app's directory (mros_ws/<app>)")
+    parser.add_argument('--mros-root', metavar='DIR',
+                        help='the mROS v1 checkout (default: the one APP_DIR is in, ../..)')
+    parser.add_argument('--export-dir', metavar='DIR',
+                        help='report the types of this export dir instead of an app\'s')
+    parser.add_argument('--mros-v1-settings', dest='library_settings', action='append',
+                        default=[], metavar='FILE',
+                        help="the settings headers (default for an app: the app's "
+                             "mros_usr_config.h and the library's mros_packet_config.h)")
+    parser.add_argument('--type', dest='types', action='append', default=[],
+                        metavar='PKG/TYPE', help='a message type (repeatable; default: the '
+                                                 "app's app.json, or every type of the export dir)")
+    parser.add_argument('--msg-path', dest='msg_paths', action='append', default=[],
+                        metavar='DIR', help='where packages are: source trees or installed '
+                                            "prefixes (default: app.json's catkin_ws_dir and "
+                                            'the ROS environment)')
+    _add_header_arguments(parser)
+    parser.set_defaults(run=_mros_v1_fit)
+
+
+def _mros_v1_fit(options):
+    from colcon_mros.generator.ros_environment import require_ros_python
+    require_ros_python()
+    from colcon_mros.targets.mros_v1_pc.fit_report import report  # needs genmsg
+    sys.stdout.write(report(options))
+
+
 def _mros_v1_pc(options):
     from colcon_mros.targets.mros_v1_pc import build
     program = build.build(options)
@@ -310,6 +373,7 @@ def main(argv=None):
     try:
         options.run(options)
     except GenmrosError as error:
-        print('genmros: error: %s' % error, file=sys.stderr)
+        for line in str(error).splitlines():
+            print('genmros: error: %s' % line, file=sys.stderr)
         return 1
     return 0

@@ -20,3 +20,11 @@ class GenmrosError(Exception):
         if self.line is None:
             return '%s: %s' % (self.path, self.problem)
         return '%s:%d: %s' % (self.path, self.line, self.problem)
+
+
+class GenmrosProblems(GenmrosError):
+    """Several problems found at once (the fit check's), one line each."""
+
+    def __init__(self, lines):
+        self.lines = list(lines)
+        super().__init__('\n'.join(self.lines))

@@ -20,9 +20,11 @@ and genmros are those of the last one does nothing.
 import os
 import time
 
-from colcon_mros.errors import GenmrosError
+from colcon_mros.errors import GenmrosError, GenmrosProblems
+from colcon_mros.export.library_fit import Fit, read_settings
 from colcon_mros.export.export_dir import HEADER_FORM
 from colcon_mros.export.run_record import RunRecord, definition_directories, snapshot
+from colcon_mros.generator.library_needs import LibraryNeeds
 from colcon_mros.generator.model import ModelBuilder
 from colcon_mros.generator.output import is_generated, write_tree
 from colcon_mros.generator.parse import SpecLoader
@@ -36,14 +38,16 @@ from colcon_mros.generator.workspace import (environment_packages, installed_pac
 
 class ExportResult:
     """What an export wrote: the message models, the changed and removed
-    paths; up_to_date when its run record said there was nothing to do."""
+    paths; up_to_date when its run record said there was nothing to do;
+    warnings of the fit check (types that only might not fit)."""
 
-    def __init__(self, messages, services, changed, removed, up_to_date=False):
+    def __init__(self, messages, services, changed, removed, up_to_date=False, warnings=()):
         self.messages = messages
         self.services = services
         self.changed = changed
         self.removed = removed
         self.up_to_date = up_to_date
+        self.warnings = list(warnings)
 
 
 class Selection:
@@ -96,12 +100,16 @@ class ExportRequest:
     prefixes=None searches the ROS environment for packages; only is 'all',
     'headers' or 'aggregates' (colcon_mros.generator.defaults.EXPORT_PARTS);
     export_dir: an export dir the types come from, whose headers serve
-    where they have the form asked for; record: the run record's path."""
+    where they have the form asked for; record: the run record's path;
+    library_settings: the mROS v1 library's and app's settings headers to
+    check the firmware's types against (:mod:`colcon_mros.export.library_fit`),
+    fit_strict: a type that only might not fit is refused too."""
 
     def __init__(self, *, output_dir, prefixes=None, workspaces=(), package_names=(),
                  type_names=(), variable_budget=DEFAULT_VARIABLE_SIZE_BUDGET, template_dir=None,
                  only=EXPORT_PARTS[0], record=None, storage_kind=DEFAULT_STORAGE,
-                 option_files=(), definition_text=DEFAULT_DEFINITION_TEXT, export_dir=None):
+                 option_files=(), definition_text=DEFAULT_DEFINITION_TEXT, export_dir=None,
+                 library_settings=(), fit_strict=False):
         self.output_dir = output_dir
         # An export dir is an installed prefix of its definitions.
         self.prefixes = (list(prefixes or []) + [export_dir] if export_dir else prefixes)
@@ -116,6 +124,8 @@ class ExportRequest:
         self.option_files = list(option_files)
         self.definition_text = definition_text
         self.export_dir = export_dir
+        self.library_settings = [os.path.abspath(path) for path in library_settings]
+        self.fit_strict = fit_strict
 
     @property
     def parts(self):
@@ -133,7 +143,8 @@ class ExportRequest:
         return (os.path.abspath(self.output_dir), self.prefixes, environment,
                 [os.path.abspath(path) for path in self.workspaces], self.package_names,
                 self.type_names, self.variable_budget, self.parts, self.storage_kind,
-                [os.path.abspath(path) for path in self.option_files], self.definition_text)
+                [os.path.abspath(path) for path in self.option_files], self.definition_text,
+                self.library_settings, self.fit_strict)
 
 
 def _check_type_ids(messages):
@@ -143,6 +154,45 @@ def _check_type_ids(messages):
         if other != message.full_name:
             raise GenmrosError('type ID %d is shared by %s and %s; rename one type'
                                % (message.type_id, other, message.full_name))
+
+
+class FirmwareTypes:
+    """The types one export request selects, loaded: the packages searched,
+    every message (the selected ones and all they contain), the services,
+    and the firmware's own messages (those it publishes and subscribes: the
+    ones it names, not the ones nested in them)."""
+
+    def __init__(self, request):
+        packages = (environment_packages() if request.prefixes is None
+                    else installed_packages(request.prefixes))
+        local = {}
+        for workspace in request.workspaces:
+            local.update(workspace_packages(workspace))
+        packages.update(local)
+        if not request.workspaces and not request.package_names and not request.type_names:
+            raise GenmrosError('nothing to export: give --workspace, --package or --type')
+        selection = Selection(packages, local.keys(), request.package_names, request.type_names)
+
+        search_path = msg_search_path(packages)
+        self.storage = storage_for(request.storage_kind, request.option_files, search_path)
+        loader = SpecLoader(search_path)
+        self.storage.check(loader)
+        builder = ModelBuilder(loader, self.storage, request.definition_text)
+        roots = [loader.load_message_file(d.path, d.package).full_name for d in selection.messages]
+        services = [builder.service(loader.load_service_file(d.path, d.package))
+                    for d in selection.services]
+        for service in services:
+            roots.extend(service.dependencies)
+        for definition, half in selection.service_halves:
+            services.append(builder.service(loader.load_service_file(definition.path,
+                                                                     definition.package)))
+            roots.append(half)
+        self.packages = packages
+        self.messages = builder.closure(roots)
+        _check_type_ids(self.messages)
+        self.services = services
+        # Only the types the firmware names get API instantiations and callback cases.
+        self.firmware_messages = [builder.message(name) for name in dict.fromkeys(roots)]
 
 
 def export(request):
@@ -155,35 +205,18 @@ def export(request):
         if last and last.is_current(run):
             return ExportResult([], [], [], [], up_to_date=True)
     started_ns = time.time_ns()
-    packages = (environment_packages() if request.prefixes is None
-                else installed_packages(request.prefixes))
-    local = {}
-    for workspace in request.workspaces:
-        local.update(workspace_packages(workspace))
-    packages.update(local)
-    if not request.workspaces and not request.package_names and not request.type_names:
-        raise GenmrosError('nothing to export: give --workspace, --package or --type')
-    selection = Selection(packages, local.keys(), request.package_names, request.type_names)
-
-    search_path = msg_search_path(packages)
-    storage = storage_for(request.storage_kind, request.option_files, search_path)
-    loader = SpecLoader(search_path)
-    storage.check(loader)
-    builder = ModelBuilder(loader, storage, request.definition_text)
-    roots = [loader.load_message_file(d.path, d.package).full_name for d in selection.messages]
-    services = [builder.service(loader.load_service_file(d.path, d.package))
-                for d in selection.services]
-    for service in services:
-        roots.extend(service.dependencies)
-    for definition, half in selection.service_halves:
-        services.append(builder.service(loader.load_service_file(definition.path,
-                                                                 definition.package)))
-        roots.append(half)
-    messages = builder.closure(roots)
-    _check_type_ids(messages)
-    # The firmware publishes and subscribes the types it names, not the ones
-    # nested in them: only those get API instantiations and callback cases.
-    firmware_messages = [builder.message(name) for name in dict.fromkeys(roots)]
+    types = FirmwareTypes(request)
+    warnings = []
+    if request.library_settings:
+        fit = Fit(LibraryNeeds(types.firmware_messages), read_settings(request.library_settings))
+        problems = [misfit.line() for misfit in fit.misfits]
+        if request.fit_strict:
+            problems += fit.warnings
+        if problems:
+            raise GenmrosProblems(problems)
+        warnings = fit.warnings
+    packages, messages, services = types.packages, types.messages, types.services
+    firmware_messages = types.firmware_messages
 
     parts = request.parts
     writes_headers = parts != 'aggregates'
@@ -216,8 +249,9 @@ def export(request):
     changed, removed = write_tree(output_dir, files, stale)
     if request.record:
         sources = sorted({model.source for model in messages + services})
-        inputs = sources + definition_directories(sources) + list(storage.option_files)
+        inputs = (sources + definition_directories(sources) + list(types.storage.option_files)
+                  + list(request.library_settings))
         RunRecord(run, snapshot(inputs, started_ns),
                   [os.path.join(output_dir, relative) for relative in files]
                   ).write(request.record)
-    return ExportResult(messages, services, changed, removed)
+    return ExportResult(messages, services, changed, removed, warnings=warnings)

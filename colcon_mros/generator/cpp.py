@@ -12,11 +12,22 @@ and guards. The model stays free of C++; the templates stay free of logic.
 import math
 import re
 
+from colcon_mros import __version__
 from colcon_mros.errors import GenmrosError
 from colcon_mros.generator.floats import FLOAT32_SMALLEST_NORMAL, round_to_type
 from colcon_mros.generator.names import member_identifier
 
 SUPPORT_HEADER = 'mros_message_support.h'
+
+
+def _version_number(version):
+    """'1.2.3' as 10203: what MROS_MESSAGE_SUPPORT_VERSION holds."""
+    major, minor, patch = (int(part) for part in version.split('.')[:3])
+    return major * 10000 + minor * 100 + patch
+
+
+# The support header defines it; every message header checks it.
+SUPPORT_VERSION = _version_number(__version__)
 # Included by message_headers.h, the mROS v1 aggregate: memCopy() and delivery.
 V1_DELIVERY_HEADER = 'mros_v1_delivery.h'
 # Header guards of message headers start with this; a header includes those
@@ -148,6 +159,14 @@ def field_cpp_type(field):
     return element
 
 
+def comment_lines(comment):
+    """A .msg comment as the text of C++ // lines: no line may end in a
+    backslash (it would continue the comment onto the next line of code),
+    and no '??' may start a trigraph."""
+    lines = [re.sub(r'\?(?=\?)', '? ', text.rstrip('\\ \t')) for text in comment]
+    return [text for text in lines if text]
+
+
 class CppField:
     """A field as a struct member."""
 
@@ -157,6 +176,7 @@ class CppField:
         self.cpp_name = cpp_name
         self.cpp_type = field_cpp_type(field)
         self.line = field.line
+        self.comment = comment_lines(field.comment)
 
 
 class CppConstant:
@@ -176,6 +196,7 @@ class CppConstant:
         self.cpp_type = 'char' if constant.is_string else BUILTIN_TYPES[constant.ros_type]
         self.cpp_literal = cpp_constant_literal(constant.ros_type, constant.value)
         self.line = constant.line
+        self.comment = comment_lines(constant.comment)
 
 
 def _check_unique_members(message, members):

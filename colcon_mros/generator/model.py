@@ -48,9 +48,9 @@ def gencpp_definition_text(full_text):
 
 
 class Constant:
-    """A constant of a message: its type, name, value and line."""
+    """A constant of a message: its type, name, value, line and comment."""
 
-    def __init__(self, genmsg_constant, line):
+    def __init__(self, genmsg_constant, line, comment=()):
         self.name = genmsg_constant.name
         self.ros_type = genmsg_constant.type
         self.value = genmsg_constant.val
@@ -58,6 +58,7 @@ class Constant:
         self.is_float = self.ros_type in FLOAT_TYPES
         self.is_integer = not self.is_string and not self.is_float
         self.line = line
+        self.comment = list(comment)  # the .msg's comment lines
 
 
 class ElementType:
@@ -79,12 +80,14 @@ def _array_max_size(element, count, counted):
 
 
 class Field:
-    """A field of a message: its type, its bounds and its size on the wire."""
+    """A field of a message: its type, its bounds, its size on the wire and
+    its comment."""
 
-    def __init__(self, name, ros_type, element, bounds, line):
+    def __init__(self, name, ros_type, element, bounds, line, comment=()):
         self.name = name
         self.ros_type = ros_type
         self.line = line
+        self.comment = list(comment)  # the .msg's comment lines
         self.element = element
         self.bounds = bounds
         base_type, self.is_array, self.array_length = parse_type(ros_type)
@@ -124,12 +127,13 @@ class Message:
         self._identities = identities
         self.compact_definition = definition_text == 'compact'
         self.type_id = type_id(full_name)
-        self.constants = [Constant(constant, line) for constant, line
+        self.constants = [Constant(constant, line, declarations.comments[line]) for constant, line
                           in zip(spec.constants, declarations.constant_lines)]
         self.fields = []
         for name, ros_type, line in zip(spec.names, spec.types, declarations.field_lines):
             bounds = storage.field_bounds(full_name, name, ros_type, self.source, line)
-            self.fields.append(Field(name, ros_type, element_of(ros_type, bounds), bounds, line))
+            self.fields.append(Field(name, ros_type, element_of(ros_type, bounds), bounds, line,
+                                     declarations.comments[line]))
         self.dependencies = sorted({f.element_type for f in self.fields if '/' in f.element_type})
         self.min_size = sum(f.min_size for f in self.fields)
         unbounded = [f for f in self.fields if f.max_size is None]
@@ -160,6 +164,12 @@ class Message:
     def definition(self):
         return gencpp_definition_text(
             self._identities.full_text(self.full_name, self.compact_definition))
+
+    @functools.cached_property
+    def full_definition(self):
+        """The full definition text, as roscpp and rospy send it, whatever
+        text this firmware's header carries."""
+        return gencpp_definition_text(self._identities.full_text(self.full_name, False))
 
 
 class Service:

@@ -63,13 +63,21 @@ SUPPORT_HEADER_NAMES = frozenset('''
     message_traits mros service_traits subtask_methods wire
 '''.split())
 
+# The macros the support headers define or read; a member so named is
+# escaped like one of the standard headers' macros.
+SUPPORT_MACROS = frozenset('''
+    MROS_BOUNDED_OVERFLOW MROS_MESSAGE_SUPPORT_H MROS_MESSAGE_SUPPORT_VERSION
+    MROS_ONBOARD_FRAME_SLOTS MROS_V1_DELIVERY_H MROS_WIRE_PORTABLE
+'''.split())
+
 _ASCII_IDENTIFIER = re.compile(r'[A-Za-z][A-Za-z0-9_]*\Z')
 
 
 def member_identifier(name, type_name):
     """The C++ spelling of a field or constant of type ``type_name``."""
     spelling = name
-    while (spelling in CPP_KEYWORDS or spelling in MACROS or spelling in RESERVED_MEMBERS
+    while (spelling in CPP_KEYWORDS or spelling in MACROS or spelling in SUPPORT_MACROS
+           or spelling in RESERVED_MEMBERS
            or spelling in UNQUALIFIED_NAMES or spelling == type_name):
         spelling += '_'
     return spelling

@@ -39,22 +39,34 @@ MAX_ARRAY_LENGTH = (1 << 31) - 1
 
 
 class Declarations:
-    """Line numbers of the constants and fields of one message, in order.
+    """Line numbers of the constants and fields of one message, in order, and
+    their comments.
 
     genmsg keeps no line numbers; this follows genmsg's own rule for what a
     declaration is (a line that is not blank once its comment is removed; a
     constant when it contains '=') so index i of a spec's fields or constants
-    maps to the line that declared it.
+    maps to the line that declared it. A declaration's comment is the comment
+    lines right above it (no blank line between) and the comment after it on
+    its line; a string constant's value runs to the end of its line, '#'
+    included, as genmsg reads it.
     """
 
     def __init__(self, path, numbered_lines):
         self.path = path
         self.constant_lines = []
         self.field_lines = []
+        self.comments = {}  # a declaration's line number: its comment, line by line
+        above = []
         for number, line in numbered_lines:
             declaration = line.split('#')[0].strip()
             if not declaration:
+                text = line.strip()
+                above = above + [text[1:].strip()] if text.startswith('#') else []
                 continue
+            is_string_constant = '=' in declaration and declaration.split()[0] == 'string'
+            after = '' if is_string_constant else line.partition('#')[2].strip()
+            self.comments[number] = [text for text in above + [after] if text]
+            above = []
             if '=' in declaration:
                 self.constant_lines.append(number)
             else:

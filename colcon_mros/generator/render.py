@@ -15,13 +15,16 @@ import em
 
 from colcon_mros import __version__
 from colcon_mros.generator.aggregates import MaxSize
-from colcon_mros.generator.cpp import SUPPORT_HEADER, V1_DELIVERY_HEADER, CppMessage, CppService, CppType
+from colcon_mros.generator.cpp import (SUPPORT_HEADER, SUPPORT_VERSION, V1_DELIVERY_HEADER,
+                                       CppMessage, CppService, CppType)
 from colcon_mros.generator.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
+from colcon_mros.generator.library_needs import LibraryNeeds
 
 TEMPLATE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'templates')
 # The per-firmware aggregates the mROS v1 library includes, each rendered
 # from <name>.em.
-FIRMWARE_AGGREGATES = ('message_headers.h', 'message_class_specialization.h', 'msg_max_size.h')
+FIRMWARE_AGGREGATES = ('message_headers.h', 'message_class_specialization.h', 'msg_max_size.h',
+                       'mros_v1_fit_check.h')
 
 
 @functools.lru_cache(maxsize=None)
@@ -70,7 +73,8 @@ class Renderer:
         return 'genmros %s\n' % digest.hexdigest()
 
     def support_header(self):
-        return {SUPPORT_HEADER: self._read(SUPPORT_HEADER)}
+        return {SUPPORT_HEADER: _render(self.template_dir, SUPPORT_HEADER + '.em',
+                                        support_version=SUPPORT_VERSION)}
 
     def _read(self, name):
         with open(os.path.join(self.template_dir, name)) as source:
@@ -78,7 +82,8 @@ class Renderer:
 
     def message(self, message):
         return {'%s.h' % message.full_name: _render(
-            self.template_dir, 'msg.h.em', msg=CppMessage(message), support_header=SUPPORT_HEADER)}
+            self.template_dir, 'msg.h.em', msg=CppMessage(message), support_header=SUPPORT_HEADER,
+            support_version=SUPPORT_VERSION, genmros_version=__version__)}
 
     def service(self, service):
         files = {'%s.h' % service.full_name: _render(self.template_dir, 'srv.h.em',
@@ -91,7 +96,7 @@ class Renderer:
         """The per-firmware files the mROS v1 communication library includes
         (and the v1 delivery header, which message_headers.h includes)."""
         context = {'messages': [CppType(message.full_name) for message in messages],
-                   'sizes': MaxSize(messages, variable_budget)}
+                   'sizes': MaxSize(messages, variable_budget), 'needs': LibraryNeeds(messages)}
         files = {name: _render(self.template_dir, name + '.em', **context)
                  for name in FIRMWARE_AGGREGATES}
         files[V1_DELIVERY_HEADER] = self._read(V1_DELIVERY_HEADER)

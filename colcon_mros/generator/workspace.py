@@ -131,6 +131,14 @@ def installed_packages(prefixes):
     return packages
 
 
+def split_msg_paths(paths):
+    """(installed prefixes, source trees) of paths: a directory with share/
+    is an installed prefix (an install or devel space, an export dir), any
+    other a source tree searched for package.xml."""
+    prefixes = [path for path in paths if os.path.isdir(os.path.join(path, 'share'))]
+    return prefixes, [path for path in paths if path not in prefixes]
+
+
 def msg_search_path(packages):
     """genmsg's search path, {package: [msg directories]}."""
     return {name: package.msg_dirs for name, package in packages.items() if package.msg_dirs}

@@ -85,6 +85,11 @@ def test_bounded_firmware_links_without_an_allocator(bounded_exports, bounded_so
 BEHAVIOUR = r'''
 #include <stdio.h>
 #include <string.h>
+// The firmware's hook: count what went over a bound, and keep the last.
+static int overflows = 0;
+static unsigned long last_capacity = 0, last_requested = 0;
+#define MROS_BOUNDED_OVERFLOW(capacity, requested) \
+  (++overflows, last_capacity = (capacity), last_requested = (requested))
 #include <mros_test/PersonalData.h>
 #include <mros_test_base/Labeled.h>
 
@@ -122,11 +127,18 @@ int main() {
   printf("first_name over: %d\n", message.deserialize(wire, size));
   size = person(wire, 32, 17);
   printf("last_name over: %d\n", message.deserialize(wire, size));
-  // Assignment beyond the bound is refused and keeps the value.
+  printf("hook after a peer's data over a bound: %d\n", overflows);
+  // assign() beyond the bound is refused, keeps the value and says so.
   mros_test::PersonalData local;
   local.first_name = "Phil";
   const bool taken = local.first_name.assign("0123456789012345678901234567890123");
-  printf("assign over: %d %s\n", taken, local.first_name.c_str());
+  printf("assign over: %d %s, hook %d (%lu of %lu)\n", taken, local.first_name.c_str(),
+         overflows, last_requested, last_capacity);
+  // = and the implicit constructor keep the first N bytes, and call the hook too.
+  local.first_name = "0123456789012345678901234567890123";
+  printf("= over: %s, hook %d\n", local.first_name.c_str(), overflows);
+  mros::bounded_string<4> word = "abcdefg";
+  printf("constructed over: %s, hook %d\n", word.c_str(), overflows);
   // A count over max_count is refused.
   mros_test_base::Labeled labeled;
   uint32_t labeled_size = putText(wire, "tag", 3);
@@ -140,6 +152,13 @@ int main() {
   put32(wire + weights_at, 5);
   memset(wire + labeled_size, 0, 8);
   printf("weights over: %d\n", labeled.deserialize(wire, labeled_size + 8));
+  // push_back beyond max_count is refused; pop_back on empty changes nothing.
+  labeled.weights.clear();
+  int pushed = 0, popped = 0;
+  for (int i = 0; i < 5; ++i) pushed += labeled.weights.push_back(i);
+  printf("pushed %d of 5, hook %d\n", pushed, overflows);
+  for (int i = 0; i < 5; ++i) popped += labeled.weights.pop_back();
+  printf("popped %d of 5, size %u\n", popped, static_cast<unsigned>(labeled.weights.size()));
   return 0;
 }
 '''
@@ -163,9 +182,14 @@ def test_bounds_are_exact_and_never_exceeded(tmp_path):
         'max: 62 62',  # 4 + 32 + 4 + 16 + 2 + 4
         'first_name over: -1',
         'last_name over: -1',
-        'assign over: 0 Phil',
+        "hook after a peer's data over a bound: 0",
+        'assign over: 0 Phil, hook 1 (34 of 32)',
+        '= over: 01234567890123456789012345678901, hook 2',
+        'constructed over: abcd, hook 3',
         'weights at bound: 59 of 59',
         'weights over: -1',
+        'pushed 4 of 5, hook 4',
+        'popped 4 of 5, size 0',
     ]
     with open(os.path.join(include, 'msg_max_size.h')) as stream:
         max_size = stream.read()

@@ -63,6 +63,67 @@ def test_generator_mode_writes_what_export_writes(test_ws_export, tmp_path):
         assert filecmp.cmp(str(tmp_path / relative), os.path.join(test_ws_export, relative), shallow=False), relative
 
 
+def test_a_header_refuses_a_support_header_of_another_genmros(test_ws_export, tmp_path):
+    include = str(tmp_path / 'include')
+    shutil.copytree(test_ws_export, include)
+    support = os.path.join(include, 'mros_message_support.h')
+    with open(support) as stream:
+        text = stream.read()
+    version = run_genmros('--version').stdout.split()[1]
+    major, minor, patch = (int(part) for part in version.split('.'))
+    defined = '#define MROS_MESSAGE_SUPPORT_VERSION %d\n' % (major * 10000 + minor * 100 + patch)
+    assert defined in text
+    source = tmp_path / 'use.cpp'
+    source.write_text('#include <mros_test/PersonalData.h>\nint main() { return 0; }\n')
+    command = ['g++', '-std=gnu++98', '-fsyntax-only', '-I', include, str(source)]
+    assert subprocess.run(command, capture_output=True, text=True).returncode == 0
+    with open(support, 'w') as stream:
+        stream.write(text.replace(defined, '#define MROS_MESSAGE_SUPPORT_VERSION 99999\n'))
+    result = subprocess.run(command, capture_output=True, text=True)
+    assert result.returncode != 0
+    assert ('error: #error "the mros_message_support.h found first is not the one genmros %s '
+            'wrote with this header' % version) in result.stderr
+
+
+COMMENTED_MSG = r"""# above a
+int32 a  # after a
+# not a's: a blank line follows
+
+string S=value # part of the value
+# ends in a backslash \
+int32 b
+# a trigraph in C++98: ??/
+int32 c
+"""
+
+
+def test_the_msg_comments_become_the_members_comments(tmp_path):
+    package = tmp_path / 'ws' / 'src' / 'commented'
+    (package / 'msg').mkdir(parents=True)
+    (package / 'package.xml').write_text(
+        '<package format="2"><name>commented</name><version>1.0.0</version><description>c'
+        '</description><maintainer email="dev@example.com">d</maintainer><license>BSD'
+        '</license></package>\n')
+    (package / 'msg' / 'Commented.msg').write_text(COMMENTED_MSG)
+    include = str(tmp_path / 'include')
+    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', include, '--underlay', '/usr')
+    with open(os.path.join(include, 'commented', 'Commented.h')) as stream:
+        header = stream.read()
+    assert ('  // above a\n  // after a\n  int32_t a;  // int32 a\n'
+            '  // ends in a backslash\n  int32_t b;  // int32 b\n'
+            '  // a trigraph in C++98: ? ?/\n  int32_t c;  // int32 c\n') in header
+    assert "  // not a's" not in header
+    assert '"value # part of the value"' in header
+    # Under strict C++98 (trigraphs on) b and c are still members.
+    source = tmp_path / 'use.cpp'
+    source.write_text('#include <commented/Commented.h>\n'
+                      'int main() { commented::Commented m; m.b = 1; m.c = 2; return m.a; }\n')
+    compiled = subprocess.run(['g++', '-std=c++98', '-Wall', '-Wextra', '-Werror', '-pedantic',
+                               '-fsyntax-only', '-I', include, str(source)],
+                              capture_output=True, text=True)
+    assert compiled.returncode == 0, compiled.stderr[-3000:]
+
+
 def test_type_ids_depend_on_the_type_name_only(tmp_path):
     run_genmros('export', '--type', 'std_msgs/Header', '-o', str(tmp_path / 'a'), '--underlay', '/usr')
     run_genmros('export', '--package', 'sensor_msgs', '--type', 'std_msgs/Header', '-o', str(tmp_path / 'b'),

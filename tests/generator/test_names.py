@@ -4,7 +4,7 @@ here to what the support headers declare."""
 import os
 import re
 
-from colcon_mros.generator.names import SUPPORT_HEADER_NAMES, member_identifier
+from colcon_mros.generator.names import SUPPORT_HEADER_NAMES, SUPPORT_MACROS, member_identifier
 from conftest import REPO
 
 TEMPLATES = os.path.join(REPO, 'colcon_mros', 'generator', 'templates')
@@ -20,8 +20,19 @@ def _declared(name):
 
 
 def test_reserved_names_are_what_the_support_headers_declare():
-    declared = _declared('mros_message_support.h') | _declared('mros_v1_delivery.h')
+    declared = _declared('mros_message_support.h.em') | _declared('mros_v1_delivery.h')
     assert declared == SUPPORT_HEADER_NAMES
+
+
+def test_the_macros_are_what_the_support_headers_define_and_read():
+    macros = set()
+    for name in ('mros_message_support.h.em', 'mros_v1_delivery.h'):
+        with open(os.path.join(TEMPLATES, name)) as stream:
+            text = stream.read()
+        macros.update(re.findall(r'#\s*(?:define|ifndef)\s+(MROS_\w+)', text))
+        macros.update(re.findall(r'defined\((MROS_\w+)\)', text))
+    assert macros == SUPPORT_MACROS
+    assert member_identifier('MROS_BOUNDED_OVERFLOW', 'Limits') == 'MROS_BOUNDED_OVERFLOW_'
 
 
 def test_template_parameters_are_not_reserved():

@@ -7,6 +7,7 @@
 #include <cstddef>
 
 #include <mros_v1_delivery.h>
+#include <mros_v1_fit_check.h>
 
 @[for msg in messages]@
 #include <@(msg.full_name).h>

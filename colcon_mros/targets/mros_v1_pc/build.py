@@ -17,6 +17,7 @@ import sys
 import tempfile
 
 from colcon_mros.errors import GenmrosError
+from colcon_mros.generator.library_needs import SETTINGS_HEADERS
 from colcon_mros.integrations.installed_files import MAKE_FRAGMENT, installed_file
 from colcon_mros.targets.mros_v1_pc.asp_cfg import read_config, write_kernel_config
 
@@ -72,19 +73,20 @@ class App:
         return [], []
 
 
-def app_variables(makefile):
+def app_variables(makefile, given=()):
     """The variables an app's Makefile sets, as make reads them.
 
     make runs in an empty directory, so the board's makefiles the app's
     Makefile includes by relative paths (ASP, mbed, mROS) are not there: the
-    values are the app's own, references expanded."""
+    values are the app's own, references expanded. given: NAME=value
+    settings for make's command line."""
     if not os.path.isfile(makefile):
         return {}
     makefile = os.path.abspath(makefile)
     with tempfile.TemporaryDirectory(prefix='genmros-make-') as scratch:
         directory = os.path.join(scratch, 'mros_ws', 'app')
         os.makedirs(directory)
-        database = subprocess.run(['make', '-pn', '-f', makefile], cwd=directory,
+        database = subprocess.run(['make', '-pn', '-f', makefile] + list(given), cwd=directory,
                                   stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True,
                                   env=dict(os.environ, LC_ALL='C')).stdout
     values = {}
@@ -104,6 +106,25 @@ def app_variables(makefile):
                                                        seen | {reference.group(1)})
                               if reference.group(1) not in seen else '', value)
     return {name: expand(value, {name}).strip() for name, value in values.items()}
+
+
+def library_settings(app):
+    """The headers that set the library's settings, as the build includes
+    them: the app's mros_usr_config.h (its mros_config/, else the library's
+    default) and the library's mros_packet_config.h (of its ROS_VERSION)."""
+    library = os.path.join(app.mros_root, 'mros-lib')
+    variables = app_variables(os.path.join(library, 'Makefile.m'), ['MROS_DIR=' + library])
+    include_dirs = [flag[2:] for flag in variables.get('MROS_INCLUDE_PATHS', '').split()
+                    if flag.startswith('-I')]
+    found = []
+    for name in SETTINGS_HEADERS:
+        paths = [os.path.join(directory, name) for directory in app.source_dirs + include_dirs]
+        paths = [path for path in paths if os.path.isfile(path)]
+        if not paths:
+            raise GenmrosError('the library and the app have no %s (give --no-fit-check to build '
+                               'without the fit check)' % name, app.mros_root)
+        found.append(paths[0])
+    return found
 
 
 def _types_of_json(path, app_dir):
@@ -181,6 +202,14 @@ def build(options):
     if not types:
         raise GenmrosError('no message types: the app has no app.json/msg_app.json; give --type',
                            app.dir)
+    msg_paths = options.msg_paths or paths
+    if not options.no_fit_check:
+        from colcon_mros.generator.ros_environment import require_ros_python
+        require_ros_python()
+        from colcon_mros.targets.mros_v1_pc import fit  # genmsg: the types' models
+        fit.check(fit.types_fit(types, msg_paths, library_settings(app), options.storage,
+                                options.option_files),
+                  options.fit_strict, lambda warning: print('genmros: warning: %s' % warning))
     flavour = options.target + ('-sanitize' if options.sanitize else '')
     build_dir = os.path.abspath(options.build_dir or os.path.join(app.dir, 'build-pc-' + flavour))
     write_kernel_config(config, os.path.join(build_dir, 'cfg'))
@@ -190,10 +219,11 @@ def build(options):
         'TARGET': options.target, 'BUILD': build_dir,
         'SANITIZER_FLAGS': SANITIZER_FLAGS if options.sanitize else '',
         'MROS_MSG_TYPES': ' '.join(types),
-        'MROS_MSG_PATHS': ' '.join(options.msg_paths or paths),
+        'MROS_MSG_PATHS': ' '.join(msg_paths),
         'MROS_MSG_DEFINITION_TEXT': options.definition_text,
         'MROS_MSG_FLAGS': ' '.join(['--storage', options.storage] + [
             '--options %s' % os.path.abspath(path) for path in options.option_files]),
+        'FIT_CHECK_FLAGS': '-DMROS_SKIP_FIT_CHECK' if options.no_fit_check else '',
         'GENMROS': 'env PYTHONPATH=%s %s -m colcon_mros' % (
             os.path.dirname(os.path.dirname(os.path.dirname(TARGET_DIR))), sys.executable),
         'GENMROS_MK': installed_file(MAKE_FRAGMENT),

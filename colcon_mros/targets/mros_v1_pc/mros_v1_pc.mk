@@ -13,6 +13,8 @@
 #                 qemu-arm); native: this PC
 #   BUILD         the output directory
 #   SANITIZER_FLAGS  added to every compile and the link (genmros --sanitize)
+#   FIT_CHECK_FLAGS  -DMROS_SKIP_FIT_CHECK with genmros --no-fit-check, so that
+#                 ros.cpp builds even where mros_v1_fit_check.h finds a misfit
 #   MROS_MSG_TYPES, MROS_MSG_PATHS, MROS_MSG_DEFINITION_TEXT, MROS_MSG_FLAGS,
 #   GENMROS, GENMROS_MK: the message headers,
 #                 written into $(BUILD)/include by genmros' make fragment
@@ -58,7 +60,8 @@ VPATH := $(APP_DIRS) $(BUILD)/cfg $(VPATH) $(PC_SOURCE_DIRS)
 INCLUDES := -I$(BUILD)/include -I$(PC_TARGET)/config $(addprefix -I,$(APP_DIRS)) \
             $(MROS_INCLUDE_PATHS) -I$(BUILD)/cfg -I$(PC_TARGET)/asp -I$(PC_TARGET)/lwip \
             -I$(PC_TARGET)/mbed
-COMMON_FLAGS := $(CPU_FLAGS) -O2 -g -pthread -MMD -MP $(SANITIZER_FLAGS) $(CDEFS) $(INCLUDES)
+COMMON_FLAGS := $(CPU_FLAGS) -O2 -g -pthread -MMD -MP $(SANITIZER_FLAGS) $(FIT_CHECK_FLAGS) \
+                $(CDEFS) $(INCLUDES)
 CFLAGS := $(COMMON_FLAGS)
 # mROS v1's flags for C++ (Makefile.mbd), and the app's own.
 CXXFLAGS := $(COMMON_FLAGS) -std=gnu++98 -fno-rtti -fno-exceptions -fno-builtin $(APP_CXXFLAGS)

@@ -14,6 +14,11 @@
 #ifndef MROS_MESSAGE_SUPPORT_H
 #define MROS_MESSAGE_SUPPORT_H
 
+// The genmros version that wrote this header, as major * 10000 + minor * 100
+// + patch. Every message header checks it, so that headers and a support
+// header from different genmros runs cannot be compiled together.
+#define MROS_MESSAGE_SUPPORT_VERSION @(support_version)
+
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
@@ -97,10 +102,19 @@ template <class T, size_t N> struct array {
 };
 #endif
 
-// Bounded storage (genmros --storage bounded): a string of at most N bytes
-// held inside the message, no heap. Assigning more than N bytes is refused:
-// assign() returns false and the string keeps its value; a received string
-// longer than N fails deserialize() (-1), it is never cut short.
+// Bounded storage (genmros --storage bounded) holds strings and variable
+// arrays inside the message, no heap. Asked to hold more than its bound, a
+// bounded container calls this hook first: define it before including any
+// message header to log, count or stop (default: nothing). Then the checked
+// calls (assign, push_back, resize) refuse and return false, keeping the old
+// value; = and the implicit constructor, which cannot return false, keep the
+// first N bytes. Received data over a bound fails deserialize() (-1) and
+// does not call the hook: a peer's bad packet is not the firmware's fault.
+#ifndef MROS_BOUNDED_OVERFLOW
+#define MROS_BOUNDED_OVERFLOW(capacity, requested) ((void)0)
+#endif
+
+// A string of at most N bytes held inside the message.
 template <size_t N> class bounded_string {
  public:
   typedef char value_type;
@@ -110,25 +124,27 @@ template <size_t N> class bounded_string {
 
   bounded_string() : size_(0) { chars_[0] = '\0'; }
   bounded_string(const char* text) : size_(0) {  // NOLINT: implicit, as std::string
-    chars_[0] = '\0';
-    assign(text);
+    assign_truncated(text, strlen(text));
   }
 
+  // Keep the first N bytes of a longer text (see MROS_BOUNDED_OVERFLOW).
   bounded_string& operator=(const char* text) {
-    assign(text);
+    assign_truncated(text, strlen(text));
     return *this;
   }
   bounded_string& operator=(const std::string& text) {
-    assign(text);
+    assign_truncated(text.data(), text.size());
     return *this;
   }
 
+  // Refuse a longer text: false, and the string keeps its value.
   bool assign(const char* text) { return assign(text, strlen(text)); }
   bool assign(const char* text, size_type count) {
-    if (count > N) return false;
-    memmove(chars_, text, count);
-    size_ = count;
-    chars_[count] = '\0';
+    if (count > N) {
+      MROS_BOUNDED_OVERFLOW(N, count);
+      return false;
+    }
+    store(text, count);
     return true;
   }
   bool assign(const std::string& text) { return assign(text.data(), text.size()); }
@@ -155,13 +171,26 @@ template <size_t N> class bounded_string {
   bool operator!=(const char* text) const { return !(*this == text); }
 
  private:
+  void store(const char* text, size_type count) {
+    memmove(chars_, text, count);
+    size_ = count;
+    chars_[count] = '\0';
+  }
+  void assign_truncated(const char* text, size_type count) {
+    if (count > N) {
+      MROS_BOUNDED_OVERFLOW(N, count);
+      count = N;
+    }
+    store(text, count);
+  }
+
   char chars_[N + 1];  // one more for the terminator c_str() promises
   size_type size_;
 };
 
-// Bounded storage of T[] with at most N elements, held inside the message.
-// push_back and resize beyond N are refused (they return false); a received
-// count above N fails deserialize() (-1).
+// At most N elements of T held inside the message. push_back and resize
+// beyond N are refused (they return false); pop_back on an empty array
+// returns false and changes nothing.
 template <class T, size_t N> class bounded_vector {
  public:
   typedef T value_type;
@@ -177,7 +206,10 @@ template <class T, size_t N> class bounded_vector {
   bool empty() const { return size_ == 0; }
   void clear() { size_ = 0; }
   bool resize(size_type count) {
-    if (count > N) return false;
+    if (count > N) {
+      MROS_BOUNDED_OVERFLOW(N, count);
+      return false;
+    }
     for (size_type i = size_; i < count; ++i) elements_[i] = T();
     size_ = count;
     return true;
@@ -190,11 +222,18 @@ template <class T, size_t N> class bounded_vector {
     return true;
   }
   bool push_back(const T& value) {
-    if (size_ == N) return false;
+    if (size_ == N) {
+      MROS_BOUNDED_OVERFLOW(N, N + 1);
+      return false;
+    }
     elements_[size_++] = value;
     return true;
   }
-  void pop_back() { --size_; }
+  bool pop_back() {
+    if (size_ == 0) return false;
+    --size_;
+    return true;
+  }
   T& operator[](size_type i) { return elements_[i]; }
   const T& operator[](size_type i) const { return elements_[i]; }
   T& front() { return elements_[0]; }
@@ -518,7 +557,7 @@ inline bool assignText(std::string& value, const char* text, uint32_t size) {
   return true;
 }
 template <size_t N> bool assignText(bounded_string<N>& value, const char* text, uint32_t size) {
-  return value.assign(text, size);
+  return size <= N && value.assign(text, size);  // over N: no hook, see above
 }
 
 // string: uint32 byte count, then the bytes, no terminator.

@@ -1,0 +1,84 @@
+"""``genmros mros-v1-fit``: an app's message types against its mROS v1
+library's settings, one table row per type.
+
+For an app (``mros_ws/<app>``) the settings are those its build includes
+(:func:`.build.library_settings`) and the types those of its app.json or
+``--type``; for an export dir, the types it holds (or ``--type``) against
+the settings headers given. Each row shows what the type needs (definition
+text, the connection headers ROS nodes send, the largest frame) and, for
+each setting, ``ok`` or the value it needs; then the library's tables beside
+the number of types, and the lines a build would stop with.
+"""
+
+import os
+
+from colcon_mros.errors import GenmrosError
+from colcon_mros.export.export_dir import ExportDir
+from colcon_mros.generator.library_needs import PEER_NAME_MAX
+from colcon_mros.targets.mros_v1_pc.build import App, find_mros_root, library_settings
+from colcon_mros.targets.mros_v1_pc.fit import types_fit
+
+
+def _fit(options):
+    """The Fit of the types reported, and the settings headers read."""
+    if options.export_dir:
+        if not options.library_settings:
+            raise GenmrosError('with --export-dir, give the settings headers: --mros-v1-settings '
+                               "the app's mros_usr_config.h --mros-v1-settings the library's "
+                               'mros_packet_config.h')
+        exports = ExportDir(options.export_dir)
+        return types_fit(options.types or exports.types(), [exports.path],
+                         options.library_settings, options.storage,
+                         options.option_files), options.library_settings
+    if not options.app_dir:
+        raise GenmrosError('give an app directory, or --export-dir')
+    app_dir = os.path.abspath(options.app_dir)
+    app = App(app_dir, find_mros_root(app_dir, options.mros_root))
+    types, paths = app.message_types()
+    types = options.types or types
+    if not types:
+        raise GenmrosError('no message types: the app has no app.json/msg_app.json; give --type',
+                           app.dir)
+    settings_files = options.library_settings or library_settings(app)
+    return types_fit(types, options.msg_paths or paths, settings_files, options.storage,
+                     options.option_files), settings_files
+
+
+def _cell(requirement):
+    if requirement.needed is None:
+        return 'unknown'
+    return 'ok' if requirement.fits else 'needs %d' % requirement.needed
+
+
+def report(options):
+    """The report's text."""
+    fit, settings_files = _fit(options)
+    lines = ['Settings: %s' % ', '.join(settings_files),
+             'Connection headers are counted with topics of up to %d bytes (%s) and ROS peers\' '
+             'caller ids of up to %d.' % (fit.topic_name_max.value, fit.topic_name_max.name,
+                                          PEER_NAME_MAX), '']
+    columns = None
+    rows = []
+    for needed in fit.needs.types:
+        requirements = fit.requirements(needed)
+        if columns is None:
+            columns = ['%s %d' % (r.setting.name, r.setting.value) for r in requirements]
+        request_size, reply_size = needed.header_buffers(fit.topic_name_max.value)
+        frame = 'no maximum' if needed.max_frame is None else str(needed.max_frame)
+        rows.append([needed.full_name, str(needed.text_bytes), str(request_size),
+                     str(reply_size), frame] + [_cell(r) for r in requirements])
+    header = ['type', 'definition text', 'subscriber header', 'publisher header',
+              'largest frame'] + (columns or [])
+    lines.append('| %s |' % ' | '.join(header))
+    lines.append('|---|' + '---:|' * (len(header) - 1))
+    lines += ['| %s |' % ' | '.join(row) for row in rows]
+    lines.append('')
+    lines.append('Tables (each type takes a topic per topic name, each ROS peer a connector): '
+                 '%s; this firmware has %d types.'
+                 % (', '.join('%s %d' % (s.name, s.value) for s in fit.table_sizes()),
+                    len(fit.needs.types)))
+    problems = [misfit.line() for misfit in fit.misfits]
+    lines.append('')
+    lines += ['error: %s' % line for line in problems] or ['Every type fits.']
+    lines += ['warning: %s' % line for line in fit.warnings]
+    return '\n'.join(lines) + '\n'
