@@ -8,7 +8,7 @@ set(GENMROS_VERSION "0.1.0")
 set(GENMROS_SUPPORT_HEADER "mros_message_support.h")
 
 # The files genmros export writes for one firmware's types.
-set(GENMROS_FIRMWARE_AGGREGATES "message_headers.h;message_class_specialization.h;msg_max_size.h;mros_v1_delivery.h")
+set(GENMROS_FIRMWARE_AGGREGATES "message_headers.h;message_class_specialization.h;msg_max_size.h;mros_v1_fit_check.h;mros_v1_delivery.h")
 
 # A service <Srv> gives <Srv>.h and <Srv><half>.h for each of these.
 set(GENMROS_SERVICE_HALVES "Request;Response")

@@ -15,8 +15,8 @@ import re
 
 from colcon_mros.errors import GenmrosError
 from colcon_mros.generator.library_needs import (PEER_NAME_MAX, POOL_KINDS, REPLY_BUFFER,
-                                                 REQUEST_BUFFER, TABLES, TOPIC_NAME_MAX,
-                                                 TYPENAME_MAX)
+                                                 REQUEST_BUFFER, SHORTEST_NAMES, TABLES,
+                                                 TOPIC_NAME_MAX, TYPENAME_MAX)
 
 _DEFINE = re.compile(r'^\s*#\s*define\s+([A-Za-z_]\w*)\s+(.*?)\s*(?://.*|/\*.*)?$')
 _NUMBER = re.compile(r'^\(?\s*(\d+)[uUlL]*\s*\)?$')
@@ -67,20 +67,25 @@ def read_settings(paths):
 
 
 class Misfit:
-    """A setting too small for a type: the build's one line."""
+    """A setting too small for a type: the build's one line. A connection
+    header's needed value counts with the longest names; certain, what it
+    needs even with the shortest."""
 
-    def __init__(self, type_name, what, setting, needed):
+    def __init__(self, type_name, what, setting, needed, certain=None):
         self.type_name = type_name
         self.what = what
         self.setting = setting
         self.needed = needed
+        self.certain = certain
 
     def line(self):
         """FILE:LINE of the setting, then the type, what needs it, the value
         it needs and the value it has."""
-        return ('%s: %s: %s needs %s >= %d (it is %d)'
+        shortest = ('' if self.certain is None
+                    else '; even with the shortest topic and caller id it needs %d' % self.certain)
+        return ('%s: %s: %s needs %s >= %d (it is %d%s)'
                 % (self.setting.where(), self.type_name, self.what, self.setting.name,
-                   self.needed, self.setting.value))
+                   self.needed, self.setting.value, shortest))
 
 
 def _required(settings, name):
@@ -101,17 +106,29 @@ def largest_pool(settings, kind):
 
 
 class Requirement:
-    """What one type needs of one setting: needed is None where it has no
-    largest size (a frame in heap storage)."""
+    """What one type needs of one setting: needed bytes for certain (None
+    where there is no largest size: a frame in heap storage); a connection
+    header also names_free, its bytes besides the names (topic and caller
+    id), and assumed, its bytes with the longest names counted with."""
 
-    def __init__(self, what, setting, needed):
+    def __init__(self, what, setting, needed, names_free=None, assumed=None):
         self.what = what
         self.setting = setting
         self.needed = needed
+        self.names_free = names_free
+        self.assumed = assumed
 
     @property
     def fits(self):
         return self.needed is not None and self.setting.value >= self.needed
+
+    @property
+    def names_budget(self):
+        """For a header that fits only with short names: the bytes the topic
+        and the peer's caller id may take together; else None."""
+        if self.assumed is None or not self.fits or self.setting.value >= self.assumed:
+            return None
+        return self.setting.value - self.names_free
 
 
 class Fit:
@@ -126,12 +143,21 @@ class Fit:
         self.reply_buffer = _required(settings, REPLY_BUFFER)
         self.typename_max = _required(settings, TYPENAME_MAX)
         self.pools = [(kind.use, largest_pool(settings, kind)) for kind in POOL_KINDS]
+        self.longest_names = self.topic_name_max.value + PEER_NAME_MAX
         self.misfits = []
         self.warnings = []
         for needed in needs.types:
             requirements = self.requirements(needed)
-            self.misfits += [Misfit(needed.full_name, r.what, r.setting, r.needed)
+            self.misfits += [Misfit(needed.full_name, r.what, r.setting, r.assumed, r.needed)
+                             if r.assumed is not None else
+                             Misfit(needed.full_name, r.what, r.setting, r.needed)
                              for r in requirements if r.needed is not None and not r.fits]
+            self.warnings += [
+                '%s: %s needs %s >= %d; %s sets %d, which holds it only while the topic and the '
+                "peer's caller id take at most %d bytes together"
+                % (needed.full_name, r.what, r.setting.name, r.assumed, r.setting.where(),
+                   r.setting.value, r.names_budget)
+                for r in requirements if r.names_budget is not None]
             if needed.pool_block is None:
                 self.warnings.append(
                     '%s: no largest frame (%s has no bound): a frame may be larger than the '
@@ -142,13 +168,17 @@ class Fit:
 
     def requirements(self, needed):
         """The Requirements of one TypeNeeds, one per setting it depends on."""
-        request, reply = needed.header_buffers(self.topic_name_max.value)
-        subscriber = ("a ROS subscriber's connection header (definition text %d bytes, topic up "
-                      'to %d, caller id up to %d, and the NUL)'
-                      % (needed.text_bytes, self.topic_name_max.value, PEER_NAME_MAX))
-        requirements = [
-            Requirement(subscriber, self.request_buffer, request),
-            Requirement("a ROS publisher's connection header", self.reply_buffer, reply),
+        requirements = []
+        for what, setting, free in (
+                ("a ROS subscriber's connection header (definition text %d bytes, a topic of up "
+                 'to %d and a caller id of up to %d, and the NUL)'
+                 % (needed.text_bytes, self.topic_name_max.value, PEER_NAME_MAX),
+                 self.request_buffer, needed.subscriber_header),
+                ("a ROS publisher's connection header", self.reply_buffer,
+                 needed.publisher_header)):
+            requirements.append(Requirement(what, setting, free + SHORTEST_NAMES, free,
+                                            free + self.longest_names))
+        requirements += [
             Requirement('its name with its NUL', self.typename_max, needed.type_name_size),
             Requirement('its name with its NUL', self.topic_name_max, needed.type_name_size),
         ]

@@ -9,12 +9,15 @@ from what genmros knows of the type:
 
 - the connection header a ROS node sends for it, exact in the type's fields
   (the full definition text, as roscpp and rospy send it whatever the
-  firmware's headers carry; the type name; the MD5 sum), with the topic at
-  most ``MROS_TOPIC_NAME_MAXLEN`` bytes and the peer's caller id at most
-  :data:`PEER_NAME_MAX`. A subscriber's header (rospy's, the longer: 115
-  bytes of field names, lengths, MD5 sum and ``tcp_nodelay``) is read into
-  ``MROS_PACKET_MAXSIZE_REQ_TCPROS`` bytes with a NUL after it; a
-  publisher's reply (112 bytes besides) into ``MROS_PACKET_MAXSIZE_RES_TCPROS``;
+  firmware's headers carry; the type name; the MD5 sum), plus the topic and
+  the peer's caller id: the *names*, which the firmware's code and the ROS
+  side choose. With the shortest names (``/a``) a header is certain to be
+  that long; with a topic of ``MROS_TOPIC_NAME_MAXLEN`` bytes and a caller
+  id of :data:`PEER_NAME_MAX` it can be that long. A subscriber's header
+  (rospy's, the longer: 115 bytes of field names, lengths, MD5 sum and
+  ``tcp_nodelay``) is read into ``MROS_PACKET_MAXSIZE_REQ_TCPROS`` bytes with
+  a NUL after it; a publisher's reply (112 bytes besides) into
+  ``MROS_PACKET_MAXSIZE_RES_TCPROS``;
 - the largest frame, exact where the type has a maximum, with the library's
   4-byte frame header, against the largest memory pool (publishing: the
   inner publisher pools; receiving from ROS nodes: the outer ones);
@@ -33,6 +36,8 @@ PUBLISHER_HEADER_FIXED = 112  # roscpp's and rospy's reply to a subscriber
 # The longest caller id of a ROS peer this check allows for: a node name in a
 # namespace with rospy's anonymous suffix (_<pid>_<milliseconds>) fits.
 PEER_NAME_MAX = 64
+# The shortest topic and caller id: '/a' each.
+SHORTEST_NAMES = 4
 # MROS_TOPIC_RAWDATA_HEADER_SIZE: the library's header before each frame in a pool block.
 FRAME_HEADER_SIZE = 4
 
@@ -77,18 +82,18 @@ class TypeNeeds:
         self.full_name = message.full_name
         self.type_name_size = len(message.full_name.encode('utf-8')) + 1  # with its NUL
         self.text_bytes = len(message.full_definition.encode('utf-8'))
-        # Without the topic, whose bound is the library's MROS_TOPIC_NAME_MAXLEN.
-        type_fields = self.text_bytes + len(message.full_name.encode('utf-8')) + PEER_NAME_MAX
+        # The headers without the names (topic and caller id).
+        type_fields = self.text_bytes + len(message.full_name.encode('utf-8'))
         self.subscriber_header = SUBSCRIBER_HEADER_FIXED + type_fields + 1  # the NUL after it
         self.publisher_header = PUBLISHER_HEADER_FIXED + type_fields
         self.max_frame = message.max_size
         self.pool_block = None if message.max_size is None else message.max_size + FRAME_HEADER_SIZE
         self.unbounded_reason = message.unbounded_reason
 
-    def header_buffers(self, topic_name_max):
-        """(request, reply) bytes the header buffers need with topics of up
-        to topic_name_max bytes."""
-        return self.subscriber_header + topic_name_max, self.publisher_header + topic_name_max
+    def header_buffers(self, names):
+        """(request, reply) bytes the header buffers need with a topic and a
+        peer's caller id of names bytes together."""
+        return self.subscriber_header + names, self.publisher_header + names
 
 
 class LibraryNeeds:
@@ -104,4 +109,5 @@ class LibraryNeeds:
         self.bounded = [t for t in self.types if t.pool_block is not None]
         self.unbounded = [t for t in self.types if t.pool_block is None]
         self.peer_name_max = PEER_NAME_MAX
+        self.shortest_names = SHORTEST_NAMES
         self.pool_kinds = POOL_KINDS

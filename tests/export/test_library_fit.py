@@ -50,7 +50,7 @@ def test_settings_are_read_as_the_preprocessor_reads_numbers(tmp_path):
     second.write_text('#define A 4096\n#define H 3\n')
     settings = read_settings([str(first), str(second)])
     assert {name: (s.value, s.line) for name, s in settings.items()} == {
-        'A': (512, 1), 'B': (50, 2), 'C': (1024, 3), 'D': (512, 4), 'G': (7, 7), 'H': (3, 1)}
+        'A': (512, 1), 'B': (50, 2), 'C': (1024, 3), 'D': (512, 4), 'G': (7, 7), 'H': (3, 2)}
     assert settings['A'].where() == '%s:1' % first
 
 
@@ -60,18 +60,24 @@ def test_a_long_definition_text_misfits_the_samples_settings_with_one_line_each(
     fit = Fit(_needs('sensor_msgs/JointState', 'std_msgs/String'), settings)
     text = len(_genpy_full_text('sensor_msgs/JointState').encode())
     topic = settings['MROS_TOPIC_NAME_MAXLEN'].value
-    fields = topic + len('sensor_msgs/JointState') + PEER_NAME_MAX + text
+    # The header's own fields, then the topic and the peer's caller id:
+    # the longest the settings allow, and the shortest there are ('/a').
+    fields = text + len('sensor_msgs/JointState')
+    longest, shortest = topic + PEER_NAME_MAX, 2 + 2
     request = settings['MROS_PACKET_MAXSIZE_REQ_TCPROS']
     reply = settings['MROS_PACKET_MAXSIZE_RES_TCPROS']
     assert [misfit.line() for misfit in fit.misfits] == [
         "%s: sensor_msgs/JointState: a ROS subscriber's connection header (definition text %d "
-        'bytes, topic up to %d, caller id up to %d, and the NUL) needs '
-        'MROS_PACKET_MAXSIZE_REQ_TCPROS >= %d (it is %d)'
-        % (request.where(), text, topic, PEER_NAME_MAX, SUBSCRIBER_HEADER_FIXED + fields + 1,
-           request.value),
+        'bytes, a topic of up to %d and a caller id of up to %d, and the NUL) needs '
+        'MROS_PACKET_MAXSIZE_REQ_TCPROS >= %d (it is %d; even with the shortest topic and caller '
+        'id it needs %d)'
+        % (request.where(), text, topic, PEER_NAME_MAX, SUBSCRIBER_HEADER_FIXED + fields + longest
+           + 1, request.value, SUBSCRIBER_HEADER_FIXED + fields + shortest + 1),
         "%s: sensor_msgs/JointState: a ROS publisher's connection header needs "
-        'MROS_PACKET_MAXSIZE_RES_TCPROS >= %d (it is %d)'
-        % (reply.where(), PUBLISHER_HEADER_FIXED + fields, reply.value)]
+        'MROS_PACKET_MAXSIZE_RES_TCPROS >= %d (it is %d; even with the shortest topic and caller '
+        'id it needs %d)'
+        % (reply.where(), PUBLISHER_HEADER_FIXED + fields + longest, reply.value,
+           PUBLISHER_HEADER_FIXED + fields + shortest)]
     # Heap storage gives neither type a largest frame: a warning each, not an error.
     assert [warning.split(':')[0] for warning in fit.warnings] == [
         'sensor_msgs/JointState', 'std_msgs/String']

@@ -28,7 +28,8 @@ def _build_and_run(tmp_path, include_dirs, source_text, extra_sources=()):
     return subprocess.run([program], capture_output=True, text=True, check=True).stdout
 
 
-AGGREGATES = ['message_class_specialization.h', 'message_headers.h', 'msg_max_size.h', 'mros_v1_delivery.h']
+AGGREGATES = ['message_class_specialization.h', 'message_headers.h', 'msg_max_size.h', 'mros_v1_delivery.h',
+              'mros_v1_fit_check.h']
 
 
 def test_export_of_one_type_brings_its_whole_closure(tmp_path):

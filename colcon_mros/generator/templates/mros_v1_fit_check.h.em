@@ -8,11 +8,11 @@
 // The library reads a ROS node's connection header into a buffer of fixed
 // size, copies each type name into a field of fixed size and takes each
 // message from memory pools of fixed sizes, without a bound; a firmware the
-// library would overrun on the board does not build. A connection header is
-// counted with topics of up to MROS_TOPIC_NAME_MAXLEN bytes and the peer's
-// caller id of up to @(needs.peer_name_max). genmros mros-v1-pc (and genmros export
-// --mros-v1-settings) says the same with the file, line and value of each
-// setting. Define MROS_SKIP_FIT_CHECK to build anyway.
+// library is certain to overrun on the board does not build. A connection
+// header is counted with the shortest topic and caller id ('/a'): genmros
+// mros-v1-pc and genmros mros-v1-fit also say which headers fit only while
+// the names are short, with the file, line and value of each setting.
+// Define MROS_SKIP_FIT_CHECK to build anyway.
 #ifndef MROS_V1_FIT_CHECK_H
 #define MROS_V1_FIT_CHECK_H
 
@@ -32,11 +32,11 @@
 @[for t in needs.types]@
 
 // @(t.full_name): definition text @(t.text_bytes) bytes, name @(t.type_name_size) with its NUL.
-#if MROS_PACKET_MAXSIZE_REQ_TCPROS < @(t.subscriber_header) + MROS_TOPIC_NAME_MAXLEN
-#error "@(t.full_name): a ROS subscriber's connection header needs MROS_PACKET_MAXSIZE_REQ_TCPROS >= @(t.subscriber_header) + MROS_TOPIC_NAME_MAXLEN (mros_packet_config.h)"
+#if MROS_PACKET_MAXSIZE_REQ_TCPROS < @(t.subscriber_header) + @(needs.shortest_names)
+#error "@(t.full_name): a ROS subscriber's connection header needs MROS_PACKET_MAXSIZE_REQ_TCPROS >= @(t.subscriber_header) + the topic and caller id's bytes (mros_packet_config.h)"
 #endif
-#if MROS_PACKET_MAXSIZE_RES_TCPROS < @(t.publisher_header) + MROS_TOPIC_NAME_MAXLEN
-#error "@(t.full_name): a ROS publisher's connection header needs MROS_PACKET_MAXSIZE_RES_TCPROS >= @(t.publisher_header) + MROS_TOPIC_NAME_MAXLEN (mros_packet_config.h)"
+#if MROS_PACKET_MAXSIZE_RES_TCPROS < @(t.publisher_header) + @(needs.shortest_names)
+#error "@(t.full_name): a ROS publisher's connection header needs MROS_PACKET_MAXSIZE_RES_TCPROS >= @(t.publisher_header) + the topic and caller id's bytes (mros_packet_config.h)"
 #endif
 #if MROS_TOPIC_TYPENAME_MAXLEN < @(t.type_name_size) || MROS_TOPIC_NAME_MAXLEN < @(t.type_name_size)
 #error "@(t.full_name): its name needs MROS_TOPIC_TYPENAME_MAXLEN and MROS_TOPIC_NAME_MAXLEN >= @(t.type_name_size) (mros_usr_config.h)"

@@ -22,11 +22,11 @@
 
 // What the mROS v1 library's settings need for these types, to size a
 // configuration from (mros_v1_fit_check.h checks them where ros.cpp
-// compiles): the connection header buffers, with topics of up to
-// topic_name_max bytes and peers' caller ids of up to @(needs.peer_name_max); the type
-// name fields; a memory pool block for the largest frame.
-#define MROS_NEEDED_TCPROS_REQUEST_SIZE(topic_name_max) (@(needs.subscriber_header) + (topic_name_max))
-#define MROS_NEEDED_TCPROS_REPLY_SIZE(topic_name_max) (@(needs.publisher_header) + (topic_name_max))
+// compiles): the connection header buffers, with a topic and a ROS peer's
+// caller id of `names` bytes together; the type name fields; a memory pool
+// block for the largest frame.
+#define MROS_NEEDED_TCPROS_REQUEST_SIZE(names) (@(needs.subscriber_header) + (names))
+#define MROS_NEEDED_TCPROS_REPLY_SIZE(names) (@(needs.publisher_header) + (names))
 #define MROS_NEEDED_TYPENAME_SIZE @(needs.type_name_size)
 @[if needs.unbounded]@
 // No MROS_NEEDED_POOL_BLOCK_SIZE: a type has no largest frame (heap storage).

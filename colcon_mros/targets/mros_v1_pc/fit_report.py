@@ -47,26 +47,31 @@ def _fit(options):
 def _cell(requirement):
     if requirement.needed is None:
         return 'unknown'
-    return 'ok' if requirement.fits else 'needs %d' % requirement.needed
+    if not requirement.fits:
+        return 'needs %d' % requirement.needed
+    if requirement.names_budget is not None:
+        return 'names <= %d' % requirement.names_budget
+    return 'ok'
+
 
 
 def report(options):
     """The report's text."""
     fit, settings_files = _fit(options)
     lines = ['Settings: %s' % ', '.join(settings_files),
-             'Connection headers are counted with topics of up to %d bytes (%s) and ROS peers\' '
-             'caller ids of up to %d.' % (fit.topic_name_max.value, fit.topic_name_max.name,
-                                          PEER_NAME_MAX), '']
+             "Connection headers: their bytes besides the topic and the ROS peer's caller id. "
+             "'names <= N': fits while the two take at most N bytes together (with a topic of "
+             'up to %d, %s, and a caller id of up to %d it does not).'
+             % (fit.topic_name_max.value, fit.topic_name_max.name, PEER_NAME_MAX), '']
     columns = None
     rows = []
     for needed in fit.needs.types:
         requirements = fit.requirements(needed)
         if columns is None:
             columns = ['%s %d' % (r.setting.name, r.setting.value) for r in requirements]
-        request_size, reply_size = needed.header_buffers(fit.topic_name_max.value)
         frame = 'no maximum' if needed.max_frame is None else str(needed.max_frame)
-        rows.append([needed.full_name, str(needed.text_bytes), str(request_size),
-                     str(reply_size), frame] + [_cell(r) for r in requirements])
+        rows.append([needed.full_name, str(needed.text_bytes), str(needed.subscriber_header),
+                     str(needed.publisher_header), frame] + [_cell(r) for r in requirements])
     header = ['type', 'definition text', 'subscriber header', 'publisher header',
               'largest frame'] + (columns or [])
     lines.append('| %s |' % ' | '.join(header))

@@ -15,9 +15,11 @@ P6_0 and P6_1 pick the group.
 The library reads a peer's TCPROS connection header into a 512-byte buffer
 without a bound, and rospy and roscpp send the type's whole definition text
 in theirs, so with real ROS nodes only short types work. The byte-exact
-tests therefore use raw TCPROS peers (no message_definition); rospy's own
-round trip runs on a copy of the library with the two buffer sizes raised,
-the README's workaround; and the crash with the unchanged sizes is pinned.
+tests therefore use raw TCPROS peers (no message_definition) and build
+without the fit check; with it, the build is refused with one line per
+setting and the value it needs; rospy's own round trip runs on a copy of
+the library with those values; and the crash with the unchanged sizes is
+pinned, the fit check overridden.
 """
 
 import json
@@ -51,8 +53,6 @@ BOUNDS = '* max_size:48 max_count:6\n'
 # them (NestedTypes' definition text alone is 3.7 KB).
 PACKET_CONFIG = os.path.join('mros-lib', 'mros-src', 'packet', 'cimpl', 'version', 'kinetic',
                              'mros_packet_config.h')
-HEADER_BUFFERS = re.compile(r'(#define MROS_PACKET_MAXSIZE_(?:REQ|RES)_TCPROS\s+)512\b')
-RAISED_HEADER_BUFFER = 8192
 # The library writes its reply header into the buffer the request came in,
 # sized to the request (the AnyMsg limit, see test_mros_v1_pc.py): a raw
 # subscriber's header must be as long as the reply. rospy's and roscpp's
@@ -84,8 +84,14 @@ def genpy_samples(ros_workspace):
             for name, (datatype, md5sum, samples) in json.loads(output).items()}
 
 
-def build_relay(mros_root, build_root, storage='heap', target='arm', sanitize=False):
+def build_relay(mros_root, build_root, storage='heap', target='arm', sanitize=False,
+                fit_check=True):
+    """The relay app of every type; fit_check=False builds it for the
+    unchanged library, whose settings the fit check finds too small for ROS
+    nodes' connection headers: for raw peers, which send no definition text,
+    and to show the overrun the check prevents."""
     flags = ['--storage', storage] + (['--sanitize'] if sanitize else [])
+    flags += [] if fit_check else ['--no-fit-check']
     if storage == 'bounded':
         options = build_root / 'bounds.options'
         options.write_text(BOUNDS)
@@ -101,7 +107,7 @@ def build_relay(mros_root, build_root, storage='heap', target='arm', sanitize=Fa
 @pytest.fixture(scope='module', params=['heap', 'bounded'])
 def relay_program(request, tmp_path_factory):
     return build_relay(MROS_V1_ROOT, tmp_path_factory.mktemp('relay_' + request.param),
-                       request.param)
+                       request.param, fit_check=False)
 
 
 def start_relay(graph, program, directory, group):
@@ -160,35 +166,85 @@ def test_every_type_through_the_board_comes_back_byte_equal_to_genpy(
         assert board.process.alive(), board.process.output()
 
 
+MISFIT = re.compile(r'^genmros: error: (.+):(\d+): (\S+): .* needs (\w+) >= (\d+) \(it is (\d+)')
+
+
+def _misfits(output):
+    """(path, line, type, setting, needed, value) of each misfit line."""
+    return [(m.group(1), int(m.group(2)), m.group(3), m.group(4), int(m.group(5)),
+             int(m.group(6))) for m in map(MISFIT.match, output.splitlines()) if m]
+
+
 @pytest.fixture(scope='module')
-def raised_buffers_root(tmp_path_factory):
+def refused_relay(tmp_path_factory):
+    """What building the relay for the unchanged library prints."""
+    with pytest.raises(RuntimeError) as refused:
+        build_relay(MROS_V1_ROOT, tmp_path_factory.mktemp('relay_refused'))
+    return str(refused.value)
+
+
+def test_the_relay_is_refused_with_the_samples_settings_one_line_per_misfit(
+        refused_relay, ros_workspace):
+    # The oracle: rospy's own definition text of each type; a header is
+    # refused where it is too long even with the shortest topic and caller
+    # id ('/a'), 115 (subscriber) or 112 (publisher) bytes besides.
+    texts = json.loads(subprocess.run(
+        ['/usr/bin/python3', '-c', 'import json, importlib; print(json.dumps({t: len(getattr('
+         'importlib.import_module(t.split("/")[0] + ".msg"), t.split("/")[1])._full_text.encode())'
+         ' for t in %r}))' % TYPES], capture_output=True, text=True, check=True,
+        env=ros_workspace.environment()).stdout)
+    expected = set()
+    for type_name, text in texts.items():
+        if 115 + text + len(type_name) + 4 + 1 > 512:
+            expected.add((type_name, 'MROS_PACKET_MAXSIZE_REQ_TCPROS'))
+        if 112 + text + len(type_name) + 4 > 512:
+            expected.add((type_name, 'MROS_PACKET_MAXSIZE_RES_TCPROS'))
+    misfits = _misfits(refused_relay)
+    assert expected and {(m[2], m[3]) for m in misfits} == expected, refused_relay
+    assert len(misfits) == len(expected)
+    packet_config = os.path.join(MROS_V1_ROOT, PACKET_CONFIG)
+    for path, line, _, setting, needed, value in misfits:
+        with open(path) as stream:
+            assert re.match(r'#define %s\s+%d\b' % (setting, value), stream.readlines()[line - 1])
+        assert path == packet_config and needed > value == 512
+    # Refused before make ran.
+    assert 'the mROS v1 library of' not in refused_relay
+
+
+@pytest.fixture(scope='module')
+def fitted_library_root(refused_relay, tmp_path_factory):
     """A copy of the library (mros-lib, and custom_pubsub's mros_config and
-    app.h, which the test apps take) whose connection-header buffers are
-    raised as the README says."""
-    root = tmp_path_factory.mktemp('mros_v1_raised')
+    app.h, which the test apps take) with the values the refusal printed."""
+    root = tmp_path_factory.mktemp('mros_v1_fitted')
     shutil.copytree(os.path.join(MROS_V1_ROOT, 'mros-lib'), str(root / 'mros-lib'))
     sample = os.path.join('mros_ws', 'custom_pubsub')
     shutil.copytree(os.path.join(MROS_V1_ROOT, sample, 'mros_config'),
                     str(root / sample / 'mros_config'))
     shutil.copy(os.path.join(MROS_V1_ROOT, sample, 'app.h'), str(root / sample / 'app.h'))
-    path = root / PACKET_CONFIG
-    text, count = HEADER_BUFFERS.subn(r'\g<1>%d' % RAISED_HEADER_BUFFER, path.read_text())
-    assert count == 2, 'the header buffer sizes are not where the README says'
-    path.write_text(text)
+    values = {}
+    for path, _, _, setting, needed, _ in _misfits(refused_relay):
+        key = (os.path.relpath(path, MROS_V1_ROOT), setting)
+        values[key] = max(values.get(key, 0), needed)
+    for (relative, setting), needed in values.items():
+        path = root / relative
+        text, count = re.subn(r'(#define %s\s+)\d+' % setting, r'\g<1>%d' % needed,
+                              path.read_text())
+        assert count == 1
+        path.write_text(text)
     return str(root)
 
 
 @pytest.fixture(scope='module')
-def raised_buffers_relay(raised_buffers_root, tmp_path_factory):
-    return build_relay(raised_buffers_root, tmp_path_factory.mktemp('relay_raised'))
+def fitted_relay(fitted_library_root, tmp_path_factory):
+    return build_relay(fitted_library_root, tmp_path_factory.mktemp('relay_fitted'))
 
 
 @pytest.mark.parametrize('group', range(len(GROUPS)), ids=['-'.join(g) for g in GROUPS])
-def test_with_raised_header_buffers_rospy_round_trips_every_type(
-        ros_workspace, raised_buffers_relay, group, tmp_path):
+def test_with_the_printed_settings_rospy_round_trips_every_type(
+        ros_workspace, fitted_relay, group, tmp_path):
     names = GROUPS[group]
     with RosGraph(sourced_environment(ros_workspace.setup_bash)) as graph:
-        board = start_relay(graph, raised_buffers_relay, str(tmp_path), group)
+        board = start_relay(graph, fitted_relay, str(tmp_path), group)
         check = graph.start('roundtrip_check', ros_workspace.rospy(
             'roundtrip_check.py', '/src', '/back', '--types', ','.join(names),
             '--timeout', str(DELIVERY_TIMEOUT)), {'ROS_IP': PEER_IP})
@@ -209,7 +265,8 @@ def test_limit_sanitized_a_subscriber_header_over_512_bytes_is_an_overflow_in_th
     # What the README shows: the same rospy subscriber as below, on the
     # sanitized native build; AddressSanitizer stops the app at the write
     # past the library's 512-byte header buffer.
-    program = build_relay(MROS_V1_ROOT, tmp_path / 'relay', target='native', sanitize=True)
+    program = build_relay(MROS_V1_ROOT, tmp_path / 'relay', target='native', sanitize=True,
+                          fit_check=False)
     with RosGraph(sourced_environment(ros_workspace.setup_bash)) as graph:
         board = Board(graph, program, str(tmp_path), runner=[], inputs={'P6_0': 0, 'P6_1': 1})
         board.process.wait_for('relay ready', timeout=DELIVERY_TIMEOUT)

@@ -1,0 +1,124 @@
+"""The fit check on the real mROS v1 library's settings: genmros mros-v1-pc
+refuses before it builds, one line per setting with the value it needs;
+mros_v1_fit_check.h refuses in ros.cpp's compile where no genmros check
+ran; genmros mros-v1-fit reports; msg_max_size.h carries the needs.
+The expected values come from the settings files and rospy's own
+definition texts, not from genmros."""
+
+import os
+import re
+import subprocess
+
+import pytest
+
+from colcon_mros.targets.mros_v1_pc.build import TARGET_DIR, app_variables
+from colcon_mros.targets.mros_v1_pc.ros_graph import PYTHON
+from conftest import run_genmros
+from mros_v1_checkout import MROS_V1_ROOT
+
+pytestmark = pytest.mark.needs_mros_v1
+
+CUSTOM_PUBSUB = os.path.join(MROS_V1_ROOT, 'mros_ws', 'custom_pubsub')
+USR_CONFIG = os.path.join(CUSTOM_PUBSUB, 'mros_config', 'mros_usr_config.h')
+PACKET_CONFIG = os.path.join(MROS_V1_ROOT, 'mros-lib', 'mros-src', 'packet', 'cimpl', 'version',
+                             'kinetic', 'mros_packet_config.h')
+
+
+def _define(path, name):
+    """(value, line) of a #define in a settings header, read here by hand."""
+    with open(path) as stream:
+        for number, line in enumerate(stream, 1):
+            match = re.match(r'\s*#define\s+%s\s+(\d+)' % name, line)
+            if match:
+                return int(match.group(1)), number
+    raise AssertionError('%s defines no %s' % (path, name))
+
+
+def _full_text_size(type_name):
+    package, name = type_name.split('/')
+    return int(subprocess.run([PYTHON, '-c', 'from %s.msg import %s as T; '
+                               'print(len(T._full_text.encode()))' % (package, name)],
+                              capture_output=True, text=True, check=True).stdout)
+
+
+def test_a_frame_over_the_largest_pool_is_refused_before_the_build(tmp_path):
+    options = tmp_path / 'bounds.options'
+    options.write_text('std_msgs/String.data max_size:2000\n')
+    result = run_genmros('mros-v1-pc', CUSTOM_PUBSUB, '-o', str(tmp_path / 'build'), '--type',
+                         'std_msgs/String', '--storage', 'bounded', '--options', str(options),
+                         check=False)
+    assert result.returncode == 1
+    frame = 4 + 2000  # the string's length, then its bytes
+    lines = []
+    for pool, use in (('ROS_INNER_TOPIC_PUBLISHER_MEMPOOL3_SIZE', 'publishing'),
+                      ('ROS_OUTER_TOPIC_PUBLISHER_MEMPOOL3_SIZE', 'receiving from ROS nodes')):
+        value, line = _define(USR_CONFIG, pool)
+        lines.append('genmros: error: %s:%d: std_msgs/String: a frame of up to %d bytes, %s, '
+                     'needs %s >= %d (it is %d)' % (USR_CONFIG, line, frame, use, pool, frame + 4,
+                                                    value))
+    assert result.stderr.splitlines() == lines
+    assert not os.path.exists(str(tmp_path / 'build' / 'obj'))
+
+
+def test_the_sample_fits_and_is_told_how_short_its_names_must_be():
+    # custom_pubsub's own type fits the samples' 512-byte header buffers only
+    # while its topic and the ROS peer's name are short: a warning, not an error.
+    report = run_genmros('mros-v1-fit', CUSTOM_PUBSUB).stdout
+    text = _full_text_size_of_user_type()
+    request, request_line = _define(PACKET_CONFIG, 'MROS_PACKET_MAXSIZE_REQ_TCPROS')
+    budget = request - (115 + text + len('custom_pubsub/UserTypeTest') + 1)
+    row = [line for line in report.splitlines() if line.startswith('| custom_pubsub/UserTypeTest')]
+    assert len(row) == 1 and '| names <= %d |' % budget in row[0], report
+    assert 'Every type fits.' in report
+    assert ('warning: custom_pubsub/UserTypeTest: a ROS subscriber\'s connection header '
+            '(definition text %d bytes' % text) in report
+    assert ('%s:%d sets %d, which holds it only while the topic and the peer\'s caller id take '
+            'at most %d bytes together' % (PACKET_CONFIG, request_line, request, budget)) in report
+
+
+def _full_text_size_of_user_type():
+    """UserTypeTest's full text as genmsg makes it (what rospy sends) from
+    the sample's own .msg."""
+    msg_dir = os.path.join(MROS_V1_ROOT, 'ros_catkin_ws', 'src', 'custom_pubsub', 'msg')
+    code = ('from genmsg import msg_loader, gentools\n'
+            'context = msg_loader.MsgContext.create_default()\n'
+            'search = {"custom_pubsub": [%r], "std_msgs": ["/usr/share/std_msgs/msg"]}\n'
+            'spec = msg_loader.load_msg_by_type(context, "custom_pubsub/UserTypeTest", search)\n'
+            'msg_loader.load_depends(context, spec, search)\n'
+            'print(len(gentools.compute_full_text(context, spec).encode()))\n' % msg_dir)
+    return int(subprocess.run([PYTHON, '-c', code], capture_output=True, text=True,
+                              check=True).stdout)
+
+
+def test_ros_cpp_refuses_to_compile_where_no_genmros_check_ran(tmp_path):
+    # Headers exported without the settings (as a board's make build that
+    # never gave genmros the settings would have them); ros.cpp's includes
+    # put the library's settings on the path, and the check in the
+    # aggregate it includes stops the compile.
+    include = str(tmp_path / 'include')
+    run_genmros('export', '--type', 'sensor_msgs/JointState', '-o', include, '--underlay', '/usr')
+    source = tmp_path / 'ros_like.cpp'
+    source.write_text('#include "message_headers.h"\nint main() { return 0; }\n')
+    # ros.cpp's include path in the PC target's build, as mros_v1_pc.mk has it.
+    library = os.path.join(MROS_V1_ROOT, 'mros-lib')
+    library_paths = app_variables(os.path.join(library, 'Makefile.m'),
+                                  ['MROS_DIR=' + library])['MROS_INCLUDE_PATHS'].split()
+    command = (['g++', '-std=gnu++98', '-fsyntax-only', '-I', include,
+                '-I', os.path.join(TARGET_DIR, 'config'),
+                '-I', os.path.join(CUSTOM_PUBSUB, 'mros_config')] + library_paths
+               + ['-I', os.path.join(TARGET_DIR, 'asp'), '-I', os.path.join(TARGET_DIR, 'lwip'),
+                  '-I', os.path.join(TARGET_DIR, 'mbed'), str(source)])
+    refused = subprocess.run(command, capture_output=True, text=True)
+    assert refused.returncode != 0
+    errors = re.findall(r'error: #error "([^"]*)"', refused.stderr)
+    assert errors == [
+        "sensor_msgs/JointState: a ROS subscriber's connection header needs "
+        "MROS_PACKET_MAXSIZE_REQ_TCPROS >= %d + the topic and caller id's bytes "
+        '(mros_packet_config.h)' % (115 + _full_text_size('sensor_msgs/JointState')
+                                    + len('sensor_msgs/JointState') + 1),
+        "sensor_msgs/JointState: a ROS publisher's connection header needs "
+        "MROS_PACKET_MAXSIZE_RES_TCPROS >= %d + the topic and caller id's bytes "
+        '(mros_packet_config.h)' % (112 + _full_text_size('sensor_msgs/JointState')
+                                    + len('sensor_msgs/JointState'))], refused.stderr
+    skipped = subprocess.run(command + ['-DMROS_SKIP_FIT_CHECK'], capture_output=True, text=True)
+    assert skipped.returncode == 0, skipped.stderr
