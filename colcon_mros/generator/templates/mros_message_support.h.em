@@ -148,6 +148,12 @@ template <size_t N> class bounded_string {
     return true;
   }
   bool assign(const std::string& text) { return assign(text.data(), text.size()); }
+  // The decoder's assign: the same refusal, without the hook.
+  bool assign_from_wire(const char* text, size_type count) {
+    if (count > N) return false;
+    store(text, count);
+    return true;
+  }
 
   size_type size() const { return size_; }
   size_type length() const { return size_; }
@@ -557,7 +563,7 @@ inline bool assignText(std::string& value, const char* text, uint32_t size) {
   return true;
 }
 template <size_t N> bool assignText(bounded_string<N>& value, const char* text, uint32_t size) {
-  return size <= N && value.assign(text, size);  // over N: no hook, see above
+  return value.assign_from_wire(text, size);
 }
 
 // string: uint32 byte count, then the bytes, no terminator.
