@@ -47,8 +47,8 @@ def _fit(options):
 def _cell(requirement):
     if requirement.needed is None:
         return 'unknown'
-    if not requirement.fits:
-        return 'needs %d' % requirement.needed
+    if not requirement.fits:  # the value the error line asks for
+        return 'needs %d' % (requirement.assumed or requirement.needed)
     if requirement.names_budget is not None:
         return 'names <= %d' % requirement.names_budget
     return 'ok'
