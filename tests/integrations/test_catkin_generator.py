@@ -164,7 +164,7 @@ def test_export_dir_collects_every_package(build):
     # Every type of the workspace and every type they contain, installed
     # packages' included: what genmros export writes, less the per-firmware files.
     aggregates = ('message_headers.h', 'message_class_specialization.h', 'msg_max_size.h',
-                  'mros_v1_delivery.h')
+                  'mros_v1_delivery.h', 'mros_v1_fit_check.h')
     assert exported == {path: text for path, text in headers_under(build.reference).items()
                         if path not in aggregates}
     assert 'std_msgs/Header.h' in exported

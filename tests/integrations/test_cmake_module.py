@@ -114,8 +114,9 @@ def test_aggregates_hold_exactly_the_listed_types(firmware, workspace):
     headers = firmware.aggregate('message_headers.h')
     assert '#include <mros_test_base/Vector3i.h>' in headers
     assert '#include <std_msgs/ColorRGBA.h>' in headers
-    # The two types, <cstddef> and the v1 delivery header.
-    assert headers.count('#include <') == 4 and '#include <mros_v1_delivery.h>' in headers
+    # The two types, <cstddef>, the v1 delivery header and the fit check.
+    assert headers.count('#include <') == 5 and '#include <mros_v1_delivery.h>' in headers
+    assert '#include <mros_v1_fit_check.h>' in headers
 
 
 def test_generate_fails_at_configure_time_for_an_unknown_type(firmware, workspace):
@@ -152,7 +153,7 @@ def test_import_builds_the_firmware_from_a_catkin_export(firmware, catkin_export
     # The headers come from the export dir; only the aggregates are the firmware's.
     generated = os.listdir(os.path.join(firmware.build_dir, 'mros_messages', 'firmware'))
     assert sorted(generated) == ['message_class_specialization.h', 'message_headers.h',
-                                 'mros_v1_delivery.h', 'msg_max_size.h']
+                                 'mros_v1_delivery.h', 'mros_v1_fit_check.h', 'msg_max_size.h']
 
 
 def test_import_rebuilds_when_the_export_changes(firmware, catkin_export, tmp_path):
