@@ -3,7 +3,8 @@
 #
 #   mros_import_messages(TARGET t EXPORT_DIR dir [TYPES pkg/Type ...]
 #                        [STORAGE heap|bounded] [OPTIONS file ...]
-#                        [DEFINITION_TEXT full|compact])
+#                        [DEFINITION_TEXT full|compact]
+#                        [MROS_V1_SETTINGS header ... [FIT_STRICT]])
 #     Use the headers a ROS build exported (catkin with MROS_EXPORT_DIR, or
 #     colcon build --mros-export): dir/include/<pkg>/<Type>.h. Without TYPES,
 #     every type the export dir holds. A ROS build exports heap storage and
@@ -13,7 +14,8 @@
 #
 #   mros_generate_messages(TARGET t TYPES pkg/Type ... [PACKAGE_PATHS dir ...]
 #                          [STORAGE heap|bounded] [OPTIONS file ...]
-#                          [DEFINITION_TEXT full|compact])
+#                          [DEFINITION_TEXT full|compact]
+#                          [MROS_V1_SETTINGS header ... [FIT_STRICT]])
 #     Generate the headers at build time from .msg files. Each PACKAGE_PATHS
 #     entry is an installed prefix (dir/share/<pkg>/msg, as ROS installs them
 #     and as an export dir holds them) or one source tree of packages (found
@@ -30,6 +32,14 @@
 # any of them regenerates the headers. DEFINITION_TEXT compact puts each
 # type's definition text into the headers without comments and blank lines
 # (genmros export --definition-text compact): less flash, same MD5 sums.
+# MROS_V1_SETTINGS names the mROS v1 settings headers the firmware builds
+# with (the app's mros_usr_config.h, the library's mros_packet_config.h):
+# the fit check then stops the configure step and the build with one line per
+# setting too small for the types, naming its file, line and the value
+# needed (genmros export --mros-v1-settings); FIT_STRICT refuses a type whose
+# frame has no maximum too (--fit-strict). Editing a settings header checks
+# again. Without it the check still runs when the firmware compiles ros.cpp
+# (mros_v1_fit_check.h), where the library's macros are visible.
 # Installed as
 # <prefix>/share/genmros/cmake/mros_generate.cmake; find_package(genmros)
 # includes it.
@@ -111,6 +121,19 @@ function(_mros_form_args ARG_STORAGE ARG_OPTIONS ARG_DEFINITION_TEXT ARG_OUTPUT_
   set(${ARG_OUTPUT_VAR} ${arguments} PARENT_SCOPE)
 endfunction()
 
+# genmros' arguments for the fit check against the mROS v1 settings headers.
+function(_mros_fit_args ARG_SETTINGS ARG_FIT_STRICT ARG_OUTPUT_VAR)
+  set(arguments "")
+  foreach(file ${ARG_SETTINGS})
+    get_filename_component(file "${file}" ABSOLUTE)
+    list(APPEND arguments --mros-v1-settings "${file}")
+  endforeach()
+  if(ARG_FIT_STRICT)
+    list(APPEND arguments --fit-strict)
+  endif()
+  set(${ARG_OUTPUT_VAR} ${arguments} PARENT_SCOPE)
+endfunction()
+
 # Runs genmros export once at configure time, so a bad type, package or
 # options file fails the configure step with genmros' one line rather than
 # the first build, and sets ARG_OUTPUT_VAR to the inputs its run record
@@ -120,13 +143,28 @@ function(_mros_export_now ARG_FUNCTION ARG_GENMROS_ARGS ARG_OUTPUT_DIR ARG_OUTPU
   _mros_record("${ARG_OUTPUT_DIR}" record)
   execute_process(COMMAND "${GENMROS_BIN}" export ${ARG_GENMROS_ARGS} --record "${record}"
     RESULT_VARIABLE result ERROR_VARIABLE error OUTPUT_QUIET)
-  if(NOT result EQUAL 0)
-    # genmros' one error line (argparse puts its usage before it).
-    string(REGEX MATCH "[^\n]*error: [^\n]*" error_line "${error}")
-    if(NOT error_line)
-      string(STRIP "${error}" error_line)
+  # genmros' error lines, one per problem (argparse puts its usage before
+  # them), and its warnings; a CMake list splits at ';', so the lines keep
+  # theirs as a placeholder until they are elements.
+  string(REPLACE ";" "<semicolon>" protected "${error}")
+  string(REGEX MATCHALL "[^\n]*(error|warning): [^\n]*" lines "${protected}")
+  string(REPLACE "<semicolon>" "\\;" lines "${lines}")
+  foreach(line ${lines})
+    if(line MATCHES "warning: ")
+      message(WARNING "${ARG_FUNCTION}(): ${line}")
     endif()
-    message(FATAL_ERROR "${ARG_FUNCTION}(): ${error_line}")
+  endforeach()
+  if(NOT result EQUAL 0)
+    set(error_lines "")
+    foreach(line ${lines})
+      if(line MATCHES "error: ")
+        string(APPEND error_lines "\n${ARG_FUNCTION}(): ${line}")
+      endif()
+    endforeach()
+    if(NOT error_lines)
+      string(STRIP "${error}" error_lines)
+    endif()
+    message(FATAL_ERROR "${error_lines}")
   endif()
   # The record is a make rule too: after its main rule, one rule "<input>:"
   # per input, in make's escapes.
@@ -143,7 +181,8 @@ function(_mros_export_now ARG_FUNCTION ARG_GENMROS_ARGS ARG_OUTPUT_DIR ARG_OUTPU
 endfunction()
 
 function(mros_import_messages)
-  cmake_parse_arguments(ARG "" "TARGET;EXPORT_DIR;STORAGE;DEFINITION_TEXT" "TYPES;OPTIONS" ${ARGN})
+  cmake_parse_arguments(ARG "FIT_STRICT" "TARGET;EXPORT_DIR;STORAGE;DEFINITION_TEXT"
+    "TYPES;OPTIONS;MROS_V1_SETTINGS" ${ARGN})
   _mros_check_arguments(mros_import_messages "${ARG_TARGET}" "${ARG_UNPARSED_ARGUMENTS}")
   get_filename_component(export_dir "${ARG_EXPORT_DIR}" ABSOLUTE)
   # An export dir describes itself to CMake in mros_export.cmake (genmros
@@ -164,6 +203,7 @@ function(mros_import_messages)
   endif()
 
   _mros_form_args("${ARG_STORAGE}" "${ARG_OPTIONS}" "${ARG_DEFINITION_TEXT}" form_args)
+  _mros_fit_args("${ARG_MROS_V1_SETTINGS}" "${ARG_FIT_STRICT}" fit_args)
   set(genmros_args --export-dir "${export_dir}")
   foreach(type ${types})
     list(FIND MROS_EXPORT_TYPES "${type}" index)
@@ -175,7 +215,7 @@ function(mros_import_messages)
   endforeach()
 
   _mros_output_dir(${ARG_TARGET} output_dir)
-  list(APPEND genmros_args -o "${output_dir}" ${form_args})
+  list(APPEND genmros_args -o "${output_dir}" ${form_args} ${fit_args})
   _mros_export_now(mros_import_messages "${genmros_args}" "${output_dir}" inputs)
   # genmros writes the aggregates, and every header too where the export's
   # are not in the form asked for: then those stay out of t.
@@ -191,13 +231,16 @@ function(mros_import_messages)
 endfunction()
 
 function(mros_generate_messages)
-  cmake_parse_arguments(ARG "" "TARGET;STORAGE;DEFINITION_TEXT" "TYPES;PACKAGE_PATHS;OPTIONS" ${ARGN})
+  cmake_parse_arguments(ARG "FIT_STRICT" "TARGET;STORAGE;DEFINITION_TEXT"
+    "TYPES;PACKAGE_PATHS;OPTIONS;MROS_V1_SETTINGS" ${ARGN})
   _mros_check_arguments(mros_generate_messages "${ARG_TARGET}" "${ARG_UNPARSED_ARGUMENTS}")
   if(NOT ARG_TYPES)
     message(FATAL_ERROR "mros_generate_messages(): TYPES lists no message type")
   endif()
 
   _mros_form_args("${ARG_STORAGE}" "${ARG_OPTIONS}" "${ARG_DEFINITION_TEXT}" genmros_args)
+  _mros_fit_args("${ARG_MROS_V1_SETTINGS}" "${ARG_FIT_STRICT}" fit_args)
+  list(APPEND genmros_args ${fit_args})
   set(workspace "")
   foreach(path ${ARG_PACKAGE_PATHS})
     get_filename_component(path "${path}" ABSOLUTE)

@@ -9,9 +9,11 @@ sum and its serialized size; the MD5 sum is checked against genmsg's own.
 """
 
 import os
+import re
 import shutil
 
 import pytest
+from mros_v1_checkout import MROS_V1_ROOT
 from fixtures.build_integration.tools import (
     FIRMWARE_FIXTURE, TEST_WS_SRC, genmsg_md5, new_workspace, run, search_path_of, unwrapped)
 
@@ -300,3 +302,65 @@ def test_bad_options_line_fails_the_configure_step_with_its_place(firmware, work
     assert result.returncode != 0
     assert ("mros_generate_messages(): genmros: error: %s:1: max_size must be a positive integer, "
             "not 'ten'" % options) in unwrapped(result.stdout)
+
+
+def _settings_headers(tmp_path, request_buffer):
+    """Copies of the mROS v1 settings headers a firmware builds with (the
+    samples' app config, the library's packet config), with the subscriber
+    header buffer set to request_buffer bytes."""
+    usr_config = tmp_path / 'mros_usr_config.h'
+    packet_config = tmp_path / 'mros_packet_config.h'
+    shutil.copy(os.path.join(MROS_V1_ROOT, 'mros_ws', 'custom_pubsub', 'mros_config',
+                             'mros_usr_config.h'), str(usr_config))
+    shutil.copy(os.path.join(MROS_V1_ROOT, 'mros-lib', 'mros-src', 'packet', 'cimpl', 'version',
+                             'kinetic', 'mros_packet_config.h'), str(packet_config))
+    _set_request_buffer(packet_config, request_buffer)
+    return [str(usr_config), str(packet_config)]
+
+
+def _set_request_buffer(packet_config, size):
+    text, count = re.subn(r'(#define MROS_PACKET_MAXSIZE_REQ_TCPROS\s+)\d+', r'\g<1>%d' % size,
+                          packet_config.read_text())
+    assert count == 1
+    packet_config.write_text(text)
+
+
+@pytest.mark.needs_mros_v1
+def test_the_fit_check_stops_configure_and_build_with_the_setting_to_change(firmware, workspace,
+                                                                           tmp_path):
+    settings = _settings_headers(tmp_path, 200)
+    cache = dict(MROS_PACKAGE_PATHS=os.path.join(workspace, 'src'), MROS_V1_SETTINGS=settings)
+    result = firmware.configure(check=False, **cache)
+    assert result.returncode != 0
+    misfit = re.search(r"mros_generate_messages\(\): genmros: error: (\S+):(\d+): "
+                       r"mros_test/PersonalData: .* needs MROS_PACKET_MAXSIZE_REQ_TCPROS >= "
+                       r"(\d+) \(it is 200; even with the shortest topic and caller id it "
+                       r"needs (\d+)\)", unwrapped(result.stdout))
+    assert misfit, result.stdout
+    path, line = misfit.group(1), int(misfit.group(2))
+    needed, certain = int(misfit.group(3)), int(misfit.group(4))
+    assert path == settings[1]
+    with open(path) as stream:
+        assert stream.readlines()[line - 1].startswith('#define MROS_PACKET_MAXSIZE_REQ_TCPROS')
+    # The value it asks for fits; what remains is the warning for the frame
+    # of heap storage, which has no largest size.
+    packet_config = tmp_path / 'mros_packet_config.h'
+    _set_request_buffer(packet_config, needed)
+    output = unwrapped(firmware.configure(**cache).stdout)
+    assert 'connection header' not in output
+    assert ('mros_generate_messages(): genmros: warning: mros_test/PersonalData: no largest '
+            'frame (first_name (string) has no bound)') in output
+    firmware.build()
+    assert firmware.output()['serialized'] == '14'
+    # The settings header is an input: a build after an edit checks again.
+    # One byte less fits shorter names only, a warning; below the certain
+    # need the build stops.
+    _set_request_buffer(packet_config, needed - 1)
+    output = unwrapped(firmware.build())
+    assert REGENERATION_LOG_LINE in output
+    assert 'warning: mros_test/PersonalData: a ROS subscriber\'s connection header' in output
+    _set_request_buffer(packet_config, certain - 1)
+    result = run(['cmake', '--build', firmware.build_dir], firmware.build_dir, check=False)
+    assert result.returncode != 0
+    assert 'needs MROS_PACKET_MAXSIZE_REQ_TCPROS >= %d (it is %d;' % (needed, certain - 1) \
+        in unwrapped(result.stdout)
