@@ -3,6 +3,8 @@ this checkout: tests/fixtures/mros_v1_pc_app's Makefile and app.cfg with one
 of its sources as app.cpp."""
 
 import os
+import re
+import shutil
 import subprocess
 import sys
 
@@ -39,3 +41,24 @@ def build_app(mros_root, build_root, source, target='arm', types=('mros_test/Per
         raise RuntimeError('genmros mros-v1-pc failed:\n' + result.stdout[-3000:]
                            + result.stderr[-3000:])
     return os.path.join(output, 'test_app')
+
+
+def library_copy(mros_root, destination, settings):
+    """A copy of the library (mros-lib, and custom_pubsub's mros_config and
+    app.h, which the test apps take) at destination with settings changed:
+    {(path relative to the checkout, macro name): value}, each a #define
+    there. Returns destination."""
+    shutil.copytree(os.path.join(mros_root, 'mros-lib'), os.path.join(destination, 'mros-lib'))
+    sample = os.path.join('mros_ws', 'custom_pubsub')
+    shutil.copytree(os.path.join(mros_root, sample, 'mros_config'),
+                    os.path.join(destination, sample, 'mros_config'))
+    shutil.copy(os.path.join(mros_root, sample, 'app.h'), os.path.join(destination, sample))
+    for (relative, name), value in settings.items():
+        path = os.path.join(destination, relative)
+        with open(path) as stream:
+            text, count = re.subn(r'(#define %s\s+)\d+' % name, r'\g<1>%d' % value, stream.read())
+        if count != 1:
+            raise ValueError('%s defines %s %d times' % (path, name, count))
+        with open(path, 'w') as stream:
+            stream.write(text)
+    return destination

@@ -26,7 +26,6 @@ import json
 import os
 import re
 import select
-import shutil
 import signal
 import socket
 import subprocess
@@ -37,7 +36,7 @@ import pytest
 from colcon_mros.targets.mros_v1_pc.ros_graph import (
     DELIVERY_TIMEOUT, PEER_IP, Board, RosGraph, sourced_environment)
 from mros_v1_checkout import MROS_V1_ROOT
-from pc_target_apps import build_app
+from pc_target_apps import build_app, library_copy
 from sanitizer_reports import sanitizer_reports
 from tcpros_peer import HostilePublisher, RawSubscriber, encode_header, frame
 
@@ -213,25 +212,12 @@ def test_the_relay_is_refused_with_the_samples_settings_one_line_per_misfit(
 
 @pytest.fixture(scope='module')
 def fitted_library_root(refused_relay, tmp_path_factory):
-    """A copy of the library (mros-lib, and custom_pubsub's mros_config and
-    app.h, which the test apps take) with the values the refusal printed."""
-    root = tmp_path_factory.mktemp('mros_v1_fitted')
-    shutil.copytree(os.path.join(MROS_V1_ROOT, 'mros-lib'), str(root / 'mros-lib'))
-    sample = os.path.join('mros_ws', 'custom_pubsub')
-    shutil.copytree(os.path.join(MROS_V1_ROOT, sample, 'mros_config'),
-                    str(root / sample / 'mros_config'))
-    shutil.copy(os.path.join(MROS_V1_ROOT, sample, 'app.h'), str(root / sample / 'app.h'))
+    """A copy of the library with the values the refusal printed."""
     values = {}
     for path, _, _, setting, needed, _ in _misfits(refused_relay):
         key = (os.path.relpath(path, MROS_V1_ROOT), setting)
         values[key] = max(values.get(key, 0), needed)
-    for (relative, setting), needed in values.items():
-        path = root / relative
-        text, count = re.subn(r'(#define %s\s+)\d+' % setting, r'\g<1>%d' % needed,
-                              path.read_text())
-        assert count == 1
-        path.write_text(text)
-    return str(root)
+    return library_copy(MROS_V1_ROOT, str(tmp_path_factory.mktemp('mros_v1_fitted')), values)
 
 
 @pytest.fixture(scope='module')
