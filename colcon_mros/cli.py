@@ -120,6 +120,18 @@ def _add_export(subparsers):
     parser.set_defaults(run=_export)
 
 
+def _add_app_arguments(parser, type_help):
+    """Where an mROS v1 app's library and message types are."""
+    parser.add_argument('--mros-root', metavar='DIR',
+                        help='the mROS v1 checkout (default: the one APP_DIR is in, ../..)')
+    parser.add_argument('--type', dest='types', action='append', default=[],
+                        metavar='PKG/TYPE', help=type_help)
+    parser.add_argument('--msg-path', dest='msg_paths', action='append', default=[],
+                        metavar='DIR', help='where packages are: source trees or installed '
+                                            "prefixes (default: app.json's catkin_ws_dir and "
+                                            'the ROS environment)')
+
+
 def _add_header_arguments(parser):
     """What the headers hold: storage, bounds, definition text."""
     parser.add_argument('--storage', choices=STORAGE_KINDS, default=DEFAULT_STORAGE,
@@ -185,20 +197,13 @@ def _add_mros_v1_pc(subparsers):
                     'generator\'s file) unless --type is given. The node finds the master in '
                     'ROS_MASTER_URI and its address in ROS_IP/ROS_HOSTNAME.')
     parser.add_argument('app_dir', metavar='APP_DIR', help="the app's directory (with app.cfg)")
-    parser.add_argument('--mros-root', metavar='DIR',
-                        help='the mROS v1 checkout (default: the one APP_DIR is in, ../..)')
     parser.add_argument('--target', choices=PC_TARGETS, default='arm',
                         help='arm: 32-bit ARM Linux, the board\'s instruction set, a static '
                              'program run with qemu-arm (default); native: this PC')
     parser.add_argument('-o', dest='build_dir', metavar='DIR',
                         help='build directory (default: APP_DIR/build-pc-TARGET)')
-    parser.add_argument('--type', dest='types', action='append', default=[],
-                        metavar='PKG/TYPE', help='a message type the app uses (repeatable; '
-                                                 'default: those of app.json)')
-    parser.add_argument('--msg-path', dest='msg_paths', action='append', default=[],
-                        metavar='DIR', help='where packages are: source trees or installed '
-                                            "prefixes (default: app.json's catkin_ws_dir and "
-                                            'the ROS environment)')
+    _add_app_arguments(parser, 'a message type the app uses (repeatable; default: those of '
+                               'app.json)')
     _add_header_arguments(parser)
     parser.add_argument('-j', dest='jobs', type=int, default=os.cpu_count() or 1,
                         help='parallel make jobs (default: the number of CPUs)')
@@ -315,24 +320,18 @@ def _add_mros_v1_fit(subparsers):
                     'its definition text, the connection headers ROS nodes send for it, its '
                     "largest frame, and for each of the library's settings (header buffers, "
                     "type name field, memory pools) 'ok' or the value it needs; then the "
-                    "library's tables and the lines a build would stop with.")
+                    "library's tables and the lines a build would stop with. Exits 1 if a "
+                    'build would stop.')
     parser.add_argument('app_dir', metavar='APP_DIR', nargs='?',
                         help="the app's directory (mros_ws/<app>)")
-    parser.add_argument('--mros-root', metavar='DIR',
-                        help='the mROS v1 checkout (default: the one APP_DIR is in, ../..)')
     parser.add_argument('--export-dir', metavar='DIR',
                         help='report the types of this export dir instead of an app\'s')
     parser.add_argument('--mros-v1-settings', dest='library_settings', action='append',
                         default=[], metavar='FILE',
                         help="the settings headers (default for an app: the app's "
                              "mros_usr_config.h and the library's mros_packet_config.h)")
-    parser.add_argument('--type', dest='types', action='append', default=[],
-                        metavar='PKG/TYPE', help='a message type (repeatable; default: the '
-                                                 "app's app.json, or every type of the export dir)")
-    parser.add_argument('--msg-path', dest='msg_paths', action='append', default=[],
-                        metavar='DIR', help='where packages are: source trees or installed '
-                                            "prefixes (default: app.json's catkin_ws_dir and "
-                                            'the ROS environment)')
+    _add_app_arguments(parser, "a message type (repeatable; default: the app's app.json, or "
+                               'every type of the export dir)')
     _add_header_arguments(parser)
     parser.set_defaults(run=_mros_v1_fit)
 
@@ -341,7 +340,9 @@ def _mros_v1_fit(options):
     from colcon_mros.generator.ros_environment import require_ros_python
     require_ros_python()
     from colcon_mros.targets.mros_v1_pc.fit_report import report  # needs genmsg
-    sys.stdout.write(report(options))
+    text, stops = report(options)
+    sys.stdout.write(text)
+    return 1 if stops else 0
 
 
 def _mros_v1_pc(options):
@@ -371,9 +372,8 @@ def main(argv=None):
               file=sys.stderr)
         return 2
     try:
-        options.run(options)
+        return options.run(options) or 0
     except GenmrosError as error:
         for line in str(error).splitlines():
             print('genmros: error: %s' % line, file=sys.stderr)
         return 1
-    return 0

@@ -54,9 +54,8 @@ def _cell(requirement):
     return 'ok'
 
 
-
 def report(options):
-    """The report's text."""
+    """The report's text, and whether a build would stop."""
     fit, settings_files = _fit(options)
     lines = ['Settings: %s' % ', '.join(settings_files),
              "Connection headers: their bytes besides the topic and the ROS peer's caller id. "
@@ -86,4 +85,4 @@ def report(options):
     lines.append('')
     lines += ['error: %s' % line for line in problems] or ['Every type fits.']
     lines += ['warning: %s' % line for line in fit.warnings]
-    return '\n'.join(lines) + '\n'
+    return '\n'.join(lines) + '\n', bool(problems)

@@ -76,6 +76,55 @@ def test_the_sample_fits_and_is_told_how_short_its_names_must_be():
             'at most %d bytes together' % (PACKET_CONFIG, request_line, request, budget)) in report
 
 
+def _report_row(report, type_name):
+    rows = [line.strip('| ').split(' | ') for line in report.splitlines()
+            if line.startswith('| %s |' % type_name)]
+    assert len(rows) == 1, report
+    return rows[0]
+
+
+def test_the_report_of_the_sample_with_joint_state_before_and_after_the_fix(tmp_path):
+    # custom_pubsub with sensor_msgs/JointState added: its 1649-byte
+    # definition text is over the samples' 512-byte header buffers. The
+    # values the report asks for, set in copies of the settings headers,
+    # make every type fit.
+    types = ['--type', 'custom_pubsub/UserTypeTest', '--type', 'sensor_msgs/JointState']
+    before = run_genmros('mros-v1-fit', CUSTOM_PUBSUB, *types, check=False)
+    assert before.returncode == 1, before.stderr
+    text = _full_text_size('sensor_msgs/JointState')
+    topic_max, _ = _define(USR_CONFIG, 'MROS_TOPIC_NAME_MAXLEN')
+    names = topic_max + 64  # a topic as long as the library allows, a caller id of 64
+    request = 115 + text + len('sensor_msgs/JointState') + 1 + names
+    reply = 112 + text + len('sensor_msgs/JointState') + names
+    row = _report_row(before.stdout, 'sensor_msgs/JointState')
+    assert row[1] == str(text)
+    assert row[5:9] == ['needs %d' % request, 'needs %d' % reply, 'ok', 'ok'], before.stdout
+    assert 'Tables (each type takes a topic per topic name, each ROS peer a connector): ' \
+           'MROS_TOPIC_MAX_NUM 20, MROS_NODE_MAX_NUM 10, MROS_PUB_TOPIC_CONNECTOR_MAX_NUM 10, ' \
+           'MROS_SUB_TOPIC_CONNECTOR_MAX_NUM 10; this firmware has 2 types.' in before.stdout
+    stops = [line for line in before.stdout.splitlines() if line.startswith('error: ')]
+    assert [re.sub(r' \(it is .*', '', line.split(': ', 3)[3]) for line in stops] == [
+        "a ROS subscriber's connection header (definition text %d bytes, a topic of up to %d "
+        'and a caller id of up to 64, and the NUL) needs MROS_PACKET_MAXSIZE_REQ_TCPROS >= %d'
+        % (text, topic_max, request),
+        "a ROS publisher's connection header needs MROS_PACKET_MAXSIZE_RES_TCPROS >= %d" % reply]
+
+    fixed = tmp_path / 'mros_packet_config.h'
+    with open(PACKET_CONFIG) as stream:
+        settings = stream.read()
+    for name, value in (('MROS_PACKET_MAXSIZE_REQ_TCPROS', request),
+                        ('MROS_PACKET_MAXSIZE_RES_TCPROS', reply)):
+        settings = re.sub(r'(#define %s\s+)\d+' % name, r'\g<1>%d' % value, settings)
+    fixed.write_text(settings)
+    after = run_genmros('mros-v1-fit', CUSTOM_PUBSUB, *types, '--mros-v1-settings', USR_CONFIG,
+                        '--mros-v1-settings', str(fixed))
+    for type_name in ('custom_pubsub/UserTypeTest', 'sensor_msgs/JointState'):
+        # Heap storage: no largest frame, so the pools are 'unknown' and warned of.
+        assert _report_row(after.stdout, type_name)[5:] == ['ok'] * 4 + ['unknown'] * 2
+    assert 'Every type fits.' in after.stdout
+    assert after.stdout.count('no largest frame') == 2
+
+
 def _full_text_size_of_user_type():
     """UserTypeTest's full text as genmsg makes it (what rospy sends) from
     the sample's own .msg."""
