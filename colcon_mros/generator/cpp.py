@@ -218,6 +218,7 @@ class CppMessage(CppType):
         super().__init__(message.full_name)
         self._message = message
         self.origin = message.definition_file.key
+        self.comment = comment_lines(message.comment)
         self.type_id = message.type_id
         self.min_size = message.min_size
         self.max_size = message.max_size

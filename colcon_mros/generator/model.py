@@ -127,6 +127,7 @@ class Message:
         self._identities = identities
         self.compact_definition = definition_text == 'compact'
         self.type_id = type_id(full_name)
+        self.comment = declarations.type_comment  # the .msg's comment lines about the type
         self.constants = [Constant(constant, line, declarations.comments[line]) for constant, line
                           in zip(spec.constants, declarations.constant_lines)]
         self.fields = []

@@ -48,7 +48,8 @@ class Declarations:
     maps to the line that declared it. A declaration's comment is the comment
     lines right above it (no blank line between) and the comment after it on
     its line; a string constant's value runs to the end of its line, '#'
-    included, as genmsg reads it.
+    included, as genmsg reads it. The type's own comment is the first block of
+    comment lines, where a blank line parts it from the first declaration.
     """
 
     def __init__(self, path, numbered_lines):
@@ -56,12 +57,18 @@ class Declarations:
         self.constant_lines = []
         self.field_lines = []
         self.comments = {}  # a declaration's line number: its comment, line by line
+        self.type_comment = []
         above = []
         for number, line in numbered_lines:
             declaration = line.split('#')[0].strip()
             if not declaration:
                 text = line.strip()
-                above = above + [text[1:].strip()] if text.startswith('#') else []
+                if text.startswith('#'):
+                    above = above + [text[1:].strip()]
+                    continue
+                if not self.comments and not self.type_comment:
+                    self.type_comment = [comment for comment in above if comment]
+                above = []
                 continue
             is_string_constant = '=' in declaration and declaration.split()[0] == 'string'
             after = '' if is_string_constant else line.partition('#')[2].strip()

@@ -86,7 +86,10 @@ def test_a_header_refuses_a_support_header_of_another_genmros(test_ws_export, tm
             'wrote with this header' % version) in result.stderr
 
 
-COMMENTED_MSG = r"""# above a
+COMMENTED_MSG = r"""# What the type is for,
+# before a blank line.
+
+# above a
 int32 a  # after a
 # not a's: a blank line follows
 
@@ -98,7 +101,7 @@ int32 c
 """
 
 
-def test_the_msg_comments_become_the_members_comments(tmp_path):
+def test_the_msg_comments_become_the_type_and_members_comments(tmp_path):
     package = tmp_path / 'ws' / 'src' / 'commented'
     (package / 'msg').mkdir(parents=True)
     (package / 'package.xml').write_text(
@@ -113,7 +116,9 @@ def test_the_msg_comments_become_the_members_comments(tmp_path):
     assert ('  // above a\n  // after a\n  int32_t a;  // int32 a\n'
             '  // ends in a backslash\n  int32_t b;  // int32 b\n'
             '  // a trigraph in C++98: ? ?/\n  int32_t c;  // int32 c\n') in header
-    assert "  // not a's" not in header
+    assert ('// What the type is for,\n// before a blank line.\n'
+            'struct Commented : mros::Message<Commented>') in header
+    assert "// not a's" not in header
     assert '"value # part of the value"' in header
     # Under strict C++98 (trigraphs on) b and c are still members.
     source = tmp_path / 'use.cpp'

@@ -63,6 +63,9 @@ const @(c.cpp_type) @(msg.name)<_unused>::@(c.cpp_name) = @(c.cpp_literal);
 
 namespace @(msg.package) {
 
+@[for text in msg.comment]@
+// @(text)
+@[end for]@
 struct @(msg.name) : mros::Message<@(msg.name)>@[if msg.constants], mros::constants::@(msg.package)::@(msg.name)<>@[end if] {
   typedef @(msg.name)* Ptr;
   typedef const @(msg.name)* ConstPtr;

@@ -1,8 +1,8 @@
 """What the real mROS v1 library does past the sizes of its configuration
 where the fit check cannot refuse the firmware: a frame of heap storage
-(no largest size) beyond the largest memory pool, and more ROS peers than
-its node table holds (the firmware's code, not its types, decides how many
-topics and peers it has). The app is tests/fixtures/mros_v1_pc_app/
+(no largest size) beyond the largest memory pool, more ROS peers than its
+node table holds (the firmware's code, not its types, decides how many
+topics and peers it has), and a node name at its maximum length. The app is tests/fixtures/mros_v1_pc_app/
 library_limits.cpp with custom_pubsub's mros_config; docs/pc-target.md
 ("The library's own limits") describes each case.
 """
@@ -27,8 +27,8 @@ pytestmark = [pytest.mark.needs_mros_v1, pytest.mark.needs_qemu, pytest.mark.slo
 STRING_MD5 = '992ce8a1687cec8c8bd883ec73ca41d1'
 NODE_NAME = '/mros_limits'
 # The app's cases: its switches P6_1 P6_0.
-RECEIVE, PUBLISH, TOPICS = ({'P6_0': 0, 'P6_1': 0}, {'P6_0': 1, 'P6_1': 0},
-                            {'P6_0': 0, 'P6_1': 1})
+RECEIVE, PUBLISH, TOPICS, LONG_NODE_NAME = ({'P6_0': 0, 'P6_1': 0}, {'P6_0': 1, 'P6_1': 0},
+                                            {'P6_0': 0, 'P6_1': 1}, {'P6_0': 1, 'P6_1': 1})
 TOPIC_COUNT = 8
 USR_CONFIG = os.path.join('mros_ws', 'custom_pubsub', 'mros_config', 'mros_usr_config.h')
 TABLES = ('MROS_TOPIC_MAX_NUM', 'MROS_NODE_MAX_NUM', 'MROS_PUB_TOPIC_CONNECTOR_MAX_NUM',
@@ -161,3 +161,18 @@ def test_with_the_tables_raised_every_topic_is_delivered(wide_tables_program, tm
             assert time.monotonic() < deadline, board.process.output()
             time.sleep(0.2)
         assert NODE_TABLE_FULL not in board.process.output()
+
+
+def test_limit_a_node_name_one_short_of_its_maximum_never_registers(limits_program, tmp_path):
+    # MROS_NODE_NAME_MAXLEN is 20 in the samples, and the library accepts a
+    # name of up to 20 characters, but it keeps the name with its leading
+    # '/' in a field of 20 bytes, so a name of 19 has no room for its NUL
+    # (and one of 20 overruns the field): 'mros_limits_node_19' reaches no
+    # master, and nothing says so. Keep node names under 19 characters.
+    with RosGraph() as graph:
+        board = start(graph, limits_program, str(tmp_path), LONG_NODE_NAME)
+        time.sleep(5)
+        _, subscribers = graph.system_state()
+        assert '/in' not in subscribers, subscribers
+        assert board.process.alive(), board.process.output()
+        assert 'CONFIG ERROR' not in board.process.output()

@@ -17,9 +17,10 @@ without a bound, and rospy and roscpp send the type's whole definition text
 in theirs, so with real ROS nodes only short types work. The byte-exact
 tests therefore use raw TCPROS peers (no message_definition) and build
 without the fit check; with it, the build is refused with one line per
-setting and the value it needs; rospy's own round trip runs on a copy of
-the library with those values; and the crash with the unchanged sizes is
-pinned, the fit check overridden.
+setting and the value it needs (in bounded storage the memory pools too);
+on a copy of the library with those values, rospy and roscpp exchange
+every type with the board in both directions, byte-exact; and the crash
+with the unchanged sizes is pinned, the fit check overridden.
 """
 
 import json
@@ -174,12 +175,16 @@ def _misfits(output):
              int(m.group(6))) for m in map(MISFIT.match, output.splitlines()) if m]
 
 
-@pytest.fixture(scope='module')
-def refused_relay(tmp_path_factory):
+def refused_build(storage, build_root):
     """What building the relay for the unchanged library prints."""
     with pytest.raises(RuntimeError) as refused:
-        build_relay(MROS_V1_ROOT, tmp_path_factory.mktemp('relay_refused'))
+        build_relay(MROS_V1_ROOT, build_root, storage)
     return str(refused.value)
+
+
+@pytest.fixture(scope='module')
+def refused_relay(tmp_path_factory):
+    return refused_build('heap', tmp_path_factory.mktemp('relay_refused'))
 
 
 def test_the_relay_is_refused_with_the_samples_settings_one_line_per_misfit(
@@ -210,35 +215,66 @@ def test_the_relay_is_refused_with_the_samples_settings_one_line_per_misfit(
     assert 'the mROS v1 library of' not in refused_relay
 
 
-@pytest.fixture(scope='module')
-def fitted_library_root(refused_relay, tmp_path_factory):
-    """A copy of the library with the values the refusal printed."""
+@pytest.fixture(scope='module', params=['heap', 'bounded'])
+def fitted_relay(request, refused_relay, tmp_path_factory):
+    """The relay on a copy of the library with the values its refusal
+    printed; in bounded storage they include the memory pools for the
+    largest frames."""
+    storage = request.param
+    refusal = refused_relay if storage == 'heap' else refused_build(
+        storage, tmp_path_factory.mktemp('relay_refused_' + storage))
     values = {}
-    for path, _, _, setting, needed, _ in _misfits(refused_relay):
-        key = (os.path.relpath(path, MROS_V1_ROOT), setting)
+    for path, _, _, setting, needed, _ in _misfits(refusal):
+        # The app's mros_config is custom_pubsub's, linked.
+        key = (os.path.relpath(os.path.realpath(path), os.path.realpath(MROS_V1_ROOT)), setting)
         values[key] = max(values.get(key, 0), needed)
-    return library_copy(MROS_V1_ROOT, str(tmp_path_factory.mktemp('mros_v1_fitted')), values)
+    # NestedTypes and ArrayTypes, bounded, take frames over the 1024-byte pools.
+    pools = {setting for _, setting in values if 'MEMPOOL' in setting}
+    assert pools == (set() if storage == 'heap' else {'ROS_INNER_TOPIC_PUBLISHER_MEMPOOL3_SIZE',
+                                                      'ROS_OUTER_TOPIC_PUBLISHER_MEMPOOL3_SIZE'})
+    root = library_copy(MROS_V1_ROOT, str(tmp_path_factory.mktemp('mros_v1_fitted_' + storage)),
+                        values)
+    return build_relay(root, tmp_path_factory.mktemp('relay_fitted_' + storage), storage)
 
 
-@pytest.fixture(scope='module')
-def fitted_relay(fitted_library_root, tmp_path_factory):
-    return build_relay(fitted_library_root, tmp_path_factory.mktemp('relay_fitted'))
+def round_trip(graph, ros_workspace, source, sink, names, board, *check_options):
+    """roundtrip_check.py from source/<Type> to sink/<Type>: passes for every type."""
+    check = graph.start('roundtrip_check', ros_workspace.rospy(
+        'roundtrip_check.py', source, sink, '--types', ','.join(names),
+        '--timeout', str(DELIVERY_TIMEOUT), *check_options), {'ROS_IP': PEER_IP})
+    check.popen.wait(timeout=DELIVERY_TIMEOUT * (1 + len(names)))
+    assert check.popen.returncode == 0, check.output() + '\n' + board.process.output()
+    for name in names:
+        check.wait_for(r'^PASS %s: \d+ samples' % name, timeout=0)
+    assert board.process.alive(), board.process.output()
 
 
 @pytest.mark.parametrize('group', range(len(GROUPS)), ids=['-'.join(g) for g in GROUPS])
 def test_with_the_printed_settings_rospy_round_trips_every_type(
         ros_workspace, fitted_relay, group, tmp_path):
-    names = GROUPS[group]
+    # rospy publishes to the board and subscribes to it: both headers carry
+    # the definition text.
     with RosGraph(sourced_environment(ros_workspace.setup_bash)) as graph:
         board = start_relay(graph, fitted_relay, str(tmp_path), group)
-        check = graph.start('roundtrip_check', ros_workspace.rospy(
-            'roundtrip_check.py', '/src', '/back', '--types', ','.join(names),
-            '--timeout', str(DELIVERY_TIMEOUT)), {'ROS_IP': PEER_IP})
-        check.popen.wait(timeout=DELIVERY_TIMEOUT * (1 + len(names)))
-        assert check.popen.returncode == 0, check.output() + '\n' + board.process.output()
-        for name in names:
-            check.wait_for(r'^PASS %s: \d+ samples' % name, timeout=0)
-        assert board.process.alive(), board.process.output()
+        round_trip(graph, ros_workspace, '/src', '/back', GROUPS[group], board)
+
+
+@pytest.mark.parametrize('group', range(len(GROUPS)), ids=['-'.join(g) for g in GROUPS])
+def test_with_the_printed_settings_roscpp_round_trips_every_type(
+        ros_workspace, fitted_relay, group, tmp_path):
+    # rospy -> roscpp -> the board -> roscpp -> rospy: roscpp's publisher
+    # sends the board its definition text, roscpp's subscriber takes what
+    # the board sends.
+    with RosGraph(sourced_environment(ros_workspace.setup_bash)) as graph:
+        board = start_relay(graph, fitted_relay, str(tmp_path), group)
+        for source, sink in (('/to_board', '/src'), ('/back', '/from_board')):
+            relay = graph.start('roscpp relay ' + source, ros_workspace.roscpp(
+                'type_relay', source, sink, '__name:=roscpp_relay' + source.replace('/', '_')),
+                {'ROS_IP': PEER_IP})
+            relay.wait_for('relaying', timeout=DELIVERY_TIMEOUT)
+        # roscpp's publishers number header.seq themselves.
+        round_trip(graph, ros_workspace, '/to_board', '/from_board', GROUPS[group], board,
+                   '--ignore-header-seq')
 
 
 ROSPY_CONSTANTS_SUBSCRIBER = (
