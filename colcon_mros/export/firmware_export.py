@@ -20,7 +20,7 @@ and genmros are those of the last one does nothing.
 import os
 import time
 
-from colcon_mros.errors import GenmrosError, GenmrosProblems
+from colcon_mros.errors import GenmrosError
 from colcon_mros.export.library_fit import Fit, read_settings
 from colcon_mros.export.export_dir import HEADER_FORM
 from colcon_mros.export.run_record import RunRecord, definition_directories, snapshot
@@ -209,11 +209,7 @@ def export(request):
     warnings = []
     if request.library_settings:
         fit = Fit(LibraryNeeds(types.firmware_messages), read_settings(request.library_settings))
-        problems = [misfit.line() for misfit in fit.misfits]
-        if request.fit_strict:
-            problems += fit.warnings
-        if problems:
-            raise GenmrosProblems(problems)
+        fit.refuse(request.fit_strict)
         warnings = fit.warnings
     packages, messages, services = types.packages, types.messages, types.services
     firmware_messages = types.firmware_messages

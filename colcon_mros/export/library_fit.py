@@ -13,7 +13,7 @@ exact answer.
 
 import re
 
-from colcon_mros.errors import GenmrosError
+from colcon_mros.errors import GenmrosError, GenmrosProblems
 from colcon_mros.generator.library_needs import (PEER_NAME_MAX, POOL_KINDS, REPLY_BUFFER,
                                                  REQUEST_BUFFER, SHORTEST_NAMES, TABLES,
                                                  TOPIC_NAME_MAX, TYPENAME_MAX)
@@ -187,6 +187,13 @@ class Fit:
                 'a frame of up to %s bytes, %s,' % (needed.max_frame, use), pool,
                 needed.pool_block))
         return requirements
+
+    def refuse(self, strict=False):
+        """Raise the misfits (and with strict, the warnings too) as one error
+        line each."""
+        problems = [misfit.line() for misfit in self.misfits] + (self.warnings if strict else [])
+        if problems:
+            raise GenmrosProblems(problems)
 
     def table_sizes(self):
         """The Settings of the library's tables this firmware's topics take room in."""

@@ -19,6 +19,7 @@ import pytest
 
 from compile_checks import LANGUAGE_MODES, STRICT_FLAGS, TARGETS, every_header_translation_unit
 from conftest import REPO, TEST_WS, run_genmros
+from mros_v1_checkout import MROS_V1_ROOT
 
 FIXTURES = os.path.join(REPO, 'tests', 'fixtures')
 APP_FIXTURE = os.path.join(FIXTURES, 'mros_v1_app')
@@ -133,6 +134,41 @@ def test_make_refuses_bad_input_and_leaves_the_include_dir(app_dir):
     missing = _make(app_dir, 'GENMROS=/nonexistent/genmros', 'MROS_MSG_TYPES=mros_test/Empty')
     assert missing.returncode != 0
     assert "'/nonexistent/genmros' not found: install colcon-mros or set GENMROS" in missing.stderr
+    assert _snapshot(str(app_dir / 'include')) == before
+
+
+@pytest.mark.needs_mros_v1
+def test_the_make_fragment_stops_where_the_settings_are_too_small(app_dir, tmp_path):
+    # The settings the app builds with, given to genmros in MROS_MSG_FLAGS:
+    # the samples' app config and a packet config whose subscriber header
+    # buffer is too small for PersonalData's even with the shortest names
+    # (NestedTypes, with its 3.7 KB definition text, needs both buffers larger).
+    made = _make(app_dir)
+    assert made.returncode == 0, made.stderr[-3000:]
+    before = _snapshot(str(app_dir / 'include'))
+    usr_config = os.path.join(MROS_V1_ROOT, 'mros_ws', 'custom_pubsub', 'mros_config',
+                              'mros_usr_config.h')
+    packet_config = tmp_path / 'mros_packet_config.h'
+    with open(os.path.join(MROS_V1_ROOT, 'mros-lib', 'mros-src', 'packet', 'cimpl', 'version',
+                           'kinetic', 'mros_packet_config.h')) as stream:
+        packet_text = stream.read()
+    packet_config.write_text(re.sub(r'(#define MROS_PACKET_MAXSIZE_REQ_TCPROS\s+)\d+', r'\g<1>100',
+                                    packet_text))
+    lines = {setting: packet_text[:packet_text.index('#define ' + setting)].count('\n') + 1
+             for setting in ('MROS_PACKET_MAXSIZE_REQ_TCPROS', 'MROS_PACKET_MAXSIZE_RES_TCPROS')}
+    flags = 'MROS_MSG_FLAGS=--mros-v1-settings %s --mros-v1-settings %s' % (usr_config,
+                                                                            packet_config)
+    refused = _make(app_dir, flags)
+    assert refused.returncode != 0
+    misfits = re.findall(r'^genmros: error: (.+):(\d+): (\S+): .* needs (\w+) >= \d+ \(it is (\d+);',
+                         refused.stderr, re.MULTILINE)
+    assert sorted(misfits) == sorted(
+        (str(packet_config), str(lines[setting]), type_name, setting, value)
+        for type_name, setting, value in (
+            ('mros_test/PersonalData', 'MROS_PACKET_MAXSIZE_REQ_TCPROS', '100'),
+            ('mros_test/NestedTypes', 'MROS_PACKET_MAXSIZE_REQ_TCPROS', '100'),
+            ('mros_test/NestedTypes', 'MROS_PACKET_MAXSIZE_RES_TCPROS', '512'))), refused.stderr
+    assert refused.stderr.count('genmros: error:') == len(misfits)
     assert _snapshot(str(app_dir / 'include')) == before
 
 

@@ -207,9 +207,11 @@ def build(options):
         from colcon_mros.generator.ros_environment import require_ros_python
         require_ros_python()
         from colcon_mros.targets.mros_v1_pc import fit  # genmsg: the types' models
-        fit.check(fit.types_fit(types, msg_paths, library_settings(app), options.storage,
-                                options.option_files),
-                  options.fit_strict, lambda warning: print('genmros: warning: %s' % warning))
+        types_fit = fit.types_fit(types, msg_paths, library_settings(app), options.storage,
+                                  options.option_files)
+        types_fit.refuse(options.fit_strict)
+        for warning in types_fit.warnings:
+            print('genmros: warning: %s' % warning)
     flavour = options.target + ('-sanitize' if options.sanitize else '')
     build_dir = os.path.abspath(options.build_dir or os.path.join(app.dir, 'build-pc-' + flavour))
     write_kernel_config(config, os.path.join(build_dir, 'cfg'))

@@ -2,7 +2,6 @@
 the fit check ``genmros mros-v1-pc`` runs before it builds, and the data of
 ``genmros mros-v1-fit``'s report (:mod:`colcon_mros.export.library_fit`)."""
 
-from colcon_mros.errors import GenmrosProblems
 from colcon_mros.export.firmware_export import ExportRequest, FirmwareTypes
 from colcon_mros.export.library_fit import Fit, read_settings
 from colcon_mros.generator.library_needs import LibraryNeeds
@@ -19,12 +18,3 @@ def types_fit(type_names, msg_paths, settings_files, storage_kind, option_files)
     return Fit(LibraryNeeds(FirmwareTypes(request).firmware_messages),
                read_settings(settings_files))
 
-
-def check(fit, strict, warn):
-    """Raise the misfits (and with strict, the warnings) as one error line
-    each; else pass each warning to warn."""
-    problems = [misfit.line() for misfit in fit.misfits] + (fit.warnings if strict else [])
-    if problems:
-        raise GenmrosProblems(problems)
-    for warning in fit.warnings:
-        warn(warning)
