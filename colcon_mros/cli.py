@@ -111,9 +111,7 @@ def _add_export(subparsers):
                              "library's mros_packet_config.h and the app's mros_usr_config.h "
                              '(repeatable, the one the build includes first first); each setting '
                              'too small for a type is one error line with the value it needs')
-    parser.add_argument('--fit-strict', action='store_true',
-                        help='with --mros-v1-settings, refuse a type that only might not fit (a '
-                             'frame without a largest size) too, instead of warning')
+    _add_fit_strict_argument(parser)
     parser.add_argument('--quiet', action='store_true',
                         help='say nothing when the run record says the headers are up to date '
                              '(the make fragment runs genmros on every make)')
@@ -130,6 +128,13 @@ def _add_app_arguments(parser, type_help):
                         metavar='DIR', help='where packages are: source trees or installed '
                                             "prefixes (default: app.json's catkin_ws_dir and "
                                             'the ROS environment)')
+
+
+def _add_fit_strict_argument(parser):
+    parser.add_argument('--fit-strict', action='store_true',
+                        help="refuse too, instead of warning, what only might not fit the "
+                             "library's settings: a frame without a largest size (heap "
+                             'storage), a connection header that fits only short names')
 
 
 def _add_header_arguments(parser):
@@ -211,9 +216,7 @@ def _add_mros_v1_pc(subparsers):
                         help="build even where the app's types do not fit the library's "
                              "settings (the check in genmros' make step and in ros.cpp); the "
                              'program will then overrun what the check names')
-    parser.add_argument('--fit-strict', action='store_true',
-                        help='refuse a type that only might not fit a memory pool (no largest '
-                             'frame, heap storage) too, instead of warning')
+    _add_fit_strict_argument(parser)
     parser.add_argument('--sanitize', action='store_true',
                         help='build library, stand-ins and app with AddressSanitizer and '
                              'UndefinedBehaviorSanitizer (with --target native), so that an '

@@ -62,15 +62,22 @@ class App:
                           if flag.startswith('-')]
         self.json_file = variables.get('MSG_SETTING_JSON')
 
-    def message_types(self):
-        """(types, package paths) from the old generator's JSON file."""
+    def message_types(self, types=(), msg_paths=()):
+        """(types, package paths) of the app: those given, else those of the
+        old generator's JSON file."""
         candidates = [self.json_file] if self.json_file else []
         candidates += ['app.json', 'msg_app.json']
+        json_types, json_paths = [], []
         for name in candidates:
             path = os.path.join(self.dir, name)
             if os.path.isfile(path):
-                return _types_of_json(path, self.dir)
-        return [], []
+                json_types, json_paths = _types_of_json(path, self.dir)
+                break
+        types = list(types) or json_types
+        if not types:
+            raise GenmrosError('no message types: the app has no app.json/msg_app.json; give '
+                               '--type', self.dir)
+        return types, list(msg_paths) or json_paths
 
 
 def app_variables(makefile, given=()):
@@ -197,12 +204,7 @@ def build(options):
     # The library's mros.cfg is on the search path, as in ASP's own build.
     config = read_config(app.cfg, [os.path.join(app.mros_root, 'mros-lib'),
                                    os.path.join(TARGET_DIR, 'cfg', 'asp')])
-    types, paths = app.message_types()
-    types = options.types or types
-    if not types:
-        raise GenmrosError('no message types: the app has no app.json/msg_app.json; give --type',
-                           app.dir)
-    msg_paths = options.msg_paths or paths
+    types, msg_paths = app.message_types(options.types, options.msg_paths)
     if not options.no_fit_check:
         from colcon_mros.generator.ros_environment import require_ros_python
         require_ros_python()

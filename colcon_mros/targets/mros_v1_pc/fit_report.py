@@ -34,13 +34,9 @@ def _fit(options):
         raise GenmrosError('give an app directory, or --export-dir')
     app_dir = os.path.abspath(options.app_dir)
     app = App(app_dir, find_mros_root(app_dir, options.mros_root))
-    types, paths = app.message_types()
-    types = options.types or types
-    if not types:
-        raise GenmrosError('no message types: the app has no app.json/msg_app.json; give --type',
-                           app.dir)
+    types, msg_paths = app.message_types(options.types, options.msg_paths)
     settings_files = options.library_settings or library_settings(app)
-    return types_fit(types, options.msg_paths or paths, settings_files, options.storage,
+    return types_fit(types, msg_paths, settings_files, options.storage,
                      options.option_files), settings_files
 
 
