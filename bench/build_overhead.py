@@ -227,7 +227,7 @@ def print_start_up(workspace):
                      '-I', 'bench_msgs_00:%s' % os.path.join(workspace, 'src', 'bench_msgs_00', 'msg'),
                      '-I', 'std_msgs:/usr/share/std_msgs/msg', '-I', 'geometry_msgs:/usr/share/geometry_msgs/msg']
     commands = {
-        'generator run (build, once per package; none at configure)': files + [
+        'generator run (build, once per package; none at configure)': ['generate'] + files + [
             '-p', 'bench_msgs_01', '-o', os.path.join(scratch, 'bench_msgs_01'),
             '--all-of-package'] + include_flags,
     }

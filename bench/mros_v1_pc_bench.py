@@ -31,7 +31,7 @@ import subprocess
 import sys
 import tempfile
 
-from colcon_mros.targets.mros_v1_pc.ros_graph import CatkinWorkspace, RosGraph, board_environment
+from colcon_mros.mros_v1.pc_target.ros_graph import CatkinWorkspace, RosGraph, board_environment
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TEST_WS_SRC = os.path.join(REPO, 'test_ws', 'src')

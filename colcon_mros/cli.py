@@ -1,10 +1,10 @@
 """The ``genmros`` command (also ``python3 -m colcon_mros``).
 
-One argparse subcommand per job, each with ``--help``. Generator mode takes
-gencpp's arguments (``genmros FILE -p PKG -o DIR ...``), which is what a
-genmsg generator is called with, so a command line that names no subcommand
-is generator mode (``genmros generate``). Each subcommand imports what it
-needs when it runs: ROS' Python packages only where they are needed.
+One argparse subcommand per job, each with ``--help``, and a function that
+turns its options into the explicit arguments of the module that does the
+job. Every command line names its subcommand (catkin's runs ``genmros
+generate``). Each subcommand imports what it needs when it runs: ROS'
+Python packages only where they are needed.
 """
 
 import argparse
@@ -22,8 +22,7 @@ Generate mROS message headers from ROS 1 .msg and .srv files.
 
 Generator mode, with gencpp's arguments and one or more files of a package
 (catkin runs it once per package, with all its files):
-  genmros FILE.msg|FILE.srv -p PKG -o OUTDIR [-I PKG:DIR ...] [-e TEMPLATE_DIR]
-          [--export-dir DIR] [--record FILE ...] [--all-of-package]
+  genmros generate FILE.msg|FILE.srv -p PKG -o OUTDIR [-I PKG:DIR ...] ...
 
 Export mode, what one firmware needs:
   genmros export [--workspace WS ...] [--package PKG ...] [--type PKG/TYPE ...] -o DIR ...
@@ -31,113 +30,53 @@ Export mode, what one firmware needs:
 Every subcommand has --help.'''
 
 
-def _add_generate(subparsers):
-    parser = subparsers.add_parser(
-        'generate', help='the headers of .msg and .srv files (generator mode, the default)',
-        description='The headers of .msg and .srv files of one package, with gencpp\'s '
-                    'arguments; "genmros FILE ..." without a subcommand is the same.')
-    parser.add_argument('files', nargs='+', metavar='FILE', help='a .msg or .srv file')
-    parser.add_argument('-p', dest='package', required=True, help='package of the files')
-    parser.add_argument('-o', dest='output_dir', required=True,
-                        help='output directory, <include root>/<package>')
-    parser.add_argument('-I', dest='include_paths', action='append', default=[],
-                        metavar='PKG:DIR', help='msg directory of a package (repeatable)')
+# Options more than one subcommand takes, each defined once.
+
+def _add_template_dir(parser):
     parser.add_argument('-e', dest='template_dir', help='template directory to use instead of ours')
-    parser.add_argument('--export-dir', metavar='DIR',
-                        help='also put the headers of the types of FILE and of every type they '
-                             "contain, and their definitions, into the export dir DIR (catkin's "
-                             'MROS_EXPORT_DIR)')
-    _add_catkin_arguments(parser)
-    parser.add_argument('--record', dest='records', action='append', default=[], metavar='FILE',
-                        help="the run's record (repeatable): only the files whose definitions "
-                             'changed since the last run recorded there are generated again '
-                             '(catkin gives one per package, and one in the export dir)')
-    parser.add_argument('--all-of-package', action='store_true',
-                        help='FILE... are all the definitions the package has: the headers (and '
-                             'export dir claims) of any other, removed from the package, go')
-    parser.set_defaults(run=_generate)
 
 
-def _add_catkin_arguments(parser):
+def _add_cmake_module(parser):
     parser.add_argument('--cmake-module', metavar='FILE',
                         help="the mros_generate.cmake an export dir's mros_export.cmake includes "
                              "(default: this install's)")
 
 
-def _add_export(subparsers):
-    parser = subparsers.add_parser(
-        'export', help='the headers and aggregates one firmware needs',
-        description='The headers of the selected types and every type they contain, plus the '
-                    'per-firmware aggregates message_headers.h, message_class_specialization.h '
-                    'and msg_max_size.h for the selected types. Without --package or --type: '
-                    'every type in the workspaces.')
-    parser.add_argument('--workspace', dest='workspaces', action='append', default=[], metavar='WS',
-                        help='catkin/colcon workspace or source tree, searched for packages '
-                             '(repeatable)')
-    parser.add_argument('--package', dest='packages', action='append', default=[],
-                        metavar='PKG', help='export every type of PKG (repeatable)')
-    parser.add_argument('--type', dest='types', action='append', default=[],
-                        metavar='PKG/TYPE', help='export one message or service, or one half of '
-                                                 'a service (PKG/SrvRequest) (repeatable)')
-    parser.add_argument('-o', dest='output_dir', required=True, metavar='DIR',
-                        help='include root to write to')
+def _add_types(parser, default):
+    parser.add_argument('--type', dest='types', action='append', default=[], metavar='PKG/TYPE',
+                        help='a message or service type, or one half of a service '
+                             '(PKG/SrvRequest) (repeatable; default: %s)' % default)
+
+
+def _add_msg_paths(parser, default):
     parser.add_argument('--msg-path', dest='msg_paths', action='append', default=[],
-                        metavar='DIR', help='an installed prefix (with share/) as --underlay, or '
-                                            'a source tree as --workspace (repeatable)')
-    parser.add_argument('--underlay', dest='prefixes', action='append', metavar='PREFIX',
-                        help='installed prefix holding share/<pkg>/msg, instead of the ROS '
-                             "environment (repeatable; default: rospkg's packages on "
-                             'ROS_PACKAGE_PATH, then the spaces on CMAKE_PREFIX_PATH)')
+                        metavar='DIR', help='where packages are: a source tree (searched for '
+                                            'package.xml) or an installed prefix (with '
+                                            'share/<pkg>/msg) (repeatable; default: %s)' % default)
+
+
+def _add_source_export_dir(parser, use):
     parser.add_argument('--export-dir', metavar='DIR',
-                        help='an export dir (catkin\'s MROS_EXPORT_DIR, colcon\'s --mros-export) '
-                             'the types come from: an underlay whose headers serve where they '
-                             'have the form asked for (heap storage, full text), so that only '
-                             'the aggregates are written')
-    parser.add_argument('--variable-size-budget', type=int, metavar='BYTES',
-                        default=DEFAULT_VARIABLE_SIZE_BUDGET,
-                        help='PUB_MSG_MAX_SIZE share of a type without an upper size '
-                             '(default: %(default)s)')
-    parser.add_argument('--only', choices=EXPORT_PARTS[1:],
-                        help='write only the headers, or only the per-firmware aggregates')
-    parser.add_argument('-e', dest='template_dir', help='template directory to use instead of ours')
-    _add_header_arguments(parser)
-    parser.add_argument('--record', metavar='FILE',
-                        help="keep the run's record in FILE, and do nothing when it says that "
-                             'nothing the output comes from changed; FILE is also a make rule '
-                             'naming every .msg/.srv and options file the headers come from')
+                        help="an export dir (catkin's MROS_EXPORT_DIR, colcon's --mros-export) "
+                             'the types come from%s' % use)
+
+
+def _add_settings(parser, default):
     parser.add_argument('--mros-v1-settings', dest='library_settings', action='append',
                         default=[], metavar='FILE',
-                        help="check the types against an mROS v1 library's settings: the "
-                             "library's mros_packet_config.h and the app's mros_usr_config.h "
-                             '(repeatable, the one the build includes first first); each setting '
-                             'too small for a type is one error line with the value it needs')
-    _add_fit_strict_argument(parser)
-    parser.add_argument('--quiet', action='store_true',
-                        help='say nothing when the run record says the headers are up to date '
-                             '(the make fragment runs genmros on every make)')
-    parser.set_defaults(run=_export)
+                        help="an mROS v1 settings header to check the types against: the app's "
+                             "mros_usr_config.h and the library's mros_packet_config.h, the one "
+                             'the build includes first first (repeatable; %s)' % default)
 
 
-def _add_app_arguments(parser, type_help):
-    """Where an mROS v1 app's library and message types are."""
-    parser.add_argument('--mros-root', metavar='DIR',
-                        help='the mROS v1 checkout (default: the one APP_DIR is in, ../..)')
-    parser.add_argument('--type', dest='types', action='append', default=[],
-                        metavar='PKG/TYPE', help=type_help)
-    parser.add_argument('--msg-path', dest='msg_paths', action='append', default=[],
-                        metavar='DIR', help='where packages are: source trees or installed '
-                                            "prefixes (default: app.json's catkin_ws_dir and "
-                                            'the ROS environment)')
-
-
-def _add_fit_strict_argument(parser):
+def _add_fit_strict(parser):
     parser.add_argument('--fit-strict', action='store_true',
                         help="refuse too, instead of warning, what only might not fit the "
                              "library's settings: a frame without a largest size (heap "
                              'storage), a connection header that fits only short names')
 
 
-def _add_header_arguments(parser):
+def _add_header_form(parser):
     """What the headers hold: storage, bounds, definition text."""
     parser.add_argument('--storage', choices=STORAGE_KINDS, default=DEFAULT_STORAGE,
                         help='strings and variable arrays as std::string/std::vector (heap, '
@@ -156,6 +95,87 @@ def _add_header_arguments(parser):
                              'sum and what ROS tools decode from the text are the same)')
 
 
+def _add_app(parser):
+    """Where an mROS v1 app and its library are."""
+    parser.add_argument('--mros-root', metavar='DIR',
+                        help='the mROS v1 checkout (default: the one APP_DIR is in, ../..)')
+    _add_types(parser, "the app's app.json")
+    _add_msg_paths(parser, "app.json's catkin_ws_dir and the ROS environment")
+
+
+# The subcommands.
+
+def _add_generate(subparsers):
+    parser = subparsers.add_parser(
+        'generate', help='the headers of .msg and .srv files (generator mode)',
+        description="The headers of .msg and .srv files of one package, with gencpp's "
+                    'arguments: what catkin runs once per package.')
+    parser.add_argument('files', nargs='+', metavar='FILE', help='a .msg or .srv file')
+    parser.add_argument('-p', dest='package', required=True, help='package of the files')
+    parser.add_argument('-o', dest='output_dir', required=True,
+                        help='output directory, <include root>/<package>')
+    parser.add_argument('-I', dest='include_paths', action='append', default=[],
+                        metavar='PKG:DIR', help='msg directory of a package (repeatable)')
+    _add_template_dir(parser)
+    parser.add_argument('--export-dir', metavar='DIR',
+                        help='also put the headers of the types of FILE and of every type they '
+                             "contain, and their definitions, into the export dir DIR (catkin's "
+                             'MROS_EXPORT_DIR)')
+    _add_cmake_module(parser)
+    parser.add_argument('--record', dest='records', action='append', default=[], metavar='FILE',
+                        help="the run's record (repeatable): only the files whose definitions "
+                             'changed since the last run recorded there are generated again '
+                             '(catkin gives one per package, and one in the export dir)')
+    parser.add_argument('--all-of-package', action='store_true',
+                        help='FILE... are all the definitions the package has: the headers (and '
+                             'export dir claims) of any other, removed from the package, go')
+    parser.set_defaults(run=_generate)
+
+
+def _add_export(subparsers):
+    parser = subparsers.add_parser(
+        'export', help='the headers and aggregates one firmware needs',
+        description='The headers of the selected types and every type they contain, plus the '
+                    'per-firmware aggregates message_headers.h, message_class_specialization.h '
+                    'and msg_max_size.h for the selected types. Without --package or --type: '
+                    'every type in the workspaces.')
+    parser.add_argument('--workspace', dest='workspaces', action='append', default=[], metavar='WS',
+                        help='catkin/colcon workspace or source tree, searched for packages '
+                             '(repeatable)')
+    parser.add_argument('--package', dest='packages', action='append', default=[],
+                        metavar='PKG', help='export every type of PKG (repeatable)')
+    _add_types(parser, 'every type of the packages')
+    parser.add_argument('-o', dest='output_dir', required=True, metavar='DIR',
+                        help='include root to write to')
+    _add_msg_paths(parser, 'the ROS environment')
+    parser.add_argument('--underlay', dest='prefixes', action='append', metavar='PREFIX',
+                        help='installed prefix holding share/<pkg>/msg, instead of the ROS '
+                             "environment (repeatable; default: rospkg's packages on "
+                             'ROS_PACKAGE_PATH, then the spaces on CMAKE_PREFIX_PATH)')
+    _add_source_export_dir(parser, ': an underlay whose headers serve where they have the form '
+                                   'asked for (heap storage, full text), so that only the '
+                                   'aggregates are written')
+    parser.add_argument('--variable-size-budget', type=int, metavar='BYTES',
+                        default=DEFAULT_VARIABLE_SIZE_BUDGET,
+                        help='PUB_MSG_MAX_SIZE share of a type without an upper size '
+                             '(default: %(default)s)')
+    parser.add_argument('--only', choices=EXPORT_PARTS[1:],
+                        help='write only the headers, or only the per-firmware aggregates')
+    _add_template_dir(parser)
+    _add_header_form(parser)
+    parser.add_argument('--record', metavar='FILE',
+                        help="keep the run's record in FILE, and do nothing when it says that "
+                             'nothing the output comes from changed; FILE is also a make rule '
+                             'naming every .msg/.srv and options file the headers come from')
+    _add_settings(parser, 'each setting too small for a type is one error line with the value '
+                          'it needs')
+    _add_fit_strict(parser)
+    parser.add_argument('--quiet', action='store_true',
+                        help='say nothing when the run record says the headers are up to date '
+                             '(the make fragment runs genmros on every make)')
+    parser.set_defaults(run=_export)
+
+
 def _add_printers(subparsers):
     for name, help_text, run in (
             ('make-fragment', "print the path of genmros.mk, the fragment an mROS v1 app's "
@@ -167,7 +187,7 @@ def _add_printers(subparsers):
                               'CMAKE_PREFIX_PATH, catkin runs genmros (for installs that cannot '
                               'write /etc/ros/genmsg: ROS Noetic, a user, a venv)', _catkin_prefix),
             ('cmake-names', 'print genmros-names.cmake, the names the CMake module and the catkin '
-                            'generator take from genmros (the installed copy is this output)',
+                            'generator take from genmros (they write it at configure time)',
              _cmake_names)):
         parser = subparsers.add_parser(name, help=help_text, description=help_text)
         parser.set_defaults(run=run)
@@ -188,7 +208,7 @@ def _add_export_dir_commands(subparsers):
                     "packages' run records in it go.")
     parser.add_argument('--export-dir', required=True, metavar='DIR')
     parser.add_argument('--cmake-file', required=True, metavar='FILE')
-    _add_catkin_arguments(parser)
+    _add_cmake_module(parser)
     parser.set_defaults(run=_catkin_export_dir)
 
 
@@ -207,16 +227,15 @@ def _add_mros_v1_pc(subparsers):
                              'program run with qemu-arm (default); native: this PC')
     parser.add_argument('-o', dest='build_dir', metavar='DIR',
                         help='build directory (default: APP_DIR/build-pc-TARGET)')
-    _add_app_arguments(parser, 'a message type the app uses (repeatable; default: those of '
-                               'app.json)')
-    _add_header_arguments(parser)
+    _add_app(parser)
+    _add_header_form(parser)
     parser.add_argument('-j', dest='jobs', type=int, default=os.cpu_count() or 1,
                         help='parallel make jobs (default: the number of CPUs)')
     parser.add_argument('--no-fit-check', action='store_true',
                         help="build even where the app's types do not fit the library's "
                              "settings (the check in genmros' make step and in ros.cpp); the "
                              'program will then overrun what the check names')
-    _add_fit_strict_argument(parser)
+    _add_fit_strict(parser)
     parser.add_argument('--sanitize', action='store_true',
                         help='build library, stand-ins and app with AddressSanitizer and '
                              'UndefinedBehaviorSanitizer (with --target native), so that an '
@@ -229,19 +248,41 @@ def _add_mros_v1_pc(subparsers):
     parser.set_defaults(run=_mros_v1_pc)
 
 
-def _parser():
+def _add_mros_v1_fit(subparsers):
+    parser = subparsers.add_parser(
+        'mros-v1-fit', help="an mROS v1 app's message types against its library's settings",
+        description="One table row per message type of an mROS v1 app (or of an export dir): "
+                    'its definition text, the connection headers ROS nodes send for it, its '
+                    "largest frame, and for each of the library's settings (header buffers, "
+                    "type name field, memory pools) 'ok' or the value it needs; then the "
+                    "library's tables and the lines a build would stop with. Exits 1 if a "
+                    'build would stop.')
+    parser.add_argument('app_dir', metavar='APP_DIR', nargs='?',
+                        help="the app's directory (mros_ws/<app>)")
+    _add_source_export_dir(parser, ', reported instead of an app')
+    _add_settings(parser, "default for an app: the app's mros_usr_config.h and the library's "
+                          'mros_packet_config.h')
+    _add_app(parser)
+    _add_header_form(parser)
+    parser.set_defaults(run=_mros_v1_fit)
+
+
+SUBCOMMANDS = (_add_generate, _add_export, _add_printers, _add_export_dir_commands,
+               _add_mros_v1_pc, _add_mros_v1_fit)
+
+
+def build_parser():
+    """genmros' argument parser, and the names of its subcommands."""
     parser = argparse.ArgumentParser(prog='genmros', description=DESCRIPTION,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument('--version', action='version', version='genmros %s' % __version__)
-    subparsers = parser.add_subparsers(metavar='SUBCOMMAND')
-    _add_generate(subparsers)
-    _add_export(subparsers)
-    _add_printers(subparsers)
-    _add_export_dir_commands(subparsers)
-    _add_mros_v1_pc(subparsers)
-    _add_mros_v1_fit(subparsers)
-    return parser, set(subparsers.choices)
+    subparsers = parser.add_subparsers(dest='subcommand', metavar='SUBCOMMAND')
+    for add in SUBCOMMANDS:
+        add(subparsers)
+    return parser, list(subparsers.choices)
 
+
+# What each subcommand runs.
 
 def _generate(options):
     from colcon_mros.generator.ros_environment import require_ros_python
@@ -254,14 +295,14 @@ def _generate(options):
                    options.all_of_package)
 
 
-def export_request(options):
-    """The :class:`~colcon_mros.export.firmware_export.ExportRequest` of
-    ``genmros export``'s options."""
-    from colcon_mros.export.firmware_export import ExportRequest
+def _export(options):
+    from colcon_mros.generator.ros_environment import require_ros_python
+    require_ros_python()
+    from colcon_mros.export.firmware_export import ExportRequest, export  # needs genmsg and empy
     from colcon_mros.generator.workspace import split_msg_paths
     prefixes, workspaces = split_msg_paths(options.msg_paths)
     prefixes = (options.prefixes or []) + prefixes
-    return ExportRequest(
+    result = export(ExportRequest(
         output_dir=options.output_dir, prefixes=prefixes or None,
         workspaces=options.workspaces + workspaces,
         package_names=options.packages, type_names=options.types,
@@ -269,14 +310,7 @@ def export_request(options):
         only=options.only or EXPORT_PARTS[0], record=options.record,
         storage_kind=options.storage, option_files=options.option_files,
         definition_text=options.definition_text, export_dir=options.export_dir,
-        library_settings=options.library_settings, fit_strict=options.fit_strict)
-
-
-def _export(options):
-    from colcon_mros.generator.ros_environment import require_ros_python
-    require_ros_python()
-    from colcon_mros.export.firmware_export import export  # needs genmsg and empy
-    result = export(export_request(options))
+        library_settings=options.library_settings, fit_strict=options.fit_strict))
     for warning in result.warnings:
         print('genmros: warning: %s' % warning, file=sys.stderr)
     if result.up_to_date:
@@ -316,41 +350,20 @@ def _prune_export(options):
         print('genmros: removed %s' % os.path.join(options.export_dir, relative))
 
 
-def _add_mros_v1_fit(subparsers):
-    parser = subparsers.add_parser(
-        'mros-v1-fit', help="an mROS v1 app's message types against its library's settings",
-        description="One table row per message type of an mROS v1 app (or of an export dir): "
-                    'its definition text, the connection headers ROS nodes send for it, its '
-                    "largest frame, and for each of the library's settings (header buffers, "
-                    "type name field, memory pools) 'ok' or the value it needs; then the "
-                    "library's tables and the lines a build would stop with. Exits 1 if a "
-                    'build would stop.')
-    parser.add_argument('app_dir', metavar='APP_DIR', nargs='?',
-                        help="the app's directory (mros_ws/<app>)")
-    parser.add_argument('--export-dir', metavar='DIR',
-                        help='report the types of this export dir instead of an app\'s')
-    parser.add_argument('--mros-v1-settings', dest='library_settings', action='append',
-                        default=[], metavar='FILE',
-                        help="the settings headers (default for an app: the app's "
-                             "mros_usr_config.h and the library's mros_packet_config.h)")
-    _add_app_arguments(parser, "a message type (repeatable; default: the app's app.json, or "
-                               'every type of the export dir)')
-    _add_header_arguments(parser)
-    parser.set_defaults(run=_mros_v1_fit)
-
-
-def _mros_v1_fit(options):
-    from colcon_mros.generator.ros_environment import require_ros_python
-    require_ros_python()
-    from colcon_mros.targets.mros_v1_pc.fit_report import report  # needs genmsg
-    text, stops = report(options)
-    sys.stdout.write(text)
-    return 1 if stops else 0
+def _catkin_export_dir(options):
+    from colcon_mros.integrations.catkin_export_dir import configure_export_dir
+    configure_export_dir(options.export_dir, options.cmake_file, options.cmake_module)
 
 
 def _mros_v1_pc(options):
-    from colcon_mros.targets.mros_v1_pc import build
-    program = build.build(options)
+    from colcon_mros.mros_v1.pc_target import build
+    program = build.build(build.PcBuild(
+        app_dir=options.app_dir, mros_root=options.mros_root, target=options.target,
+        build_dir=options.build_dir, types=options.types, msg_paths=options.msg_paths,
+        storage=options.storage, option_files=options.option_files,
+        definition_text=options.definition_text, jobs=options.jobs,
+        fit_check=not options.no_fit_check, fit_strict=options.fit_strict,
+        sanitize=options.sanitize, verbose=options.verbose))
     print('genmros: built %s\n  run it with ROS_MASTER_URI and ROS_IP set: %s'
           % (program, ' '.join(build.runner(options.target) + [program])))
     if options.run_program:
@@ -358,21 +371,38 @@ def _mros_v1_pc(options):
         build.run_program(program, options.target)
 
 
-def _catkin_export_dir(options):
-    from colcon_mros.integrations.catkin_export_dir import configure_export_dir
-    configure_export_dir(options.export_dir, options.cmake_file, options.cmake_module)
+def _mros_v1_fit(options):
+    from colcon_mros.generator.ros_environment import require_ros_python
+    require_ros_python()
+    from colcon_mros.mros_v1 import report  # needs genmsg
+    from colcon_mros.mros_v1.pc_target.build import App, find_app
+    form = (options.storage, options.option_files)
+    if options.export_dir:
+        fit, settings = report.export_dir_fit(options.export_dir, options.types,
+                                              options.library_settings, *form)
+    elif options.app_dir:
+        fit, settings = report.app_fit(App(*find_app(options.app_dir, options.mros_root)),
+                                       options.types, options.msg_paths,
+                                       options.library_settings, *form)
+    else:
+        raise GenmrosError('give an app directory, or --export-dir')
+    text, stops = report.report(fit, settings)
+    sys.stdout.write(text)
+    return 1 if stops else 0
 
 
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else list(argv)
-    parser, subcommands = _parser()
-    if argv and argv[0] not in subcommands and argv[0] not in ('-h', '--help', '--version'):
-        argv = ['generate'] + argv
-    options = parser.parse_args(argv)
-    if not hasattr(options, 'run'):
-        parser.print_usage(sys.stderr)
-        print('genmros: error: give a .msg or .srv file, or a subcommand (genmros --help)',
-              file=sys.stderr)
+    genmros, subcommands = build_parser()
+    if argv and not argv[0].startswith('-') and argv[0] not in subcommands:
+        genmros.print_usage(sys.stderr)
+        print("genmros: error: unknown subcommand '%s' (the subcommands: %s)"
+              % (argv[0], ', '.join(subcommands)), file=sys.stderr)
+        return 2
+    options = genmros.parse_args(argv)
+    if options.subcommand is None:
+        genmros.print_usage(sys.stderr)
+        print('genmros: error: give a subcommand (genmros --help lists them)', file=sys.stderr)
         return 2
     try:
         return options.run(options) or 0

@@ -25,7 +25,7 @@ import subprocess
 import sys
 import tempfile
 
-from colcon_mros.targets.mros_v1_pc.ros_graph import (DELIVERY_TIMEOUT, Board, CatkinWorkspace,
+from colcon_mros.mros_v1.pc_target.ros_graph import (DELIVERY_TIMEOUT, Board, CatkinWorkspace,
                                                       RosGraph)
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))

@@ -9,7 +9,7 @@ import os
 import shutil
 import tempfile
 
-from colcon_mros.targets.mros_v1_pc.ros_graph import CatkinWorkspace
+from colcon_mros.mros_v1.pc_target.ros_graph import CatkinWorkspace
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TEST_WS = os.path.join(REPO, 'test_ws')

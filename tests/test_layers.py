@@ -1,7 +1,8 @@
 """The package's layers: every module imports only its own layer and the
-layers below it (cli, targets, integrations, export, generator, and at the
-bottom the package root with errors), lazy imports inside functions
-included."""
+layers below it, lazy imports inside functions included. The mROS v1
+library's subpackage has two: what it is (settings, rules, fit check), which
+the export uses, and what runs it (its PC target, the fit report), which
+uses the export."""
 
 import ast
 import os
@@ -9,15 +10,20 @@ import os
 from conftest import REPO
 
 PACKAGE = os.path.join(REPO, 'colcon_mros')
-# Top first; a module's layer is its first name below colcon_mros.
-LAYERS = ['cli', 'targets', 'integrations', 'export', 'generator', '']
+# Top first; a module's layer is the longest of these its name below
+# colcon_mros starts with.
+LAYERS = ['cli', 'mros_v1.report', 'mros_v1.pc_target', 'integrations', 'export', 'mros_v1',
+          'generator', '']
 TOP_MODULES = {'cli': 'cli', '__main__': 'cli', 'errors': '', '__init__': '', '__version__': ''}
 
 
 def _layer(dotted):
     """The layer of colcon_mros.<dotted>."""
-    first = dotted.split('.')[0] if dotted else ''
-    return TOP_MODULES.get(first, first)
+    first = dotted.split('.')[0]
+    if first in TOP_MODULES or not dotted:
+        return TOP_MODULES.get(first, '')
+    return max((layer for layer in LAYERS if layer and (dotted + '.').startswith(layer + '.')),
+               key=len)
 
 
 def _imports(path):
@@ -28,8 +34,7 @@ def _imports(path):
         if isinstance(node, ast.Import):
             names = [alias.name for alias in node.names]
         elif isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
-            names = [node.module + '.' + alias.name if node.module == 'colcon_mros' else
-                     node.module for alias in node.names]
+            names = [node.module + '.' + alias.name for alias in node.names]
         else:
             continue
         for name in names:
@@ -58,8 +63,12 @@ def test_every_import_goes_down_the_layers():
 def test_the_check_sees_an_upward_import(tmp_path):
     module = tmp_path / 'upward.py'
     module.write_text('def f():\n    from colcon_mros.integrations import installed_files\n')
-    assert list(_imports(str(module))) == ['integrations']
+    assert list(_imports(str(module))) == ['integrations.installed_files']
     assert LAYERS.index(_layer('integrations')) < LAYERS.index(_layer('generator.parse'))
+    # A subpackage's modules in two layers: the PC target above the export,
+    # the library's rules below it.
+    assert LAYERS.index(_layer('mros_v1.pc_target.build')) < LAYERS.index(_layer('export'))
+    assert LAYERS.index(_layer('export.firmware_export')) < LAYERS.index(_layer('mros_v1.rules'))
 
 
 # The trees beside the package; each shares code with the others only

@@ -7,7 +7,11 @@ aggregates, which cover the selected types only, under the output directory::
     OUT/mros_message_support.h
     OUT/<pkg>/<Type>.h
     OUT/message_headers.h, OUT/message_class_specialization.h, OUT/msg_max_size.h,
-    OUT/mros_v1_delivery.h (which message_headers.h includes)
+    OUT/mros_v1_delivery.h, OUT/mros_v1_fit_check.h (which message_headers.h includes)
+
+With the mROS v1 library's settings headers, the types are checked against
+them first (:mod:`colcon_mros.mros_v1.fit`); mros_v1_fit_check.h checks
+them again where the library compiles.
 
 Everything is rendered before anything is written, so a bad definition
 leaves OUT as it was, and OUT is switched to the new export in one step
@@ -21,19 +25,25 @@ import os
 import time
 
 from colcon_mros.errors import GenmrosError
-from colcon_mros.export.library_fit import Fit, read_settings
 from colcon_mros.export.export_dir import HEADER_FORM
 from colcon_mros.export.run_record import RunRecord, definition_directories, snapshot
-from colcon_mros.generator.library_needs import LibraryNeeds
 from colcon_mros.generator.model import ModelBuilder
 from colcon_mros.generator.output import is_generated, write_tree
 from colcon_mros.generator.parse import SpecLoader
 from colcon_mros.generator.defaults import (DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE,
                                             DEFAULT_VARIABLE_SIZE_BUDGET, EXPORT_PARTS)
-from colcon_mros.generator.render import Renderer
+from colcon_mros.generator.cpp import V1_DELIVERY_HEADER
+from colcon_mros.generator.render import FIRMWARE_AGGREGATES, Renderer
 from colcon_mros.generator.storage import storage_for
 from colcon_mros.generator.workspace import (environment_packages, installed_packages,
-                                             msg_search_path, workspace_packages)
+                                             msg_search_path, split_msg_paths,
+                                             workspace_packages)
+from colcon_mros.mros_v1.fit import Fit
+from colcon_mros.mros_v1.fit_check_header import FIT_CHECK_HEADER, TEMPLATE_DIR, fit_check_header
+from colcon_mros.mros_v1.settings import read_settings
+
+# The files an export writes for one firmware besides the message headers.
+FIRMWARE_FILES = FIRMWARE_AGGREGATES + (V1_DELIVERY_HEADER, FIT_CHECK_HEADER)
 
 
 class ExportResult:
@@ -102,7 +112,7 @@ class ExportRequest:
     export_dir: an export dir the types come from, whose headers serve
     where they have the form asked for; record: the run record's path;
     library_settings: the mROS v1 library's and app's settings headers to
-    check the firmware's types against (:mod:`colcon_mros.export.library_fit`),
+    check the firmware's types against (:mod:`colcon_mros.mros_v1.fit`),
     fit_strict: a type that only might not fit is refused too."""
 
     def __init__(self, *, output_dir, prefixes=None, workspaces=(), package_names=(),
@@ -195,12 +205,23 @@ class FirmwareTypes:
         self.firmware_messages = [builder.message(name) for name in dict.fromkeys(roots)]
 
 
+def firmware_messages(type_names, msg_paths, storage_kind, option_files):
+    """The models of the named types, as an export of them has them (found
+    on msg_paths: source trees and installed prefixes; none: the ROS
+    environment)."""
+    prefixes, workspaces = split_msg_paths(msg_paths)
+    request = ExportRequest(output_dir=None, prefixes=prefixes or None, workspaces=workspaces,
+                            type_names=type_names, storage_kind=storage_kind,
+                            option_files=option_files)
+    return FirmwareTypes(request).firmware_messages
+
+
 def export(request):
     """Run one :class:`ExportRequest`; returns an :class:`ExportResult`."""
     output_dir = request.output_dir
     renderer = Renderer(request.template_dir)
     if request.record:
-        run = renderer.fingerprint(request.run_arguments())
+        run = renderer.fingerprint(request.run_arguments(), [TEMPLATE_DIR])
         last = RunRecord.read(request.record)
         if last and last.is_current(run):
             return ExportResult([], [], [], [], up_to_date=True)
@@ -208,7 +229,7 @@ def export(request):
     types = FirmwareTypes(request)
     warnings = []
     if request.library_settings:
-        fit = Fit(LibraryNeeds(types.firmware_messages), read_settings(request.library_settings))
+        fit = Fit(types.firmware_messages, read_settings(request.library_settings))
         fit.refuse(request.fit_strict)
         warnings = fit.warnings
     packages, messages, services = types.packages, types.messages, types.services
@@ -224,7 +245,9 @@ def export(request):
         for service in services:
             files.update(renderer.service(service))
     if parts != 'headers':
-        files.update(renderer.aggregates(firmware_messages, request.variable_budget))
+        files.update(renderer.aggregates(firmware_messages, request.variable_budget,
+                                         [FIT_CHECK_HEADER]))
+        files.update(fit_check_header(firmware_messages))
 
     # Headers left over from types that no longer exist in an exported package.
     keep = {}

@@ -18,13 +18,11 @@ from colcon_mros.generator.aggregates import MaxSize
 from colcon_mros.generator.cpp import (SUPPORT_HEADER, SUPPORT_VERSION, V1_DELIVERY_HEADER,
                                        CppMessage, CppService, CppType)
 from colcon_mros.generator.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
-from colcon_mros.generator.library_needs import LibraryNeeds
 
 TEMPLATE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'templates')
 # The per-firmware aggregates the mROS v1 library includes, each rendered
 # from <name>.em.
-FIRMWARE_AGGREGATES = ('message_headers.h', 'message_class_specialization.h', 'msg_max_size.h',
-                       'mros_v1_fit_check.h')
+FIRMWARE_AGGREGATES = ('message_headers.h', 'message_class_specialization.h', 'msg_max_size.h')
 
 
 @functools.lru_cache(maxsize=None)
@@ -37,7 +35,8 @@ def _template_tokens(path):
     return tuple(iter(scanner.one, None))
 
 
-def _render(template_dir, template_name, **context):
+def render_template(template_dir, template_name, **context):
+    """The text of the empy template template_name in template_dir."""
     # empy 3 wraps sys.stdout in a proxy the first time it runs and refuses
     # to run again if the host has replaced sys.stdout since (a test runner
     # does, per test); rendering in such a process wraps the current one.
@@ -63,17 +62,19 @@ class Renderer:
     def __init__(self, template_dir=None):
         self.template_dir = template_dir or TEMPLATE_DIR
 
-    def fingerprint(self, arguments):
+    def fingerprint(self, arguments, template_dirs=()):
         """What a run's output depends on besides the definitions: the
-        genmros version, the templates and the run's arguments."""
+        genmros version, the templates (ours and those of template_dirs) and
+        the run's arguments."""
         digest = hashlib.sha256(('%s\n%r\n' % (__version__, arguments)).encode())
-        for name in sorted(os.listdir(self.template_dir)):
-            with open(os.path.join(self.template_dir, name), 'rb') as stream:
-                digest.update(name.encode() + b'\0' + stream.read())
+        for directory in [self.template_dir] + list(template_dirs):
+            for name in sorted(os.listdir(directory)):
+                with open(os.path.join(directory, name), 'rb') as stream:
+                    digest.update(name.encode() + b'\0' + stream.read())
         return 'genmros %s\n' % digest.hexdigest()
 
     def support_header(self):
-        return {SUPPORT_HEADER: _render(self.template_dir, SUPPORT_HEADER + '.em',
+        return {SUPPORT_HEADER: render_template(self.template_dir, SUPPORT_HEADER + '.em',
                                         support_version=SUPPORT_VERSION)}
 
     def _read(self, name):
@@ -81,23 +82,26 @@ class Renderer:
             return source.read()
 
     def message(self, message):
-        return {'%s.h' % message.full_name: _render(
+        return {'%s.h' % message.full_name: render_template(
             self.template_dir, 'msg.h.em', msg=CppMessage(message), support_header=SUPPORT_HEADER,
             support_version=SUPPORT_VERSION, genmros_version=__version__)}
 
     def service(self, service):
-        files = {'%s.h' % service.full_name: _render(self.template_dir, 'srv.h.em',
+        files = {'%s.h' % service.full_name: render_template(self.template_dir, 'srv.h.em',
                                                      srv=CppService(service))}
         files.update(self.message(service.request))
         files.update(self.message(service.response))
         return files
 
-    def aggregates(self, messages, variable_budget=DEFAULT_VARIABLE_SIZE_BUDGET):
+    def aggregates(self, messages, variable_budget=DEFAULT_VARIABLE_SIZE_BUDGET,
+                   library_headers=()):
         """The per-firmware files the mROS v1 communication library includes
-        (and the v1 delivery header, which message_headers.h includes)."""
+        (and the v1 delivery header, which message_headers.h includes, as it
+        includes library_headers: what the library adds to an export)."""
         context = {'messages': [CppType(message.full_name) for message in messages],
-                   'sizes': MaxSize(messages, variable_budget), 'needs': LibraryNeeds(messages)}
-        files = {name: _render(self.template_dir, name + '.em', **context)
+                   'sizes': MaxSize(messages, variable_budget),
+                   'library_headers': list(library_headers)}
+        files = {name: render_template(self.template_dir, name + '.em', **context)
                  for name in FIRMWARE_AGGREGATES}
         files[V1_DELIVERY_HEADER] = self._read(V1_DELIVERY_HEADER)
         return files
@@ -105,5 +109,5 @@ class Renderer:
 
 def render_export_cmake(include_dir, types, cmake_module):
     """An export dir's mros_export.cmake (see :mod:`colcon_mros.export.export_dir`)."""
-    return _render(TEMPLATE_DIR, 'mros_export.cmake.em', include_dir=include_dir, types=types,
+    return render_template(TEMPLATE_DIR, 'mros_export.cmake.em', include_dir=include_dir, types=types,
                    cmake_module=cmake_module)

@@ -8,9 +8,9 @@ again.
 """
 
 from colcon_mros import __version__
-from colcon_mros.generator.cpp import SUPPORT_HEADER, V1_DELIVERY_HEADER
+from colcon_mros.export.firmware_export import FIRMWARE_FILES
+from colcon_mros.generator.cpp import SUPPORT_HEADER
 from colcon_mros.generator.definition import SERVICE_HALVES
-from colcon_mros.generator.render import FIRMWARE_AGGREGATES
 
 NAMES_FILE = 'genmros-names.cmake'
 
@@ -22,7 +22,7 @@ def cmake_names():
          'the version of colcon-mros'),
         ('GENMROS_SUPPORT_HEADER', [SUPPORT_HEADER],
          'the support header every generated header includes, at the include root'),
-        ('GENMROS_FIRMWARE_AGGREGATES', list(FIRMWARE_AGGREGATES) + [V1_DELIVERY_HEADER],
+        ('GENMROS_FIRMWARE_AGGREGATES', list(FIRMWARE_FILES),
          "the files genmros export writes for one firmware's types"),
         ('GENMROS_SERVICE_HALVES', list(SERVICE_HALVES),
          'a service <Srv> gives <Srv>.h and <Srv><half>.h for each of these'),

@@ -1,12 +1,16 @@
-"""colcon_mros.cli: every subcommand answers --help; a command line without
-one is generator mode, as catkin calls it."""
+"""colcon_mros.cli: every subcommand the parser has answers --help; a command
+line names its subcommand, and an unknown one is named as unknown."""
 
 import pytest
 
-from colcon_mros.cli import main
+from colcon_mros.cli import build_parser, main
 
-SUBCOMMANDS = ['generate', 'export', 'make-fragment', 'cmake-dir', 'catkin-prefix', 'prune-export',
-               'catkin-export-dir', 'mros-v1-pc']
+_, SUBCOMMANDS = build_parser()
+
+
+def test_the_parser_has_the_subcommands_the_docs_describe():
+    assert len(SUBCOMMANDS) >= 10 and {'generate', 'export', 'mros-v1-pc', 'mros-v1-fit'} <= set(
+        SUBCOMMANDS)
 
 
 @pytest.mark.parametrize('subcommand', SUBCOMMANDS)
@@ -21,16 +25,27 @@ def test_top_level_help_lists_the_subcommands(capsys):
     with pytest.raises(SystemExit):
         main(['--help'])
     out = capsys.readouterr().out
-    assert 'genmros FILE.msg|FILE.srv -p PKG -o OUTDIR' in out
+    assert 'genmros generate FILE.msg|FILE.srv -p PKG -o OUTDIR' in out
     for subcommand in SUBCOMMANDS:
-        assert subcommand in out
+        assert '\n    %s' % subcommand in out
 
 
 def test_no_arguments_is_one_line_and_exit_2(capsys):
     assert main([]) == 2
-    assert 'genmros: error: give a .msg or .srv file, or a subcommand' in capsys.readouterr().err
+    assert capsys.readouterr().err.splitlines()[-1] == (
+        'genmros: error: give a subcommand (genmros --help lists them)')
 
 
-def test_a_file_without_subcommand_is_generator_mode(tmp_path, capsys):
-    assert main([str(tmp_path / 'Missing.msg'), '-p', 'demo', '-o', str(tmp_path / 'out')]) == 1
-    assert capsys.readouterr().err.startswith('genmros: error: %s: cannot read file' % (tmp_path / 'Missing.msg'))
+@pytest.mark.parametrize('argv', [['exprot', '-o', 'out'], ['Missing.msg', '-p', 'demo', '-o', 'x']])
+def test_an_unknown_subcommand_is_named_with_the_list(argv, capsys):
+    assert main(argv) == 2
+    assert capsys.readouterr().err.splitlines()[-1] == (
+        "genmros: error: unknown subcommand '%s' (the subcommands: %s)"
+        % (argv[0], ', '.join(SUBCOMMANDS)))
+
+
+def test_generate_reads_its_files(tmp_path, capsys):
+    assert main(['generate', str(tmp_path / 'Missing.msg'), '-p', 'demo', '-o',
+                 str(tmp_path / 'out')]) == 1
+    assert capsys.readouterr().err.startswith('genmros: error: %s: cannot read file'
+                                              % (tmp_path / 'Missing.msg'))

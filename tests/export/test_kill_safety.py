@@ -153,7 +153,7 @@ def test_generator_mode_kill_between_renames_leaves_no_temporary(tmp_path):
     package = str(tmp_path / 'src' / 'kill_ws')
     write_tree(package, {'package.xml': package_xml('kill_ws'), 'srv/Ask.srv': 'int32 a\n---\nint32 b\n'})
     output = str(tmp_path / 'include' / 'kill_ws')
-    arguments = [os.path.join(package, 'srv', 'Ask.srv'), '-p', 'kill_ws', '-o', output]
+    arguments = ['generate', os.path.join(package, 'srv', 'Ask.srv'), '-p', 'kill_ws', '-o', output]
     result = subprocess.run([sys.executable, '-c', LAUNCHER, 'between-renames'] + arguments,
                             cwd=REPO, capture_output=True, text=True)
     assert result.returncode == -signal.SIGKILL, result.stderr

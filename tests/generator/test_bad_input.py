@@ -91,7 +91,7 @@ def test_bad_definition_in_generator_mode(workspace, files, location, problem):
     write_tree(package, files)
     target = [name for name in files if name.startswith(('msg/Bad', 'srv/Bad'))][0]
     before = snapshot(output)
-    result = run_genmros(os.path.join(package, target), '-p', 'mros_bad', '-o', os.path.join(output, 'mros_bad'),
+    result = run_genmros('generate', os.path.join(package, target), '-p', 'mros_bad', '-o', os.path.join(output, 'mros_bad'),
                          '-I', 'mros_bad:' + os.path.join(package, 'msg'),
                          '-I', 'std_msgs:/usr/share/std_msgs/msg', check=False)
     assert_one_line_error(result, os.path.join(package, location), problem)
@@ -145,7 +145,7 @@ def test_unwritable_output_directory(workspace, tmp_path):
 
 
 def test_missing_input_file(tmp_path):
-    result = run_genmros(str(tmp_path / 'Nope.msg'), '-p', 'mros_bad', '-o', str(tmp_path / 'out' / 'mros_bad'),
+    result = run_genmros('generate', str(tmp_path / 'Nope.msg'), '-p', 'mros_bad', '-o', str(tmp_path / 'out' / 'mros_bad'),
                          check=False)
     assert_one_line_error(result, str(tmp_path / 'Nope.msg'), 'cannot read file')
     assert not (tmp_path / 'out').exists()
@@ -154,7 +154,7 @@ def test_missing_input_file(tmp_path):
 def test_bad_include_flag(tmp_path):
     source = tmp_path / 'Good.msg'
     source.write_text(GOOD_MESSAGE)
-    result = run_genmros(str(source), '-p', 'mros_bad', '-o', str(tmp_path / 'out'), '-I', 'std_msgs', check=False)
+    result = run_genmros('generate', str(source), '-p', 'mros_bad', '-o', str(tmp_path / 'out'), '-I', 'std_msgs', check=False)
     assert_one_line_error(result, "bad include path 'std_msgs' (expected PACKAGE:DIRECTORY)")
 
 
@@ -204,7 +204,7 @@ def test_relative_output_paths_whose_first_part_is_new(tmp_path, mode):
                      os.path.join('new', 'include'), '--underlay', '/usr']
         written = tmp_path / 'new' / 'include' / 'mros_test' / 'PersonalData.h'
     else:
-        arguments = [os.path.join(TEST_WS, 'src', 'mros_test', 'msg', 'PersonalData.msg'), '-p', 'mros_test',
+        arguments = ['generate', os.path.join(TEST_WS, 'src', 'mros_test', 'msg', 'PersonalData.msg'), '-p', 'mros_test',
                      '-o', os.path.join('new', 'mros_test')]
         written = tmp_path / 'new' / 'mros_test' / 'PersonalData.h'
     result = subprocess.run([sys.executable, '-m', 'colcon_mros'] + arguments, cwd=str(tmp_path),

@@ -57,7 +57,7 @@ def test_generator_mode_writes_what_export_writes(test_ws_export, tmp_path):
                          glob.glob(os.path.join(TEST_WS, 'src', '*', 'srv', '*.srv')))
     for path in definitions:
         package = path.split(os.sep)[-3]
-        run_genmros(path, '-p', package, '-o', str(tmp_path / package), *flags)
+        run_genmros('generate', path, '-p', package, '-o', str(tmp_path / package), *flags)
     generated = _tree(str(tmp_path))
     assert 'mros_test/LookupPersonRequest.h' in generated and 'mros_message_support.h' in generated
     for relative in generated:
@@ -211,14 +211,14 @@ def test_template_directory_override(tmp_path):
     with open(os.path.join(templates, 'msg.h.em'), 'a') as stream:
         stream.write('// custom template\n')
     output = str(tmp_path / 'include' / 'mros_test')
-    run_genmros(os.path.join(TEST_WS, 'src', 'mros_test', 'msg', 'PersonalData.msg'), '-p', 'mros_test',
+    run_genmros('generate', os.path.join(TEST_WS, 'src', 'mros_test', 'msg', 'PersonalData.msg'), '-p', 'mros_test',
                 '-o', output, '-e', templates)
     with open(os.path.join(output, 'PersonalData.h')) as stream:
         assert stream.read().endswith('// custom template\n')
 
 
 @pytest.mark.parametrize('arguments, expected', [
-    (['--help'], ['genmros FILE.msg|FILE.srv -p PKG -o OUTDIR', 'genmros export']),
+    (['--help'], ['genmros generate FILE.msg|FILE.srv -p PKG -o OUTDIR', 'genmros export']),
     (['export', '--help'], ['--workspace WS', '--package PKG', '--type PKG/TYPE', '--variable-size-budget']),
 ])
 def test_help_describes_both_modes(arguments, expected):
@@ -232,7 +232,7 @@ def test_generator_mode_fills_an_export_dir_with_the_whole_closure(test_ws_expor
     for package in ('mros_test_base', 'mros_test'):
         flags += ['-I', '%s:%s' % (package, os.path.join(TEST_WS, 'src', package, 'msg'))]
     export_dir = tmp_path / 'export'
-    run_genmros(os.path.join(TEST_WS, 'src', 'mros_test', 'srv', 'LookupPerson.srv'), '-p', 'mros_test',
+    run_genmros('generate', os.path.join(TEST_WS, 'src', 'mros_test', 'srv', 'LookupPerson.srv'), '-p', 'mros_test',
                 '-o', str(tmp_path / 'devel' / 'mros_test'), '--export-dir', str(export_dir), *flags)
     assert _tree(str(export_dir / 'include')) == [
         'geometry_msgs/Point.h', 'mros_message_support.h', 'mros_test/LookupPerson.h',

@@ -513,7 +513,7 @@ def test_refused_definition(good_export, tmp_path, package_name, files, target, 
                 '-I', 'std_msgs:/usr/share/std_msgs/msg']
     if not os.path.isdir(os.path.join(package, 'msg')):
         includes = includes[2:]
-    result = run_genmros(os.path.join(package, target), '-p', package_name,
+    result = run_genmros('generate', os.path.join(package, target), '-p', package_name,
                          '-o', os.path.join(output, package_name), *includes, check=False)
     assert_one_line_error(result, location, problem)
     assert snapshot(output) == before
@@ -524,7 +524,7 @@ def test_non_ascii_package_in_generator_mode(tmp_path):
     generator mode takes the name from -p."""
     source = tmp_path / 'A.msg'
     source.write_text('int32 a\n')
-    result = run_genmros(str(source), '-p', 'paquete_\u00f1', '-o', str(tmp_path / 'out' / 'x'), check=False)
+    result = run_genmros('generate', str(source), '-p', 'paquete_\u00f1', '-o', str(tmp_path / 'out' / 'x'), check=False)
     assert_one_line_error(result, str(source) + ':',
                            "package name 'paquete_\u00f1' cannot be a C++ namespace: not an ASCII identifier")
     assert not (tmp_path / 'out').exists()

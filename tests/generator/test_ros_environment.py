@@ -25,7 +25,7 @@ def test_help_needs_no_genmsg():
 
 def test_generating_without_genmsg_says_what_to_do():
     for arguments in (['export', '--workspace', TEST_WS, '-o', '/tmp/unused'],
-                      [TEST_WS + '/src/mros_test/msg/PersonalData.msg', '-p', 'mros_test', '-o', '/tmp/unused']):
+                      ['generate', TEST_WS + '/src/mros_test/msg/PersonalData.msg', '-p', 'mros_test', '-o', '/tmp/unused']):
         result = _genmros_without_genmsg(*arguments)
         assert result.returncode == 1
         assert result.stderr.splitlines() == [

@@ -170,7 +170,7 @@ def test_import_rebuilds_when_the_export_changes(firmware, catkin_export, tmp_pa
     copy = new_workspace(str(tmp_path / 'changed'))
     with open(os.path.join(copy, 'src', 'mros_test_base', 'msg', 'Vector3i.msg'), 'a') as stream:
         stream.write('int32 w\n')
-    run(['genmros', os.path.join(copy, 'src', 'mros_test_base', 'msg', 'Vector3i.msg'),
+    run(['genmros', 'generate', os.path.join(copy, 'src', 'mros_test_base', 'msg', 'Vector3i.msg'),
          '-p', 'mros_test_base', '-o', os.path.join(export_dir, 'include', 'mros_test_base')],
         copy)
     shutil.copy(os.path.join(copy, 'src', 'mros_test_base', 'msg', 'Vector3i.msg'),

@@ -140,7 +140,7 @@ macro(_generate_module_mros ARG_PKG ARG_GEN_OUTPUT_DIR ARG_GENERATED_FILES)
     endforeach()
     add_custom_command(OUTPUT ${_genmros_records}
       BYPRODUCTS ${_genmros_headers}
-      COMMAND "${GENMROS_BIN}" ${_genmros_files} ${_genmros_iflags} -p "${ARG_PKG}"
+      COMMAND "${GENMROS_BIN}" generate ${_genmros_files} ${_genmros_iflags} -p "${ARG_PKG}"
         -o "${ARG_GEN_OUTPUT_DIR}" ${_genmros_export_args} ${_genmros_record_args}
         --all-of-package
       DEPENDS "${GENMROS_BIN}" ${_genmros_files} ${_genmros_depends} "${_genmros_inputs}"

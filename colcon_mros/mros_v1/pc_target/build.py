@@ -8,6 +8,7 @@ configuration for the PC target (:mod:`.asp_cfg`) and runs make with
 PC target's ASP, lwIP and mbed stand-ins, the app, the link.
 """
 
+import dataclasses
 import json
 import os
 import re
@@ -17,9 +18,10 @@ import sys
 import tempfile
 
 from colcon_mros.errors import GenmrosError
-from colcon_mros.generator.library_needs import SETTINGS_HEADERS
+from colcon_mros.generator.defaults import DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE
 from colcon_mros.integrations.installed_files import MAKE_FRAGMENT, installed_file
-from colcon_mros.targets.mros_v1_pc.asp_cfg import read_config, write_kernel_config
+from colcon_mros.mros_v1.pc_target.asp_cfg import read_config, write_kernel_config
+from colcon_mros.mros_v1.rules import SETTINGS_HEADERS
 
 TARGET_DIR = os.path.dirname(os.path.abspath(__file__))
 MAKEFILE = os.path.join(TARGET_DIR, 'mros_v1_pc.mk')
@@ -37,6 +39,27 @@ _ORIGIN = re.compile(r"^# makefile \(from '(.*)', line \d+\)$")
 _ASSIGNMENT = re.compile(r'^([A-Za-z_][A-Za-z0-9_]*) :{0,2}= ?(.*)$')
 _REFERENCE = re.compile(r'\$[({]([A-Za-z_][A-Za-z0-9_]*)[)}]')
 _UNDEFINED = re.compile(r"undefined reference to `([A-Za-z_]\w*)'")
+
+
+@dataclasses.dataclass
+class PcBuild:
+    """What one ``genmros mros-v1-pc`` is asked for: the app, where it runs
+    (target 'arm' or 'native'), the headers' form, and the fit check."""
+
+    app_dir: str
+    mros_root: str = None  # default: the checkout the app is in
+    target: str = 'arm'
+    build_dir: str = None  # default: APP_DIR/build-pc-TARGET
+    types: tuple = ()  # default: the app's app.json
+    msg_paths: tuple = ()
+    storage: str = DEFAULT_STORAGE
+    option_files: tuple = ()
+    definition_text: str = DEFAULT_DEFINITION_TEXT
+    jobs: int = 1
+    fit_check: bool = True
+    fit_strict: bool = False
+    sanitize: bool = False
+    verbose: bool = False
 
 
 class App:
@@ -161,14 +184,25 @@ def find_mros_root(app_dir, given):
     return os.path.abspath(candidate)
 
 
-def check_tools(options):
-    if options.sanitize and options.target != 'native':
+def find_app(app_dir, mros_root=None):
+    """(app dir, mROS v1 checkout) of the app in app_dir (with its app.cfg),
+    in the checkout mros_root (default: the one it sits in)."""
+    if not os.path.isdir(app_dir):
+        raise GenmrosError('no such directory', app_dir)
+    if not os.path.isfile(os.path.join(app_dir, 'app.cfg')):
+        raise GenmrosError('no app.cfg: not an mROS v1 app', app_dir)
+    app_dir = os.path.abspath(app_dir)
+    return app_dir, find_mros_root(app_dir, mros_root)
+
+
+def check_tools(target, sanitize):
+    if sanitize and target != 'native':
         raise GenmrosError('--sanitize needs --target native (qemu-arm runs no sanitizer)')
-    compiler = ARM_COMPILER if options.target == 'arm' else 'g++'
+    compiler = ARM_COMPILER if target == 'arm' else 'g++'
     if shutil.which(compiler) is None:
         raise GenmrosError('%s not found: install %s' % (
             compiler, 'g++-arm-linux-gnueabihf (or use --target native)'
-            if options.target == 'arm' else 'g++'))
+            if target == 'arm' else 'g++'))
     if shutil.which('make') is None:
         raise GenmrosError('make not found: install make')
 
@@ -191,49 +225,47 @@ def _unresolved_task(config, linker_output):
     return None
 
 
-def build(options):
-    """Builds the app in steps, one line each; returns the program's path."""
-    app_dir = os.path.abspath(options.app_dir)
-    if not os.path.isdir(app_dir):
-        raise GenmrosError('no such directory', options.app_dir)
-    if not os.path.isfile(os.path.join(app_dir, 'app.cfg')):
-        raise GenmrosError('no app.cfg: not an mROS v1 app', options.app_dir)
-    mros_root = find_mros_root(app_dir, options.mros_root)
-    check_tools(options)  # make reads the app's Makefile next
+def build(request):
+    """Builds a PcBuild's app in steps, one line each; returns the program's path."""
+    app_dir, mros_root = find_app(request.app_dir, request.mros_root)
+    check_tools(request.target, request.sanitize)  # make reads the app's Makefile next
     app = App(app_dir, mros_root)
     # The library's mros.cfg is on the search path, as in ASP's own build.
     config = read_config(app.cfg, [os.path.join(app.mros_root, 'mros-lib'),
                                    os.path.join(TARGET_DIR, 'cfg', 'asp')])
-    types, msg_paths = app.message_types(options.types, options.msg_paths)
-    if not options.no_fit_check:
+    types, msg_paths = app.message_types(request.types, request.msg_paths)
+    if request.fit_check:
         from colcon_mros.generator.ros_environment import require_ros_python
         require_ros_python()
-        from colcon_mros.targets.mros_v1_pc import fit  # genmsg: the types' models
-        types_fit = fit.types_fit(types, msg_paths, library_settings(app), options.storage,
-                                  options.option_files)
-        types_fit.refuse(options.fit_strict)
-        for warning in types_fit.warnings:
+        # genmsg: the types' models
+        from colcon_mros.export.firmware_export import firmware_messages
+        from colcon_mros.mros_v1.fit import Fit
+        from colcon_mros.mros_v1.settings import read_settings
+        fit = Fit(firmware_messages(types, msg_paths, request.storage, request.option_files),
+                  read_settings(library_settings(app)))
+        fit.refuse(request.fit_strict)
+        for warning in fit.warnings:
             print('genmros: warning: %s' % warning)
-    flavour = options.target + ('-sanitize' if options.sanitize else '')
-    build_dir = os.path.abspath(options.build_dir or os.path.join(app.dir, 'build-pc-' + flavour))
+    flavour = request.target + ('-sanitize' if request.sanitize else '')
+    build_dir = os.path.abspath(request.build_dir or os.path.join(app.dir, 'build-pc-' + flavour))
     write_kernel_config(config, os.path.join(build_dir, 'cfg'))
     variables = {
         'MROS_ROOT': app.mros_root, 'APP_NAME': app.name, 'APP_DIRS': ' '.join(app.source_dirs),
         'APP_OBJS': ' '.join(app.objects), 'APP_CXXFLAGS': ' '.join(app.cxx_flags),
-        'TARGET': options.target, 'BUILD': build_dir,
-        'SANITIZER_FLAGS': SANITIZER_FLAGS if options.sanitize else '',
+        'TARGET': request.target, 'BUILD': build_dir,
+        'SANITIZER_FLAGS': SANITIZER_FLAGS if request.sanitize else '',
         'MROS_MSG_TYPES': ' '.join(types),
         'MROS_MSG_PATHS': ' '.join(msg_paths),
-        'MROS_MSG_DEFINITION_TEXT': options.definition_text,
-        'MROS_MSG_FLAGS': ' '.join(['--storage', options.storage] + [
-            '--options %s' % os.path.abspath(path) for path in options.option_files]),
-        'FIT_CHECK_FLAGS': '-DMROS_SKIP_FIT_CHECK' if options.no_fit_check else '',
+        'MROS_MSG_DEFINITION_TEXT': request.definition_text,
+        'MROS_MSG_FLAGS': ' '.join(['--storage', request.storage] + [
+            '--options %s' % os.path.abspath(path) for path in request.option_files]),
+        'FIT_CHECK_FLAGS': '-DMROS_SKIP_FIT_CHECK' if not request.fit_check else '',
         'GENMROS': 'env PYTHONPATH=%s %s -m colcon_mros' % (
             os.path.dirname(os.path.dirname(os.path.dirname(TARGET_DIR))), sys.executable),
         'GENMROS_MK': installed_file(MAKE_FRAGMENT),
     }
-    command = ['make', '--no-print-directory', '-f', MAKEFILE, '-j%d' % options.jobs] + \
-        ([] if options.verbose else ['-s']) + ['%s=%s' % item for item in sorted(variables.items())]
+    command = ['make', '--no-print-directory', '-f', MAKEFILE, '-j%d' % request.jobs] + \
+        ([] if request.verbose else ['-s']) + ['%s=%s' % item for item in sorted(variables.items())]
     program = os.path.join(build_dir, app.name)
     words = {'root': app.mros_root, 'name': app.name, 'program': program}
     for goal, line in STEPS:

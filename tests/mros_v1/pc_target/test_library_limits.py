@@ -16,7 +16,7 @@ import time
 
 import pytest
 
-from colcon_mros.targets.mros_v1_pc.ros_graph import (
+from colcon_mros.mros_v1.pc_target.ros_graph import (
     DELIVERY_TIMEOUT, PEER_IP, Board, RosGraph)
 from mros_v1_checkout import MROS_V1_ROOT
 from pc_target_apps import build_app, library_copy

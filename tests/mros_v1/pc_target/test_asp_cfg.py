@@ -1,4 +1,4 @@
-"""colcon_mros.targets.mros_v1_pc.asp_cfg: the PC target's TOPPERS/ASP configurator, on
+"""colcon_mros.mros_v1.pc_target.asp_cfg: the PC target's TOPPERS/ASP configurator, on
 app.cfg files of its own and on the real mROS v1 kernel configuration when a
 checkout is there (MROS_V1_ROOT, default ../shared/mros_v1)."""
 
@@ -8,10 +8,10 @@ import pytest
 
 from conftest import REPO
 from mros_v1_checkout import MROS_V1_ROOT
-from colcon_mros.targets.mros_v1_pc.asp_cfg import read_config, write_kernel_config
+from colcon_mros.mros_v1.pc_target.asp_cfg import read_config, write_kernel_config
 from colcon_mros.errors import GenmrosError
 
-PC_CFG = os.path.join(REPO, 'colcon_mros', 'targets', 'mros_v1_pc', 'cfg', 'asp')
+PC_CFG = os.path.join(REPO, 'colcon_mros', 'mros_v1', 'pc_target', 'cfg', 'asp')
 
 
 def _write(directory, name, text):

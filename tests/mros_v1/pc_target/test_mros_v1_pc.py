@@ -29,7 +29,7 @@ import xmlrpc.client
 
 import pytest
 
-from colcon_mros.targets.mros_v1_pc.ros_graph import (
+from colcon_mros.mros_v1.pc_target.ros_graph import (
     BOARD_IP, DELIVERY_TIMEOUT, PEER_IP, Board, RosGraph, sourced_environment)
 from conftest import REPO, run_genmros
 from fixtures.build_integration.tools import run

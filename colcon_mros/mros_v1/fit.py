@@ -1,69 +1,18 @@
-"""The fit check: a firmware's types against its mROS v1 library's settings.
+"""The fit check: a firmware's message types against its mROS v1 library's settings.
 
-The settings are ``#define``s in the library's and the app's configuration
-headers (``mros_packet_config.h`` of the library, ``mros_usr_config.h`` of
-the app's mros_config/ or the library's default); what the types need is
-:mod:`colcon_mros.generator.library_needs`. Each setting that is too small
-for a type is a :class:`Misfit`: one line naming the type, the setting, the
-file and line that set it, its value and the value needed. A type without a
-largest frame (a string or variable array in heap storage) only might not
-fit a memory pool: that is a warning, with bounded storage as the way to an
-exact answer.
+Each :data:`.rules.RULES` entry is checked for each type against the
+settings (:mod:`.settings`). A setting too small for a type is a
+:class:`Misfit`: one line naming the type, the setting, the file and line
+that set it, its value and the value needed. A connection header that fits
+only while the names are short, and a type without a largest frame (a
+string or variable array in heap storage), which only might not fit a
+memory pool, are warnings; :meth:`Fit.refuse` is the one place either
+becomes an error.
 """
 
-import re
-
 from colcon_mros.errors import GenmrosError, GenmrosProblems
-from colcon_mros.generator.library_needs import (PEER_NAME_MAX, POOL_KINDS, REPLY_BUFFER,
-                                                 REQUEST_BUFFER, SHORTEST_NAMES, TABLES,
-                                                 TOPIC_NAME_MAX, TYPENAME_MAX)
-
-_DEFINE = re.compile(r'^\s*#\s*define\s+([A-Za-z_]\w*)\s+(.*?)\s*(?://.*|/\*.*)?$')
-_NUMBER = re.compile(r'^\(?\s*(\d+)[uUlL]*\s*\)?$')
-_REFERENCE = re.compile(r'^\(?\s*([A-Za-z_]\w*)\s*\)?$')
-
-
-class Setting:
-    """One #define: its name, value, and where it is."""
-
-    def __init__(self, name, value, path, line):
-        self.name = name
-        self.value = value
-        self.path = path
-        self.line = line
-
-    def where(self):
-        return '%s:%d' % (self.path, self.line)
-
-
-def read_settings(paths):
-    """{name: Setting} of the numeric #defines in paths (a later file's
-    define of a name does not replace an earlier one's: list the file the
-    build includes first first). A define naming another is followed."""
-    raw = {}
-    for path in paths:
-        try:
-            with open(path, encoding='utf-8', errors='replace') as stream:
-                lines = stream.read().splitlines()
-        except OSError as error:
-            raise GenmrosError('cannot read the mROS v1 settings: %s' % error.strerror, path)
-        for number, line in enumerate(lines, 1):
-            match = _DEFINE.match(line)
-            if match and match.group(1) not in raw:
-                raw[match.group(1)] = (match.group(2), path, number)
-    settings = {}
-    for name, (text, path, line) in raw.items():
-        seen = {name}
-        while _REFERENCE.match(text) and _REFERENCE.match(text).group(1) in raw:
-            reference = _REFERENCE.match(text).group(1)
-            if reference in seen:
-                break
-            seen.add(reference)
-            text = raw[reference][0]
-        number = _NUMBER.match(text)
-        if number:
-            settings[name] = Setting(name, int(number.group(1)), path, line)
-    return settings
+from colcon_mros.mros_v1.rules import (PEER_NAME_MAX, RULES, TABLES, TOPIC_NAME_MAX,
+                                       FirmwareNeeds)
 
 
 class Misfit:
@@ -132,21 +81,20 @@ class Requirement:
 
 
 class Fit:
-    """A firmware's types (LibraryNeeds) against settings ({name: Setting}):
-    the misfits (errors) and the warnings, and each type's requirements."""
+    """A firmware's message types (the generator's models) against settings
+    ({name: Setting}): the misfits (errors) and the warnings, and each
+    type's requirements."""
 
-    def __init__(self, needs, settings):
-        self.needs = needs
+    def __init__(self, messages, settings):
+        self.needs = FirmwareNeeds(messages)
         self.settings = settings
         self.topic_name_max = _required(settings, TOPIC_NAME_MAX)
-        self.request_buffer = _required(settings, REQUEST_BUFFER)
-        self.reply_buffer = _required(settings, REPLY_BUFFER)
-        self.typename_max = _required(settings, TYPENAME_MAX)
-        self.pools = [(kind.use, largest_pool(settings, kind)) for kind in POOL_KINDS]
         self.longest_names = self.topic_name_max.value + PEER_NAME_MAX
+        self.rule_settings = [largest_pool(settings, rule.setting) if rule.is_pool
+                              else _required(settings, rule.setting) for rule in RULES]
         self.misfits = []
         self.warnings = []
-        for needed in needs.types:
+        for needed in self.needs.types:
             requirements = self.requirements(needed)
             self.misfits += [Misfit(needed.full_name, r.what, r.setting, r.assumed, r.needed)
                              if r.assumed is not None else
@@ -159,33 +107,26 @@ class Fit:
                    r.setting.value, r.names_budget)
                 for r in requirements if r.names_budget is not None]
             if needed.pool_block is None:
+                pools = [(rule.setting.use, setting)
+                         for rule, setting in zip(RULES, self.rule_settings) if rule.is_pool]
                 self.warnings.append(
                     '%s: no largest frame (%s has no bound): a frame may be larger than the '
                     'largest memory pool block (%s); bounded storage gives the exact need'
                     % (needed.full_name, needed.unbounded_reason,
                        ', '.join('%s: %s = %d at %s' % (use, pool.name, pool.value, pool.where())
-                                 for use, pool in self.pools)))
+                                 for use, pool in pools)))
 
     def requirements(self, needed):
-        """The Requirements of one TypeNeeds, one per setting it depends on."""
+        """The Requirements of one TypeNeeds, one per rule."""
         requirements = []
-        for what, setting, free in (
-                ("a ROS subscriber's connection header (definition text %d bytes, a topic of up "
-                 'to %d and a caller id of up to %d, and the NUL)'
-                 % (needed.text_bytes, self.topic_name_max.value, PEER_NAME_MAX),
-                 self.request_buffer, needed.subscriber_header),
-                ("a ROS publisher's connection header", self.reply_buffer,
-                 needed.publisher_header)):
-            requirements.append(Requirement(what, setting, free + SHORTEST_NAMES, free,
-                                            free + self.longest_names))
-        requirements += [
-            Requirement('its name with its NUL', self.typename_max, needed.type_name_size),
-            Requirement('its name with its NUL', self.topic_name_max, needed.type_name_size),
-        ]
-        for use, pool in self.pools:
-            requirements.append(Requirement(
-                'a frame of up to %s bytes, %s,' % (needed.max_frame, use), pool,
-                needed.pool_block))
+        for rule, setting in zip(RULES, self.rule_settings):
+            what = rule.describe(needed, self.topic_name_max.value)
+            amount = rule.amount(needed)
+            if rule.with_names:
+                requirements.append(Requirement(what, setting, rule.certain(needed), amount,
+                                                amount + self.longest_names))
+            else:
+                requirements.append(Requirement(what, setting, rule.certain(needed)))
         return requirements
 
     def refuse(self, strict=False):

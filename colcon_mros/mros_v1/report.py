@@ -2,7 +2,7 @@
 library's settings, one table row per type.
 
 For an app (``mros_ws/<app>``) the settings are those its build includes
-(:func:`.build.library_settings`) and the types those of its app.json or
+(:func:`.pc_target.build.library_settings`) and the types those of its app.json or
 ``--type``; for an export dir, the types it holds (or ``--type``) against
 the settings headers given. Each row shows what the type needs (definition
 text, the connection headers ROS nodes send, the largest frame) and, for
@@ -10,34 +10,36 @@ each setting, ``ok`` or the value it needs; then the library's tables beside
 the number of types, and the lines a build would stop with.
 """
 
-import os
-
 from colcon_mros.errors import GenmrosError
 from colcon_mros.export.export_dir import ExportDir
-from colcon_mros.generator.library_needs import PEER_NAME_MAX
-from colcon_mros.targets.mros_v1_pc.build import App, find_mros_root, library_settings
-from colcon_mros.targets.mros_v1_pc.fit import types_fit
+from colcon_mros.export.firmware_export import firmware_messages
+from colcon_mros.mros_v1.fit import Fit
+from colcon_mros.mros_v1.pc_target.build import library_settings
+from colcon_mros.mros_v1.rules import PEER_NAME_MAX
+from colcon_mros.mros_v1.settings import read_settings
 
 
-def _fit(options):
-    """The Fit of the types reported, and the settings headers read."""
-    if options.export_dir:
-        if not options.library_settings:
-            raise GenmrosError('with --export-dir, give the settings headers: --mros-v1-settings '
-                               "the app's mros_usr_config.h --mros-v1-settings the library's "
-                               'mros_packet_config.h')
-        exports = ExportDir(options.export_dir)
-        return types_fit(options.types or exports.types(), [exports.path],
-                         options.library_settings, options.storage,
-                         options.option_files), options.library_settings
-    if not options.app_dir:
-        raise GenmrosError('give an app directory, or --export-dir')
-    app_dir = os.path.abspath(options.app_dir)
-    app = App(app_dir, find_mros_root(app_dir, options.mros_root))
-    types, msg_paths = app.message_types(options.types, options.msg_paths)
-    settings_files = options.library_settings or library_settings(app)
-    return types_fit(types, msg_paths, settings_files, options.storage,
-                     options.option_files), settings_files
+def app_fit(app, types, msg_paths, settings_files, storage_kind, option_files):
+    """The Fit of an App's types (those given, else its app.json's) to its
+    settings (those given, else the headers its build includes), and the
+    settings headers read."""
+    types, msg_paths = app.message_types(types, msg_paths)
+    settings_files = list(settings_files) or library_settings(app)
+    messages = firmware_messages(types, msg_paths, storage_kind, option_files)
+    return Fit(messages, read_settings(settings_files)), settings_files
+
+
+def export_dir_fit(export_dir, types, settings_files, storage_kind, option_files):
+    """The Fit of an export dir's types (those given, else all it holds) to
+    the settings headers given, and those headers."""
+    if not settings_files:
+        raise GenmrosError('with --export-dir, give the settings headers: --mros-v1-settings '
+                           "the app's mros_usr_config.h --mros-v1-settings the library's "
+                           'mros_packet_config.h')
+    exports = ExportDir(export_dir)
+    messages = firmware_messages(list(types) or exports.types(), [exports.path], storage_kind,
+                                 option_files)
+    return Fit(messages, read_settings(settings_files)), list(settings_files)
 
 
 def _cell(requirement):
@@ -50,9 +52,9 @@ def _cell(requirement):
     return 'ok'
 
 
-def report(options):
-    """The report's text, and whether a build would stop."""
-    fit, settings_files = _fit(options)
+def report(fit, settings_files):
+    """The report of a Fit to the settings_files: its text, and whether a
+    build would stop."""
     lines = ['Settings: %s' % ', '.join(settings_files),
              "Connection headers: their bytes besides the topic and the ROS peer's caller id. "
              "'names <= N': fits while the two take at most N bytes together (with a topic of "

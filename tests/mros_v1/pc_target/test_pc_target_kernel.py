@@ -1,6 +1,6 @@
-"""The PC target's TOPPERS/ASP scheduling (colcon_mros/targets/mros_v1_pc/asp/kernel.c), on its
+"""The PC target's TOPPERS/ASP scheduling (colcon_mros/mros_v1/pc_target/asp/kernel.c), on its
 own: a program of ours (tests/fixtures/pc_target_kernel) configured from its
-own .cfg by colcon_mros.targets.mros_v1_pc.asp_cfg, as an mROS v1 app is, runs scenarios whose
+own .cfg by colcon_mros.mros_v1.pc_target.asp_cfg, as an mROS v1 app is, runs scenarios whose
 traces show ASP's rules: highest priority first and FIFO within one, a
 task whose priority is set going behind its equals, activation and wake-up
 requests queued up to 1, time-outs, delays and cyclic handlers on time, and
@@ -14,10 +14,10 @@ import subprocess
 import pytest
 
 from conftest import REPO
-from colcon_mros.targets.mros_v1_pc.asp_cfg import read_config, write_kernel_config
+from colcon_mros.mros_v1.pc_target.asp_cfg import read_config, write_kernel_config
 
 FIXTURE = os.path.join(REPO, 'tests', 'fixtures', 'pc_target_kernel')
-PC_TARGET = os.path.join(REPO, 'colcon_mros', 'targets', 'mros_v1_pc')
+PC_TARGET = os.path.join(REPO, 'colcon_mros', 'mros_v1', 'pc_target')
 E_OK, E_QOVR, E_TMOUT = 0, -43, -50
 # Timing on a loaded 2-core machine: late by up to this much, never early.
 LATENESS_MS = 60

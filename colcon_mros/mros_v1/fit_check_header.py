@@ -1,0 +1,56 @@
+"""``mros_v1_fit_check.h``: the rule table rendered as compile-time checks.
+
+The same :data:`.rules.RULES` the Python fit check (:mod:`.fit`) applies,
+rendered as one ``#if``/``#error`` per type and rule, which the
+preprocessor evaluates where the library's own settings headers are on the
+include path (ros.cpp's compile): a firmware whose types the library is
+certain to overrun does not build for the board, whatever build tool made
+its headers. A connection header counts with the shortest names, as the
+Python check's errors do.
+"""
+
+import os
+
+from colcon_mros.generator.render import render_template
+from colcon_mros.mros_v1.rules import POOL_KINDS, RULES, SHORTEST_NAMES, FirmwareNeeds
+
+FIT_CHECK_HEADER = 'mros_v1_fit_check.h'
+TEMPLATE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'templates')
+
+
+class Check:
+    """One rule for one type: the #if condition that fails the build, and
+    the #error's message."""
+
+    def __init__(self, rule, needs):
+        amount = rule.amount(needs)
+        what = rule.describe(needs)
+        if rule.is_pool:
+            self.failure = '!%s(%d)' % (rule.setting.holds_macro, amount)
+            needed = 'a %s >= %d' % (rule.setting_name, amount)
+        elif rule.with_names:
+            self.failure = '%s < %d + %d' % (rule.setting, amount, SHORTEST_NAMES)
+            needed = "%s >= %d + the topic and caller id's bytes" % (rule.setting, amount)
+        else:
+            self.failure = '%s < %d' % (rule.setting, amount)
+            needed = '%s >= %d' % (rule.setting, amount)
+        self.message = '%s: %s needs %s (%s)' % (needs.full_name, what, needed, rule.header)
+
+
+class CheckedType:
+    """One type's checks, and what a firmware engineer reads above them."""
+
+    def __init__(self, needs):
+        frame = ('no largest frame' if needs.max_frame is None
+                 else 'a largest frame of %d bytes' % needs.max_frame)
+        self.comment = '%s: definition text %d bytes, name %d with its NUL, %s.' % (
+            needs.full_name, needs.text_bytes, needs.type_name_size, frame)
+        self.checks = [Check(rule, needs) for rule in RULES if rule.amount(needs) is not None]
+
+
+def fit_check_header(messages):
+    """{FIT_CHECK_HEADER: text} for a firmware's message types."""
+    needs = FirmwareNeeds(messages)
+    return {FIT_CHECK_HEADER: render_template(
+        TEMPLATE_DIR, FIT_CHECK_HEADER + '.em', needs=needs, pool_kinds=POOL_KINDS,
+        types=[CheckedType(needed) for needed in needs.types])}

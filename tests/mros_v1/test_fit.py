@@ -1,0 +1,246 @@
+"""The fit check (colcon_mros.mros_v1.fit, rules): one line per misfit and
+the warnings, against the small settings headers in
+tests/fixtures/mros_v1_settings and the real library's; the connection
+header sizes it counts with held against what real rospy and roscpp nodes
+send. The expected values come from the settings files and rospy's own
+definition texts, not from genmros."""
+
+import os
+import re
+import subprocess
+
+import pytest
+
+from colcon_mros.errors import GenmrosProblems
+from colcon_mros.export.firmware_export import firmware_messages
+from colcon_mros.mros_v1.fit import Fit
+from colcon_mros.mros_v1.rules import (PEER_NAME_MAX, PUBLISHER_HEADER_FIXED,
+                                       SUBSCRIBER_HEADER_FIXED, FirmwareNeeds)
+from colcon_mros.mros_v1.settings import read_settings
+from colcon_mros.mros_v1.pc_target.ros_graph import PYTHON, RosGraph
+from conftest import REPO, TEST_WS
+from mros_v1_checkout import MROS_V1_ROOT
+from tcpros_peer import HostilePublisher, RawSubscriber
+
+USR_CONFIG = os.path.join(MROS_V1_ROOT, 'mros_ws', 'custom_pubsub', 'mros_config',
+                          'mros_usr_config.h')
+PACKET_CONFIG = os.path.join(MROS_V1_ROOT, 'mros-lib', 'mros-src', 'packet', 'cimpl', 'version',
+                             'kinetic', 'mros_packet_config.h')
+
+
+SMALL_SETTINGS = os.path.join(REPO, 'tests', 'fixtures', 'mros_v1_settings')
+
+
+def _messages(*type_names, storage='heap', option_files=()):
+    return firmware_messages(type_names, [TEST_WS, '/usr'], storage, option_files)
+
+
+def _needs(*type_names):
+    return FirmwareNeeds(_messages(*type_names))
+
+
+def _small_settings(tmp_path=None, **values):
+    """The small settings headers' paths, in a copy with values changed
+    where values are given."""
+    paths = [os.path.join(SMALL_SETTINGS, name)
+             for name in ('mros_usr_config.h', 'mros_packet_config.h')]
+    if not values:
+        return paths
+    copies = []
+    for path in paths:
+        with open(path) as stream:
+            text = stream.read()
+        for name, value in values.items():
+            text = re.sub(r'(#define %s )\S+' % name, r'\g<1>%d' % value, text)
+        copies.append(str(tmp_path / os.path.basename(path)))
+        with open(copies[-1], 'w') as stream:
+            stream.write(text)
+    return copies
+
+
+def _define(paths, name):
+    """(value, 'FILE:LINE') of a #define in the settings headers, read here by hand."""
+    for path in paths:
+        with open(path) as stream:
+            for number, line in enumerate(stream, 1):
+                match = re.match(r'#define %s \(?(\d+)U?\)?( /\*.*)?$' % name, line.strip())
+                if match:
+                    return int(match.group(1)), '%s:%d' % (path, number)
+    raise AssertionError('no %s in %s' % (name, paths))
+
+
+def _genpy_full_text(type_name):
+    """rospy's message_definition of a type: its class's _full_text."""
+    package, name = type_name.split('/')
+    return subprocess.run([PYTHON, '-c', 'import sys; from %s.msg import %s as T; '
+                           'sys.stdout.write(T._full_text)' % (package, name)],
+                          capture_output=True, text=True, check=True).stdout
+
+
+def _genmsg_full_text(type_name):
+    """genmsg's full text of a test_ws type, what genpy and gencpp carry."""
+    from genmsg import gentools, msg_loader
+    search = {'std_msgs': ['/usr/share/std_msgs/msg']}
+    for package in ('mros_test', 'mros_test_base'):
+        search[package] = [os.path.join(TEST_WS, 'src', package, 'msg')]
+    context = msg_loader.MsgContext.create_default()
+    spec = msg_loader.load_msg_by_type(context, type_name, search)
+    msg_loader.load_depends(context, spec, search)
+    return gentools.compute_full_text(context, spec)
+
+
+def _header_size(fields):
+    """The bytes of a TCPROS connection header after its length."""
+    return sum(4 + len(('%s=%s' % item).encode()) for item in fields.items())
+
+
+def test_a_type_name_fits_the_name_fields_up_to_the_last_byte():
+    settings = _small_settings()
+    typename_max, where = _define(settings, 'MROS_TOPIC_TYPENAME_MAXLEN')
+    assert len('mros_test_base/Vector3i') + 1 == typename_max
+    fit = Fit(_messages('mros_test_base/Vector3i', 'geometry_msgs/Quaternion'),
+              read_settings(settings))
+    assert [misfit.line() for misfit in fit.misfits] == [
+        '%s: geometry_msgs/Quaternion: its name with its NUL needs MROS_TOPIC_TYPENAME_MAXLEN '
+        '>= %d (it is %d)' % (where, len('geometry_msgs/Quaternion') + 1, typename_max)]
+
+
+def test_a_bounded_frame_needs_the_largest_pool_within_the_pool_count(tmp_path):
+    settings = _small_settings()
+    publishing, _ = _define(settings, 'ROS_INNER_TOPIC_PUBLISHER_MEMPOOL2_SIZE')
+    receiving, receiving_at = _define(settings, 'ROS_OUTER_TOPIC_PUBLISHER_MEMPOOL1_SIZE')
+    # A string of up to n bytes: its 4-byte length and n bytes, in a block
+    # with the library's 4-byte frame header.
+    options = tmp_path / 'bounds.options'
+    for size in (receiving - 8, publishing - 8):
+        options.write_text('std_msgs/String.data max_size:%d\n' % size)
+        fit = Fit(_messages('std_msgs/String', storage='bounded', option_files=[str(options)]),
+                  read_settings(settings))
+        assert [misfit.line() for misfit in fit.misfits] == ([] if size == receiving - 8 else [
+            '%s: std_msgs/String: a frame of up to %d bytes, receiving from ROS nodes, needs '
+            'ROS_OUTER_TOPIC_PUBLISHER_MEMPOOL1_SIZE >= %d (it is %d)'
+            % (receiving_at, size + 4, size + 8, receiving)])
+        assert fit.warnings == []
+    # One byte more than the second publishing pool: the third, beyond
+    # ROS_INNER_TOPIC_PUBLISHER_CONFIG_NUM, does not count.
+    options.write_text('std_msgs/String.data max_size:%d\n' % (publishing - 7))
+    fit = Fit(_messages('std_msgs/String', storage='bounded', option_files=[str(options)]),
+              read_settings(settings))
+    assert [misfit.setting.name for misfit in fit.misfits] == [
+        'ROS_INNER_TOPIC_PUBLISHER_MEMPOOL2_SIZE', 'ROS_OUTER_TOPIC_PUBLISHER_MEMPOOL1_SIZE']
+
+
+def test_a_connection_header_fits_for_certain_only_with_room_for_the_shortest_names(tmp_path):
+    text = len(_genmsg_full_text('mros_test/PersonalData').encode())
+    subscriber = SUBSCRIBER_HEADER_FIXED + text + len('mros_test/PersonalData') + 1
+    publisher = PUBLISHER_HEADER_FIXED + text + len('mros_test/PersonalData')
+    topic_max, _ = _define(_small_settings(), 'MROS_TOPIC_NAME_MAXLEN')
+    # Room for '/a' and '/a' exactly: fits, with a warning of how short the
+    # names must be; one byte less: refused, with the value for the longest names.
+    settings = _small_settings(tmp_path, MROS_PACKET_MAXSIZE_REQ_TCPROS=subscriber + 4,
+                               MROS_PACKET_MAXSIZE_RES_TCPROS=publisher + 3)
+    request, request_at = _define(settings, 'MROS_PACKET_MAXSIZE_REQ_TCPROS')
+    reply, reply_at = _define(settings, 'MROS_PACKET_MAXSIZE_RES_TCPROS')
+    fit = Fit(_messages('mros_test/PersonalData'), read_settings(settings))
+    assert [misfit.line() for misfit in fit.misfits] == [
+        "%s: mros_test/PersonalData: a ROS publisher's connection header needs "
+        'MROS_PACKET_MAXSIZE_RES_TCPROS >= %d (it is %d; even with the shortest topic and caller '
+        'id it needs %d)' % (reply_at, publisher + topic_max + PEER_NAME_MAX, reply, publisher + 4)]
+    assert fit.warnings[0] == (
+        "mros_test/PersonalData: a ROS subscriber's connection header (definition text %d bytes, "
+        'a topic of up to %d and a caller id of up to %d, and the NUL) needs '
+        "MROS_PACKET_MAXSIZE_REQ_TCPROS >= %d; %s sets %d, which holds it only while the topic "
+        "and the peer's caller id take at most 4 bytes together"
+        % (text, topic_max, PEER_NAME_MAX, subscriber + topic_max + PEER_NAME_MAX, request_at,
+           request))
+    assert fit.warnings[1].startswith('mros_test/PersonalData: no largest frame')
+    with pytest.raises(GenmrosProblems) as refused:
+        fit.refuse(strict=True)
+    assert str(refused.value).splitlines() == [fit.misfits[0].line()] + fit.warnings
+
+
+def test_settings_without_a_rule_s_setting_are_named(tmp_path):
+    header = tmp_path / 'mros_usr_config.h'
+    header.write_text('#define MROS_TOPIC_NAME_MAXLEN 32\n')
+    with pytest.raises(Exception) as refused:
+        Fit(_messages('std_msgs/String'), read_settings([str(header)]))
+    assert str(refused.value) == (
+        "the mROS v1 settings given define no MROS_PACKET_MAXSIZE_REQ_TCPROS (give the "
+        "library's mros_packet_config.h and the app's mros_usr_config.h)")
+
+
+@pytest.mark.needs_mros_v1
+def test_a_long_definition_text_misfits_the_samples_settings_with_one_line_each():
+    settings = read_settings([USR_CONFIG, PACKET_CONFIG])
+    fit = Fit(_messages('sensor_msgs/JointState', 'std_msgs/String'), settings)
+    text = len(_genpy_full_text('sensor_msgs/JointState').encode())
+    topic = settings['MROS_TOPIC_NAME_MAXLEN'].value
+    # The header's own fields, then the topic and the peer's caller id:
+    # the longest the settings allow, and the shortest there are ('/a').
+    fields = text + len('sensor_msgs/JointState')
+    longest, shortest = topic + PEER_NAME_MAX, 2 + 2
+    request = settings['MROS_PACKET_MAXSIZE_REQ_TCPROS']
+    reply = settings['MROS_PACKET_MAXSIZE_RES_TCPROS']
+    assert [misfit.line() for misfit in fit.misfits] == [
+        "%s: sensor_msgs/JointState: a ROS subscriber's connection header (definition text %d "
+        'bytes, a topic of up to %d and a caller id of up to %d, and the NUL) needs '
+        'MROS_PACKET_MAXSIZE_REQ_TCPROS >= %d (it is %d; even with the shortest topic and caller '
+        'id it needs %d)'
+        % (request.where(), text, topic, PEER_NAME_MAX, SUBSCRIBER_HEADER_FIXED + fields + longest
+           + 1, request.value, SUBSCRIBER_HEADER_FIXED + fields + shortest + 1),
+        "%s: sensor_msgs/JointState: a ROS publisher's connection header needs "
+        'MROS_PACKET_MAXSIZE_RES_TCPROS >= %d (it is %d; even with the shortest topic and caller '
+        'id it needs %d)'
+        % (reply.where(), PUBLISHER_HEADER_FIXED + fields + longest, reply.value,
+           PUBLISHER_HEADER_FIXED + fields + shortest)]
+    # Heap storage gives neither type a largest frame: a warning each, not an error.
+    assert [warning.split(':')[0] for warning in fit.warnings] == [
+        'sensor_msgs/JointState', 'std_msgs/String']
+
+
+SUBSCRIBER_NODE = '''
+import rospy
+from sensor_msgs.msg import JointState
+rospy.init_node('fit_probe_listener')
+rospy.Subscriber('/fit_probe', JointState, lambda message: None)
+rospy.spin()
+'''
+PUBLISHER_NODE = '''
+import rospy
+from sensor_msgs.msg import JointState
+rospy.init_node('fit_probe_talker')
+publisher = rospy.Publisher('/fit_probe', JointState, queue_size=1)
+rospy.spin()
+'''
+
+
+@pytest.mark.slow
+def test_the_header_sizes_are_those_rospy_and_roscpp_send(ros_workspace):
+    joint_state = _needs('sensor_msgs/JointState').types[0]
+    with RosGraph(ros_workspace.environment()) as graph:
+        # A rospy subscriber's header, as a publisher receives it.
+        with HostilePublisher(graph, '/fit_probe_publisher', '/fit_probe',
+                              'sensor_msgs/JointState') as publisher:
+            graph.start('rospy subscriber', [PYTHON, '-c', SUBSCRIBER_NODE])
+            connection, fields = publisher.accept(timeout=30)
+            connection.close()
+        assert len(fields['message_definition'].encode()) == joint_state.text_bytes
+        assert _header_size(fields) == SUBSCRIBER_HEADER_FIXED + sum(
+            len(fields[key].encode()) for key in ('topic', 'type', 'callerid', 'message_definition'))
+        # A rospy and a roscpp publisher's replies, as a subscriber receives them.
+        graph.start('rospy publisher', [PYTHON, '-c', PUBLISHER_NODE])
+        graph.start('roscpp publisher', ros_workspace.roscpp('personal_data_talker'))
+        graph.wait_for_graph(publishers=[('/fit_probe', '/fit_probe_talker'),
+                                         ('/test_msg', '/ros_personal_talker')])
+        personal_data = _needs('mros_test/PersonalData').types[0]
+        for node, topic, needed in (('/fit_probe_talker', '/fit_probe', joint_state),
+                                    ('/ros_personal_talker', '/test_msg', personal_data)):
+            code, _, slave_uri = graph.master_proxy().lookupNode('/test', node)
+            assert code == 1
+            subscriber = RawSubscriber(slave_uri, topic, needed.full_name, '*')
+            fields = subscriber.header
+            subscriber.close()
+            assert len(fields['message_definition'].encode()) == needed.text_bytes, node
+            assert _header_size(fields) == PUBLISHER_HEADER_FIXED + sum(
+                len(fields[key].encode())
+                for key in ('topic', 'type', 'callerid', 'message_definition')), node

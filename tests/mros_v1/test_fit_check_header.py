@@ -1,0 +1,113 @@
+"""The compile-time check (colcon_mros.mros_v1.fit_check_header): the rule
+table rendered as #if/#error refuses, where the settings headers are on the
+include path, exactly what the Python fit check refuses, for the small
+settings in tests/fixtures/mros_v1_settings and copies with values changed;
+it says so where it cannot check."""
+
+import os
+import re
+import subprocess
+
+import pytest
+
+from colcon_mros.export.firmware_export import firmware_messages
+from colcon_mros.mros_v1.fit import Fit
+from colcon_mros.mros_v1.settings import read_settings
+from conftest import REPO, TEST_WS, run_genmros
+
+SMALL_SETTINGS = os.path.join(REPO, 'tests', 'fixtures', 'mros_v1_settings')
+SETTINGS_HEADERS = ('mros_usr_config.h', 'mros_packet_config.h')
+TYPES = ['std_msgs/String', 'mros_test_base/Vector3i', 'geometry_msgs/Quaternion',
+         'mros_test/PersonalData', 'sensor_msgs/JointState']
+# Bounded, so that every type has a largest frame for the pool rules.
+BOUNDS = ('std_msgs/String.data max_size:300\n'
+          '* max_size:8 max_count:4\n')
+
+
+@pytest.fixture(scope='module')
+def bounded_export(tmp_path_factory):
+    root = tmp_path_factory.mktemp('fit_check_header')
+    options = root / 'bounds.options'
+    options.write_text(BOUNDS)
+    include = str(root / 'include')
+    arguments = ['export', '-o', include, '--workspace', TEST_WS, '--underlay', '/usr',
+                 '--storage', 'bounded', '--options', str(options)]
+    for type_name in TYPES:
+        arguments += ['--type', type_name]
+    run_genmros(*arguments)
+    return include, str(options)
+
+
+def _settings_dir(tmp_path, **values):
+    """A copy of the small settings with values changed."""
+    directory = tmp_path / 'settings'
+    directory.mkdir()
+    for name in SETTINGS_HEADERS:
+        with open(os.path.join(SMALL_SETTINGS, name)) as stream:
+            text = stream.read()
+        for setting, value in values.items():
+            text = re.sub(r'(#define %s )\S+' % setting, r'\g<1>%d' % value, text)
+        (directory / name).write_text(text)
+    return str(directory)
+
+
+def _python_refusals(options, settings_dir):
+    """(type, setting) of each misfit of the Python check; a memory pool as
+    'publishing' or 'receiving'."""
+    messages = firmware_messages(TYPES, [TEST_WS, '/usr'], 'bounded', [options])
+    fit = Fit(messages, read_settings([os.path.join(settings_dir, name)
+                                       for name in SETTINGS_HEADERS]))
+    return sorted((misfit.type_name, misfit.what.split(', ')[1].rstrip(',') if 'frame' in misfit.what
+                   else misfit.setting.name) for misfit in fit.misfits)
+
+
+def _compile_time_refusals(include, settings_dir, *flags):
+    """(type, setting) of each #error the check gives in a compile with the
+    settings on the include path, and the compiler's exit status."""
+    source = os.path.join(include, 'check.cpp')
+    with open(source, 'w') as stream:
+        stream.write('#include "mros_v1_fit_check.h"\n')
+    result = subprocess.run(['g++', '-std=gnu++98', '-fsyntax-only', '-Wall', '-Wextra',
+                             '-pedantic', '-I', include, '-I', settings_dir] + list(flags)
+                            + [source], capture_output=True, text=True)
+    refusals = []
+    for message in re.findall(r'error: #error "([^"]*)"', result.stderr):
+        type_name, what, setting = re.match(r'(\S+): (.*) needs (?:a )?(\w+|\S+<n>\S+) ',
+                                            message).groups()
+        refusals.append((type_name, what.split(', ')[1].rstrip(',') if 'frame' in what else setting))
+    return sorted(refusals), result.returncode, result.stderr
+
+
+@pytest.mark.parametrize('values', [
+    {},
+    {'MROS_PACKET_MAXSIZE_REQ_TCPROS': 4096, 'MROS_PACKET_MAXSIZE_RES_TCPROS': 300,
+     'MROS_TOPIC_TYPENAME_MAXLEN': 26, 'ROS_OUTER_TOPIC_PUBLISHER_CONFIG_NUM': 0},
+    {'MROS_PACKET_MAXSIZE_REQ_TCPROS': 4096, 'MROS_PACKET_MAXSIZE_RES_TCPROS': 4096,
+     'MROS_TOPIC_TYPENAME_MAXLEN': 32, 'ROS_INNER_TOPIC_PUBLISHER_CONFIG_NUM': 3,
+     'ROS_OUTER_TOPIC_PUBLISHER_MEMPOOL1_SIZE': 4096},
+], ids=['small', 'mixed', 'large'])
+def test_both_renderings_of_the_rules_refuse_the_same(bounded_export, tmp_path, values):
+    include, options = bounded_export
+    settings_dir = _settings_dir(tmp_path, **values)
+    expected = _python_refusals(options, settings_dir) if values.get(
+        'ROS_OUTER_TOPIC_PUBLISHER_CONFIG_NUM', 1) else None
+    refusals, status, stderr = _compile_time_refusals(include, settings_dir)
+    if expected is None:  # no receiving pool at all: Python names the settings
+        with pytest.raises(Exception, match='define none of ROS_OUTER_TOPIC_PUBLISHER_MEMPOOL1'):
+            _python_refusals(options, settings_dir)
+        assert ('sensor_msgs/JointState', 'receiving from ROS nodes') in refusals
+        return
+    assert refusals == expected, stderr
+    assert (status != 0) == bool(expected)
+    assert 'warning' not in stderr
+    if values == {}:  # the small settings refuse something of every rule
+        assert {setting for _, setting in expected} >= {
+            'MROS_PACKET_MAXSIZE_REQ_TCPROS', 'MROS_PACKET_MAXSIZE_RES_TCPROS',
+            'MROS_TOPIC_TYPENAME_MAXLEN', 'publishing', 'receiving from ROS nodes'}
+
+
+def test_the_check_can_be_skipped(bounded_export, tmp_path):
+    include, _ = bounded_export
+    refusals, status, stderr = _compile_time_refusals(include, _settings_dir(tmp_path),
+                                                      '-DMROS_SKIP_FIT_CHECK')
+    assert (refusals, status) == ([], 0), stderr
