@@ -239,7 +239,7 @@ def export(request):
     writes_headers = parts != 'aggregates'
     files = {}
     if writes_headers:
-        files.update(renderer.support_header())
+        files.update(renderer.support_headers())
         for message in messages:
             files.update(renderer.message(message))
         for service in services:

@@ -17,7 +17,12 @@ from colcon_mros.errors import GenmrosError
 from colcon_mros.generator.floats import FLOAT32_SMALLEST_NORMAL, round_to_type
 from colcon_mros.generator.names import member_identifier
 
+# The support header every message header includes, and the headers it
+# includes: static ones in generator/support/, and its version, generated.
 SUPPORT_HEADER = 'mros_message_support.h'
+SUPPORT_VERSION_HEADER = 'mros_message_support_version.h'
+SUPPORT_HEADERS = (SUPPORT_HEADER, 'mros_message_containers.h', 'mros_message_wire.h',
+                   SUPPORT_VERSION_HEADER)
 
 
 def _version_number(version):
@@ -26,7 +31,7 @@ def _version_number(version):
     return major * 10000 + minor * 100 + patch
 
 
-# The support header defines it; every message header checks it.
+# The support version header defines it; every message header checks it.
 SUPPORT_VERSION = _version_number(__version__)
 # Included by message_headers.h, the mROS v1 aggregate: memCopy() and delivery.
 V1_DELIVERY_HEADER = 'mros_v1_delivery.h'

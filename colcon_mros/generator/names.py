@@ -55,7 +55,7 @@ SUPPORT_NAMESPACES = frozenset('''
 # What the support header and the mROS v1 delivery header declare in
 # namespaces mros and mros::wire (types, templates, namespaces): message
 # headers name packages from inside those namespaces, where these would be
-# found first. tests/test_names.py holds this list equal to the headers'.
+# found first. tests/generator/test_names.py holds this list equal to the headers'.
 SUPPORT_HEADER_NAMES = frozenset('''
     CallCallbackFuncs Codec DataType DataTypeId Definition Duration ElementRun Fields
     FloatCodec IntegerCodec LengthCounter MD5Sum Message OnBoardFrames Reader SequenceCodec
@@ -66,7 +66,8 @@ SUPPORT_HEADER_NAMES = frozenset('''
 # The macros the support headers define or read; a member so named is
 # escaped like one of the standard headers' macros.
 SUPPORT_MACROS = frozenset('''
-    MROS_BOUNDED_OVERFLOW MROS_MESSAGE_SUPPORT_H MROS_MESSAGE_SUPPORT_VERSION
+    MROS_BOUNDED_OVERFLOW MROS_MESSAGE_CONTAINERS_H MROS_MESSAGE_SUPPORT_H
+    MROS_MESSAGE_SUPPORT_VERSION MROS_MESSAGE_SUPPORT_VERSION_H MROS_MESSAGE_WIRE_H
     MROS_ONBOARD_FRAME_SLOTS MROS_V1_DELIVERY_H MROS_WIRE_PORTABLE
 '''.split())
 

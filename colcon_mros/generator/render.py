@@ -15,11 +15,14 @@ import em
 
 from colcon_mros import __version__
 from colcon_mros.generator.aggregates import MaxSize
-from colcon_mros.generator.cpp import (SUPPORT_HEADER, SUPPORT_VERSION, V1_DELIVERY_HEADER,
-                                       CppMessage, CppService, CppType)
+from colcon_mros.generator.cpp import (SUPPORT_HEADER, SUPPORT_HEADERS, SUPPORT_VERSION,
+                                       SUPPORT_VERSION_HEADER, V1_DELIVERY_HEADER, CppMessage,
+                                       CppService, CppType)
 from colcon_mros.generator.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
 
 TEMPLATE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'templates')
+# The static headers every export holds besides what is rendered.
+SUPPORT_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'support')
 # The per-firmware aggregates the mROS v1 library includes, each rendered
 # from <name>.em.
 FIRMWARE_AGGREGATES = ('message_headers.h', 'message_class_specialization.h', 'msg_max_size.h')
@@ -56,6 +59,13 @@ def render_template(template_dir, template_name, **context):
         interpreter.unfix()
 
 
+@functools.lru_cache(maxsize=None)
+def _static(name):
+    """The text of a static header in SUPPORT_DIR."""
+    with open(os.path.join(SUPPORT_DIR, name)) as source:
+        return source.read()
+
+
 class Renderer:
     """Renders headers from one template directory (genmros -e chooses another)."""
 
@@ -67,19 +77,18 @@ class Renderer:
         genmros version, the templates (ours and those of template_dirs) and
         the run's arguments."""
         digest = hashlib.sha256(('%s\n%r\n' % (__version__, arguments)).encode())
-        for directory in [self.template_dir] + list(template_dirs):
+        for directory in [self.template_dir, SUPPORT_DIR] + list(template_dirs):
             for name in sorted(os.listdir(directory)):
                 with open(os.path.join(directory, name), 'rb') as stream:
                     digest.update(name.encode() + b'\0' + stream.read())
         return 'genmros %s\n' % digest.hexdigest()
 
-    def support_header(self):
-        return {SUPPORT_HEADER: render_template(self.template_dir, SUPPORT_HEADER + '.em',
-                                        support_version=SUPPORT_VERSION)}
-
-    def _read(self, name):
-        with open(os.path.join(self.template_dir, name)) as source:
-            return source.read()
+    def support_headers(self):
+        """The support headers: the static ones and their version header."""
+        files = {name: _static(name) for name in SUPPORT_HEADERS if name != SUPPORT_VERSION_HEADER}
+        files[SUPPORT_VERSION_HEADER] = render_template(
+            self.template_dir, SUPPORT_VERSION_HEADER + '.em', support_version=SUPPORT_VERSION)
+        return files
 
     def message(self, message):
         return {'%s.h' % message.full_name: render_template(
@@ -87,8 +96,8 @@ class Renderer:
             support_version=SUPPORT_VERSION, genmros_version=__version__)}
 
     def service(self, service):
-        files = {'%s.h' % service.full_name: render_template(self.template_dir, 'srv.h.em',
-                                                     srv=CppService(service))}
+        files = {'%s.h' % service.full_name: render_template(
+            self.template_dir, 'srv.h.em', srv=CppService(service))}
         files.update(self.message(service.request))
         files.update(self.message(service.response))
         return files
@@ -103,11 +112,11 @@ class Renderer:
                    'library_headers': list(library_headers)}
         files = {name: render_template(self.template_dir, name + '.em', **context)
                  for name in FIRMWARE_AGGREGATES}
-        files[V1_DELIVERY_HEADER] = self._read(V1_DELIVERY_HEADER)
+        files[V1_DELIVERY_HEADER] = _static(V1_DELIVERY_HEADER)
         return files
 
 
 def render_export_cmake(include_dir, types, cmake_module):
     """An export dir's mros_export.cmake (see :mod:`colcon_mros.export.export_dir`)."""
-    return render_template(TEMPLATE_DIR, 'mros_export.cmake.em', include_dir=include_dir, types=types,
-                   cmake_module=cmake_module)
+    return render_template(TEMPLATE_DIR, 'mros_export.cmake.em', include_dir=include_dir,
+                           types=types, cmake_module=cmake_module)

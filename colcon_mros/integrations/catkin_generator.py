@@ -116,7 +116,7 @@ def generate_files(paths, package, output_dir, search_path, template_dir=None, e
     stale = [generated for generated in loaded
              if _is_stale(generated, last_runs, generated.outputs(output_dir, exports))]
     # Rendered in full before anything is written: a bad file changes nothing.
-    support = renderer.support_header()
+    support = renderer.support_headers()
     rendered = {}  # full name: headers, as many files contain the same types
 
     def message_headers(message):

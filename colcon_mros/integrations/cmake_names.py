@@ -7,9 +7,8 @@ generator (genmros-extras.cmake) include it instead of spelling the names
 again.
 """
 
-from colcon_mros import __version__
 from colcon_mros.export.firmware_export import FIRMWARE_FILES
-from colcon_mros.generator.cpp import SUPPORT_HEADER
+from colcon_mros.generator.cpp import SUPPORT_HEADER, SUPPORT_HEADERS
 from colcon_mros.generator.definition import SERVICE_HALVES
 
 NAMES_FILE = 'genmros-names.cmake'
@@ -18,10 +17,10 @@ NAMES_FILE = 'genmros-names.cmake'
 def cmake_names():
     """The text of genmros-names.cmake."""
     values = [
-        ('GENMROS_VERSION', [__version__],
-         'the version of colcon-mros'),
         ('GENMROS_SUPPORT_HEADER', [SUPPORT_HEADER],
          'the support header every generated header includes, at the include root'),
+        ('GENMROS_SUPPORT_HEADERS', list(SUPPORT_HEADERS),
+         'it and the support headers it includes, all at the include root'),
         ('GENMROS_FIRMWARE_AGGREGATES', list(FIRMWARE_FILES),
          "the files genmros export writes for one firmware's types"),
         ('GENMROS_SERVICE_HALVES', list(SERVICE_HALVES),

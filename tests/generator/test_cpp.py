@@ -5,7 +5,7 @@ import os
 
 import pytest
 
-from colcon_mros.generator.cpp import (SUPPORT_HEADER, CppMessage, CppType,
+from colcon_mros.generator.cpp import (SUPPORT_HEADERS, CppMessage, CppType,
                                        cpp_constant_literal, cpp_string_literal_lines,
                                        field_cpp_type)
 from colcon_mros.errors import GenmrosError
@@ -77,13 +77,13 @@ def test_constant_literals(ros_type, value, literal):
     assert cpp_constant_literal(ros_type, value) == literal
 
 
-def test_catkins_cmake_installs_the_support_header_by_its_name():
-    # genmros-extras.cmake takes the name from genmros-names.cmake, without
+def test_catkins_cmake_installs_the_support_headers_by_their_names():
+    # genmros-extras.cmake takes the names from genmros-names.cmake, without
     # asking genmros (no process per package).
     with open(os.path.join(REPO, 'share', 'genmros', 'cmake', 'genmros-extras.cmake')) as stream:
-        assert '"${_genmros_include_root}/${GENMROS_SUPPORT_HEADER}"' in stream.read()
+        assert 'list(TRANSFORM GENMROS_SUPPORT_HEADERS PREPEND' in stream.read()
     with open(os.path.join(REPO, 'cmake', 'genmros-names.cmake')) as stream:
-        assert 'set(GENMROS_SUPPORT_HEADER "%s")' % SUPPORT_HEADER in stream.read()
+        assert 'set(GENMROS_SUPPORT_HEADERS "%s")' % ';'.join(SUPPORT_HEADERS) in stream.read()
 
 
 @pytest.mark.parametrize('text, pieces', [

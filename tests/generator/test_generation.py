@@ -8,6 +8,7 @@ import subprocess
 
 import pytest
 
+from colcon_mros.generator.cpp import SUPPORT_HEADER, SUPPORT_HEADERS, SUPPORT_VERSION_HEADER
 from conftest import REPO, TEST_WS, run_genmros
 
 FIXTURES = os.path.join(REPO, 'tests', 'fixtures')
@@ -36,7 +37,7 @@ def test_export_of_one_type_brings_its_whole_closure(tmp_path):
     run_genmros('export', '--type', 'geometry_msgs/PoseStamped', '-o', str(tmp_path), '--underlay', '/usr')
     assert _tree(str(tmp_path)) == sorted(AGGREGATES + [
         'geometry_msgs/Point.h', 'geometry_msgs/Pose.h', 'geometry_msgs/PoseStamped.h',
-        'geometry_msgs/Quaternion.h', 'mros_message_support.h', 'std_msgs/Header.h'])
+        'geometry_msgs/Quaternion.h', 'std_msgs/Header.h'] + list(SUPPORT_HEADERS))
 
 
 def test_export_of_a_workspace_covers_every_type_and_dependency(test_ws_export):
@@ -59,7 +60,7 @@ def test_generator_mode_writes_what_export_writes(test_ws_export, tmp_path):
         package = path.split(os.sep)[-3]
         run_genmros('generate', path, '-p', package, '-o', str(tmp_path / package), *flags)
     generated = _tree(str(tmp_path))
-    assert 'mros_test/LookupPersonRequest.h' in generated and 'mros_message_support.h' in generated
+    assert 'mros_test/LookupPersonRequest.h' in generated and set(SUPPORT_HEADERS) <= set(generated)
     for relative in generated:
         assert filecmp.cmp(str(tmp_path / relative), os.path.join(test_ws_export, relative), shallow=False), relative
 
@@ -67,7 +68,7 @@ def test_generator_mode_writes_what_export_writes(test_ws_export, tmp_path):
 def test_a_header_refuses_a_support_header_of_another_genmros(test_ws_export, tmp_path):
     include = str(tmp_path / 'include')
     shutil.copytree(test_ws_export, include)
-    support = os.path.join(include, 'mros_message_support.h')
+    support = os.path.join(include, SUPPORT_VERSION_HEADER)
     with open(support) as stream:
         text = stream.read()
     version = run_genmros('--version').stdout.split()[1]
@@ -82,8 +83,8 @@ def test_a_header_refuses_a_support_header_of_another_genmros(test_ws_export, tm
         stream.write(text.replace(defined, '#define MROS_MESSAGE_SUPPORT_VERSION 99999\n'))
     result = subprocess.run(command, capture_output=True, text=True)
     assert result.returncode != 0
-    assert ('error: #error "the mros_message_support.h found first is not the one genmros %s '
-            'wrote with this header' % version) in result.stderr
+    assert ('error: #error "the %s found first is not the one genmros %s wrote with this header'
+            % (SUPPORT_HEADER, version)) in result.stderr
 
 
 COMMENTED_MSG = r"""# What the type is for,
@@ -234,9 +235,9 @@ def test_generator_mode_fills_an_export_dir_with_the_whole_closure(test_ws_expor
     export_dir = tmp_path / 'export'
     run_genmros('generate', os.path.join(TEST_WS, 'src', 'mros_test', 'srv', 'LookupPerson.srv'), '-p', 'mros_test',
                 '-o', str(tmp_path / 'devel' / 'mros_test'), '--export-dir', str(export_dir), *flags)
-    assert _tree(str(export_dir / 'include')) == [
-        'geometry_msgs/Point.h', 'mros_message_support.h', 'mros_test/LookupPerson.h',
-        'mros_test/LookupPersonRequest.h', 'mros_test/LookupPersonResponse.h', 'mros_test/PersonalData.h']
+    assert _tree(str(export_dir / 'include')) == sorted([
+        'geometry_msgs/Point.h', 'mros_test/LookupPerson.h', 'mros_test/LookupPersonRequest.h',
+        'mros_test/LookupPersonResponse.h', 'mros_test/PersonalData.h'] + list(SUPPORT_HEADERS))
     for relative in _tree(str(export_dir / 'include')):
         assert filecmp.cmp(str(export_dir / 'include' / relative), os.path.join(test_ws_export, relative),
                            shallow=False), relative
@@ -261,4 +262,4 @@ def test_catkin_devel_space_underlays_are_found(tmp_path):
     run_genmros('export', '--type', 'mros_test_base/Labeled', '-o', str(tmp_path / 'include'),
                 '--underlay', str(devel), '--underlay', '/usr')
     assert _tree(str(tmp_path / 'include')) == sorted(AGGREGATES + [
-        'mros_message_support.h', 'mros_test_base/Labeled.h', 'std_msgs/ColorRGBA.h'])
+        'mros_test_base/Labeled.h', 'std_msgs/ColorRGBA.h'] + list(SUPPORT_HEADERS))

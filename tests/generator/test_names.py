@@ -7,27 +7,31 @@ import re
 from colcon_mros.generator.names import SUPPORT_HEADER_NAMES, SUPPORT_MACROS, member_identifier
 from conftest import REPO
 
-TEMPLATES = os.path.join(REPO, 'colcon_mros', 'generator', 'templates')
+GENERATOR = os.path.join(REPO, 'colcon_mros', 'generator')
+# The static support headers, and the template of their version header.
+SUPPORT_FILES = [os.path.join(GENERATOR, 'support', name)
+                 for name in sorted(os.listdir(os.path.join(GENERATOR, 'support')))] + [
+    os.path.join(GENERATOR, 'templates', 'mros_message_support_version.h.em')]
 # A template's parameter list, nested template arguments included.
 _TEMPLATE_HEAD = re.compile(r'template\s*<(?:[^<>]|<[^<>]*>)*>')
 _DECLARATION = re.compile(r'\b(?:struct|class|namespace|using)\s+([A-Za-z_]\w*)')
 
 
-def _declared(name):
-    with open(os.path.join(TEMPLATES, name)) as stream:
+def _declared(path):
+    with open(path) as stream:
         text = _TEMPLATE_HEAD.sub('template <>', stream.read())
     return set(_DECLARATION.findall(text))
 
 
 def test_reserved_names_are_what_the_support_headers_declare():
-    declared = _declared('mros_message_support.h.em') | _declared('mros_v1_delivery.h')
+    declared = set().union(*(_declared(path) for path in SUPPORT_FILES))
     assert declared == SUPPORT_HEADER_NAMES
 
 
 def test_the_macros_are_what_the_support_headers_define_and_read():
     macros = set()
-    for name in ('mros_message_support.h.em', 'mros_v1_delivery.h'):
-        with open(os.path.join(TEMPLATES, name)) as stream:
+    for path in SUPPORT_FILES:
+        with open(path) as stream:
             text = stream.read()
         macros.update(re.findall(r'#\s*(?:define|ifndef)\s+(MROS_\w+)', text))
         macros.update(re.findall(r'defined\((MROS_\w+)\)', text))

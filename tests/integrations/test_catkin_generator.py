@@ -12,8 +12,10 @@ import shutil
 
 import pytest
 
+from colcon_mros.export.firmware_export import FIRMWARE_FILES
+from colcon_mros.generator.cpp import SUPPORT_HEADERS
 from fixtures.build_integration.tools import (
-    MESSAGE_PACKAGES, SUPPORT_HEADER, TEST_WS_SRC,
+    MESSAGE_PACKAGES, TEST_WS_SRC,
     build_firmware_of_whole_export, compile_headers, expected_header_names, genmros_export,
     genmsg_md5, genpy_default_size, headers_under, imported_firmware_output, new_workspace, package_headers, run,
     search_path_of, unwrapped, user_environment)
@@ -122,7 +124,7 @@ def build(request, tmp_path_factory):
 
 def test_every_type_has_a_header_in_the_devel_space(build):
     headers = build.devel_headers()
-    assert SUPPORT_HEADER in headers
+    assert set(SUPPORT_HEADERS) <= set(headers)
     for package in ('mros_test_base', 'mros_test'):
         expected = expected_header_names(package)
         assert expected <= set(headers), 'missing: %s' % sorted(expected - set(headers))
@@ -135,7 +137,7 @@ def test_devel_headers_equal_genmros_export(build):
 
 
 def test_devel_headers_compile_with_strict_flags(build, tmp_path):
-    headers = [path for path in build.devel_headers() if path != SUPPORT_HEADER]
+    headers = [path for path in build.devel_headers() if path not in SUPPORT_HEADERS]
     # Nested std_msgs/geometry_msgs types come from the reference export:
     # catkin generates only the workspace's packages.
     compile_headers(build.devel_roots + [build.reference], headers, str(tmp_path))
@@ -163,10 +165,8 @@ def test_export_dir_collects_every_package(build):
     exported = headers_under(os.path.join(build.export_dir, 'include'))
     # Every type of the workspace and every type they contain, installed
     # packages' included: what genmros export writes, less the per-firmware files.
-    aggregates = ('message_headers.h', 'message_class_specialization.h', 'msg_max_size.h',
-                  'mros_v1_delivery.h', 'mros_v1_fit_check.h')
     assert exported == {path: text for path, text in headers_under(build.reference).items()
-                        if path not in aggregates}
+                        if path not in FIRMWARE_FILES}
     assert 'std_msgs/Header.h' in exported
     assert os.path.isfile(os.path.join(build.export_dir, 'share', 'std_msgs', 'msg', 'Header.msg'))
     assert not [name for _, _, names in os.walk(build.export_dir)

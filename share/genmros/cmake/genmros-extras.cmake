@@ -147,8 +147,10 @@ macro(_generate_module_mros ARG_PKG ARG_GEN_OUTPUT_DIR ARG_GENERATED_FILES)
       COMMENT "Generating mROS headers for package ${ARG_PKG}"
       VERBATIM)
     list(APPEND ALL_GEN_OUTPUT_FILES_mros ${_genmros_records})
-    # The support header beside the packages' dirs.
-    install(FILES "${_genmros_include_root}/${GENMROS_SUPPORT_HEADER}"
+    # The support headers beside the packages' dirs.
+    list(TRANSFORM GENMROS_SUPPORT_HEADERS PREPEND "${_genmros_include_root}/"
+      OUTPUT_VARIABLE _genmros_support_headers)
+    install(FILES ${_genmros_support_headers}
       DESTINATION "${genmros_INSTALL_DIR}")
   endif()
   unset(_genmros_files)
