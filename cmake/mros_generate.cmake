@@ -18,9 +18,10 @@
 #                          [MROS_V1_SETTINGS header ... [FIT_STRICT]])
 #     Generate the headers at build time from .msg files. Each PACKAGE_PATHS
 #     entry is an installed prefix (dir/share/<pkg>/msg, as ROS installs them
-#     and as an export dir holds them) or one source tree of packages (found
-#     by their package.xml). Without PACKAGE_PATHS, or with a source tree
-#     only: the ROS environment, as `genmros export` searches it (rospkg on
+#     and as an export dir holds them) or a source tree of packages (found
+#     by their package.xml); genmros tells them apart (genmros export
+#     --msg-path). Without PACKAGE_PATHS, or with source trees only: the ROS
+#     environment, as `genmros export` searches it (rospkg on
 #     ROS_PACKAGE_PATH, then CMAKE_PREFIX_PATH).
 #
 # Both write the per-firmware aggregates for exactly the listed types
@@ -241,20 +242,10 @@ function(mros_generate_messages)
   _mros_form_args("${ARG_STORAGE}" "${ARG_OPTIONS}" "${ARG_DEFINITION_TEXT}" genmros_args)
   _mros_fit_args("${ARG_MROS_V1_SETTINGS}" "${ARG_FIT_STRICT}" fit_args)
   list(APPEND genmros_args ${fit_args})
-  set(workspace "")
+  # genmros tells installed prefixes from source trees.
   foreach(path ${ARG_PACKAGE_PATHS})
     get_filename_component(path "${path}" ABSOLUTE)
-    if(IS_DIRECTORY "${path}/share")
-      list(APPEND genmros_args --underlay "${path}")
-    elseif(NOT IS_DIRECTORY "${path}")
-      message(FATAL_ERROR "mros_generate_messages(): PACKAGE_PATHS entry '${path}' is not a directory")
-    elseif(workspace)
-      message(FATAL_ERROR "mros_generate_messages(): PACKAGE_PATHS has two source trees, "
-        "'${workspace}' and '${path}'; give one, the others as installed prefixes")
-    else()
-      set(workspace "${path}")
-      list(APPEND genmros_args --workspace "${path}")
-    endif()
+    list(APPEND genmros_args --msg-path "${path}")
   endforeach()
   foreach(type ${ARG_TYPES})
     list(APPEND genmros_args --type "${type}")

@@ -1,7 +1,7 @@
 """test_ws built with catkin_make once per process, in a temporary directory:
 the real roscpp/rospy nodes of mros_test_nodes, with gencpp, genpy and
-genmros messages (the genmros ones also exported to mros_export/), for the
-tests that run the mROS v1 library against ROS nodes."""
+genmros messages (the genmros ones also exported to mros_export/, by this
+checkout), for the tests that run the mROS v1 library against ROS nodes."""
 
 import atexit
 import functools
@@ -9,6 +9,7 @@ import os
 import shutil
 import tempfile
 
+from checkout_install import checkout_install
 from colcon_mros.mros_v1.pc_target.ros_graph import CatkinWorkspace
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -27,4 +28,5 @@ def workspace(root=None):
     root = root or scratch('mros_test_ws_')
     shutil.copytree(os.path.join(TEST_WS, 'src'), os.path.join(root, 'src'), dirs_exist_ok=True)
     return CatkinWorkspace(root, 'mros_test_nodes').build(
-        os.path.join(root, 'catkin_make.log'), '-DCMAKE_BUILD_TYPE=Release', '-j2')
+        os.path.join(root, 'catkin_make.log'), '-DCMAKE_BUILD_TYPE=Release', '-j2',
+        environment=checkout_install().environment(os.environ))

@@ -8,8 +8,8 @@ import subprocess
 import sys
 import tempfile
 
-from conftest import REPO
 
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 NOBODY = 65534
 
 

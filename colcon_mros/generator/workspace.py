@@ -134,7 +134,13 @@ def installed_packages(prefixes):
 def split_msg_paths(paths):
     """(installed prefixes, source trees) of paths: a directory with share/
     is an installed prefix (an install or devel space, an export dir), any
-    other a source tree searched for package.xml."""
+    other a source tree searched for package.xml. The one place that decides
+    (genmros export --msg-path, the CMake module's PACKAGE_PATHS, the make
+    fragment's MROS_MSG_PATHS, the PC target)."""
+    for path in paths:
+        if not os.path.isdir(path):
+            raise GenmrosError('not a directory: a package path is a source tree of packages or '
+                               'an installed prefix (with share/<pkg>/msg)', path)
     prefixes = [path for path in paths if os.path.isdir(os.path.join(path, 'share'))]
     return prefixes, [path for path in paths if path not in prefixes]
 

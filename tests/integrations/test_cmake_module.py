@@ -17,6 +17,9 @@ from mros_v1_checkout import MROS_V1_ROOT
 from fixtures.build_integration.tools import (
     FIRMWARE_FIXTURE, TEST_WS_SRC, genmsg_md5, new_workspace, run, search_path_of, unwrapped)
 
+# cmake, colcon, catkin or make builds: more than half a minute.
+pytestmark = pytest.mark.slow
+
 # What genmros itself gives a type with strings (--variable-size-budget).
 VARIABLE_SIZE_BUDGET = 1024
 REGENERATION_LOG_LINE = 'Generating mROS message headers for firmware'
@@ -292,6 +295,15 @@ def test_bad_storage_arguments_fail_the_configure_step(firmware, workspace, cach
     result = firmware.configure(check=False, MROS_PACKAGE_PATHS=os.path.join(workspace, 'src'), **cache)
     assert result.returncode != 0
     assert expected in unwrapped(result.stdout)
+
+
+def test_a_package_path_that_is_no_directory_fails_the_configure_step(firmware, workspace):
+    result = firmware.configure(check=False, MROS_PACKAGE_PATHS=[os.path.join(workspace, 'src'),
+                                                                 '/nonexistent/prefix'])
+    assert result.returncode != 0
+    assert ('mros_generate_messages(): genmros: error: /nonexistent/prefix: not a directory: a '
+            'package path is a source tree of packages or an installed prefix (with '
+            'share/<pkg>/msg)') in unwrapped(result.stdout)
 
 
 def test_bad_options_line_fails_the_configure_step_with_its_place(firmware, workspace, tmp_path):

@@ -16,6 +16,9 @@ from fixtures.build_integration.tools import (
     genmsg_md5, genpy_default_size, headers_under, imported_firmware_output, mtimes, new_workspace, run, search_path_of,
     unwrapped)
 
+# cmake, colcon, catkin or make builds: more than half a minute.
+pytestmark = pytest.mark.slow
+
 # The packages the export holds: the built ones and the installed message
 # packages they depend on.
 EXPORTED_PACKAGES = ('geometry_msgs', 'mros_test', 'mros_test_base', 'std_msgs')

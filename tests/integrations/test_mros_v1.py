@@ -21,6 +21,9 @@ from compile_checks import LANGUAGE_MODES, STRICT_FLAGS, TARGETS, every_header_t
 from conftest import REPO, TEST_WS, run_genmros
 from mros_v1_checkout import MROS_V1_ROOT
 
+# cmake, colcon, catkin or make builds: more than half a minute.
+pytestmark = pytest.mark.slow
+
 FIXTURES = os.path.join(REPO, 'tests', 'fixtures')
 APP_FIXTURE = os.path.join(FIXTURES, 'mros_v1_app')
 MAKE_FRAGMENT = os.path.join(REPO, 'cmake', 'genmros.mk')

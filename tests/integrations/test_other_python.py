@@ -15,6 +15,9 @@ import pytest
 
 from fixtures.build_integration.tools import TEST_WS_SRC, run, user_environment
 
+# cmake, colcon, catkin or make builds: more than half a minute.
+pytestmark = pytest.mark.slow
+
 FIX = '-DPYTHON_EXECUTABLE=/usr/bin/python3'
 HEADER = os.path.join('share', 'genmros', 'include', 'mros_test_base', 'Vector3i.h')
 

@@ -279,13 +279,15 @@ class CatkinWorkspace:
         self.lib = os.path.join(root, 'devel', 'lib', package)
         self.scripts = os.path.join(root, 'src', package, 'scripts')
 
-    def build(self, log_path, *cmake_arguments):
+    def build(self, log_path, *cmake_arguments, environment=None):
         """catkin_make with Debian's Python and genmros' export into
-        mros_export/; raises RuntimeError with the log's end if it fails."""
+        mros_export/, in environment (default: this process's); raises
+        RuntimeError with the log's end if it fails."""
         argv = ['catkin_make', '-C', self.root, '-DPYTHON_EXECUTABLE=' + PYTHON,
                 '-DMROS_EXPORT_DIR=' + self.mros_export] + list(cmake_arguments)
         with open(log_path, 'w') as log:
-            result = subprocess.run(argv, stdout=log, stderr=subprocess.STDOUT, cwd=self.root)
+            result = subprocess.run(argv, stdout=log, stderr=subprocess.STDOUT, cwd=self.root,
+                                    env=environment)
         if result.returncode != 0:
             with open(log_path) as log:
                 raise RuntimeError('%s failed:\n%s' % (' '.join(argv), log.read()[-6000:]))
