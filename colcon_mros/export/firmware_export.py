@@ -4,7 +4,7 @@ Selects types from a workspace (and from installed packages), adds every
 type they contain, renders each once, and writes them with the per-firmware
 aggregates, which cover the selected types only, under the output directory::
 
-    OUT/mros_message_support.h
+    OUT/mros_message_support.h and the support headers it includes
     OUT/<pkg>/<Type>.h
     OUT/message_headers.h, OUT/message_class_specialization.h, OUT/msg_max_size.h,
     OUT/mros_v1_delivery.h, OUT/mros_v1_fit_check.h (which message_headers.h includes)

@@ -1,9 +1,9 @@
 """Generator mode: a package's .msg and .srv files in, their headers out.
 
 catkin runs it once per package, with gencpp's arguments and every file of
-the package (``genmros FILE... -p PKG -o OUTDIR -I ...``); one file at a time
+the package (``genmros generate FILE... -p PKG -o OUTDIR -I ...``); one file at a time
 works as well. OUTDIR is the package's directory under the include root
-(``<root>/<pkg>``); the support header goes to the include root beside it.
+(``<root>/<pkg>``); the support headers go to the include root beside it.
 
 With an export dir (catkin's MROS_EXPORT_DIR), the same run also fills that
 dir for a firmware (:mod:`colcon_mros.export.export_dir`): the headers of the files'
@@ -44,7 +44,7 @@ class _Generated:
         self.model = model
         self.contained = contained  # the messages its types contain
         self.headers = None  # {include-relative path: text}, once rendered
-        self.export_headers = None  # the same, with the contained types' and the support header
+        self.export_headers = None  # the same, with the contained types' and the support headers
 
     def sources(self):
         return [self.definition.path] + [message.source for message in self.contained]

@@ -9,7 +9,7 @@ defaults with ``verb_extension`` and ``main`` (colcon_core.command); the
 decorator sees that call for the ``build`` verb, adds ``--mros-export`` and
 wraps the verb's ``main`` to export after a successful build, so a failed
 export fails ``colcon build`` (one line, exit code 1). Without the flag,
-colcon runs exactly as before. tests/test_colcon_versions.py holds this
+colcon runs exactly as before. tests/integrations/test_colcon_versions.py holds this
 against Debian's colcon-core and the newest on PyPI.
 
 What the export does is :mod:`colcon_mros.integrations.colcon_export`'s job; it is imported
