@@ -95,11 +95,11 @@ def _add_header_form(parser):
                              'sum and what ROS tools decode from the text are the same)')
 
 
-def _add_app(parser):
-    """Where an mROS v1 app and its library are."""
+def _add_app(parser, types_default="the app's app.json"):
+    """Where an mROS v1 app, its library and its types are."""
     parser.add_argument('--mros-root', metavar='DIR',
                         help='the mROS v1 checkout (default: the one APP_DIR is in, ../..)')
-    _add_types(parser, "the app's app.json")
+    _add_types(parser, types_default)
     _add_msg_paths(parser, "app.json's catkin_ws_dir and the ROS environment")
 
 
@@ -144,7 +144,7 @@ def _add_export(subparsers):
                              '(repeatable)')
     parser.add_argument('--package', dest='packages', action='append', default=[],
                         metavar='PKG', help='export every type of PKG (repeatable)')
-    _add_types(parser, 'every type of the packages')
+    _add_types(parser, 'every type of --package, else of --workspace')
     parser.add_argument('-o', dest='output_dir', required=True, metavar='DIR',
                         help='include root to write to')
     _add_msg_paths(parser, 'the ROS environment')
@@ -262,7 +262,7 @@ def _add_mros_v1_fit(subparsers):
     _add_source_export_dir(parser, ', reported instead of an app')
     _add_settings(parser, "default for an app: the app's mros_usr_config.h and the library's "
                           'mros_packet_config.h')
-    _add_app(parser)
+    _add_app(parser, "the app's app.json, or every type of --export-dir")
     _add_header_form(parser)
     parser.set_defaults(run=_mros_v1_fit)
 

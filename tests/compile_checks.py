@@ -6,6 +6,8 @@ import glob
 import os
 import re
 
+import pytest
+
 STRICT_FLAGS = ['-Wall', '-Wextra', '-Wshadow', '-pedantic', '-Werror', '-fno-exceptions', '-fno-rtti']
 LANGUAGE_MODES = ['gnu++98', 'c++11', 'c++14', 'c++17']
 # The CPUs of mROS boards: GR-PEACH's Cortex-A9 (its Makefile's line) and
@@ -18,6 +20,9 @@ TARGETS = {
     'cortex-a9': ['arm-none-eabi-g++', '-mcpu=cortex-a9', '-marm', '-mfpu=vfpv3',
                   '-mfloat-abi=hard', '-mno-unaligned-access'],
 }
+# The targets as test parameters: a cross compiler's run is slow.
+TARGET_PARAMS = [name if name == 'host' else pytest.param(name, marks=pytest.mark.slow)
+                 for name in sorted(TARGETS)]
 
 
 def every_header_translation_unit(include_root, path):
