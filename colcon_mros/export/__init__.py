@@ -1,9 +1,7 @@
-"""Exports: the headers one firmware needs, and the export dir.
+"""Exports: the headers one firmware needs (``genmros export``), and the
+export dir catkin and colcon fill, with the run record that says when an
+export is up to date.
 
-- firmware_export: ``genmros export``, the types a firmware names and every
-  type they contain, with the per-firmware aggregates (``ExportRequest``)
-- export_dir: the export dir of catkin and colcon, its only owner (layout,
-  type list, mros_export.cmake, claims)
-
-Imports the generator and colcon_mros.errors, nothing above.
+Uses the generator and the mROS v1 library's rules (its fit check and
+compile-time check); docs/design.md maps the modules and layers.
 """
