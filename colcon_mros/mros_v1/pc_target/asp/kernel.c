@@ -21,6 +21,7 @@
  */
 #define _GNU_SOURCE
 #include <errno.h>
+#include <limits.h>
 #include <pthread.h>
 #include <setjmp.h>
 #include <signal.h>
@@ -77,6 +78,7 @@ struct semaphore {
 
 struct timer {
   int in_use;
+  unsigned taken; /* how often the slot was taken: its handles tell them apart */
   pc_handler handler;
   void *arg;
   uint64_t deadline_us;
@@ -479,6 +481,13 @@ static void request_handler_thread(void) {
   if (handler_tcb.state == WAITING) wake(&handler_tcb);
 }
 
+/* A timer's handle: its slot and how often the slot was taken, so that the
+ * handle of a one-shot timer that fired (and gave its slot back) stops
+ * nothing when another timer has the slot now. */
+static int timer_handle(int timer) {
+  return (int)(timers[timer].taken % (unsigned)(INT_MAX / MAX_TIMERS)) * MAX_TIMERS + timer;
+}
+
 int pc_timer_start(pc_handler handler, void *arg, uint64_t first_us, uint64_t period_us) {
   int timer;
   enter();
@@ -490,6 +499,7 @@ int pc_timer_start(pc_handler handler, void *arg, uint64_t first_us, uint64_t pe
     return -1;
   }
   timers[timer].in_use = 1;
+  timers[timer].taken++;
   timers[timer].handler = handler;
   timers[timer].arg = arg;
   timers[timer].deadline_us = pc_now_us() + first_us;
@@ -497,14 +507,17 @@ int pc_timer_start(pc_handler handler, void *arg, uint64_t first_us, uint64_t pe
   timers[timer].pending = 0;
   pthread_cond_signal(&timer_wakeup);
   pthread_mutex_unlock(&kernel_lock);
-  return timer;
+  return timer_handle(timer);
 }
 
-void pc_timer_stop(int timer) {
-  if (timer < 0 || timer >= MAX_TIMERS) return;
+void pc_timer_stop(int handle) {
+  int timer = handle % MAX_TIMERS;
+  if (handle < 0) return;
   enter();
-  timers[timer].in_use = 0;
-  timers[timer].pending = 0;
+  if (timers[timer].in_use && timer_handle(timer) == handle) {
+    timers[timer].in_use = 0;
+    timers[timer].pending = 0;
+  }
   pthread_mutex_unlock(&kernel_lock);
 }
 

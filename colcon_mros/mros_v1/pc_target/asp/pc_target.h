@@ -75,9 +75,10 @@ void pc_dispatch_point(void);
 /* Interrupt-level code: handlers run one at a time, above every task. */
 typedef void (*pc_handler)(void *arg);
 /* Calls handler every period_us (0: once) from first_us from now; returns
- * a timer number for pc_timer_stop, or -1 when every timer is in use. */
+ * the timer's handle for pc_timer_stop, or -1 when every timer is in use. A
+ * one-shot timer is gone once it fired: its handle then stops nothing. */
 int pc_timer_start(pc_handler handler, void *arg, uint64_t first_us, uint64_t period_us);
-void pc_timer_stop(int timer);
+void pc_timer_stop(int handle);
 /* Calls handler once, at interrupt level, as soon as the CPU allows. */
 void pc_raise_interrupt(pc_handler handler, void *arg);
 

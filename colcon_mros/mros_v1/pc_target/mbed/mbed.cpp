@@ -247,23 +247,18 @@ float Timer::read() { return read_us() / 1e6f; }
 
 Timer::operator float() { return read(); }
 
-namespace {
-struct TickerCall {
-  void (*handler)(void);
-};
-void call_ticker(void *call) { static_cast<TickerCall *>(call)->handler(); }
-}  // namespace
-
-Ticker::Ticker() : timer_(-1) {}
+Ticker::Ticker() : handler_(NULL), timer_(-1) {}
 
 Ticker::~Ticker() { detach(); }
 
+// Interrupt level: no task runs, so the ticker cannot be detached or
+// destroyed while its handler is called.
+void Ticker::call(void *ticker) { static_cast<Ticker *>(ticker)->handler_(); }
+
 void Ticker::start(void (*handler)(void), uint64_t first_us, uint64_t period_us) {
   detach();
-  TickerCall *call = new TickerCall;
-  call->handler = handler;
-  // The call outlives a detach that races its last tick; tickers are few.
-  timer_ = pc_timer_start(call_ticker, call, first_us, period_us);
+  handler_ = handler;
+  timer_ = pc_timer_start(call, this, first_us, period_us);
 }
 
 void Ticker::attach(void (*handler)(void), float seconds) {

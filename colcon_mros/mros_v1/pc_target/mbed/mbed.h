@@ -100,7 +100,9 @@ class Ticker {
  private:
   Ticker(const Ticker &);
   Ticker &operator=(const Ticker &);
-  int timer_;
+  static void call(void *ticker);
+  void (*handler_)(void);
+  int timer_;  // the kernel timer's handle, -1 when detached
 };
 
 class Timeout : public Ticker {
