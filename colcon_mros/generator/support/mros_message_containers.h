@@ -20,10 +20,6 @@
 #include <string>
 #include <vector>
 
-#if __cplusplus >= 201103L
-#include <array>
-#endif
-
 namespace mros {
 
 // ROS 1 time: seconds and nanoseconds since the epoch, unsigned on the wire.
@@ -42,12 +38,10 @@ struct Duration {
   Duration(int32_t sec_, int32_t nsec_) : sec(sec_), nsec(nsec_) {}
 };
 
-// T[N] fields. From C++11 on they are std::array, as roscpp users expect;
-// C++98 has no std::array, so there mros::array is an aggregate with the
-// same element access, size and iteration.
-#if __cplusplus >= 201103L
-template <class T, size_t N> using array = std::array<T, N>;
-#else
+// T[N] fields: an aggregate with std::array's element access, size and
+// iteration (roscpp's fields are boost::array). The same type in every
+// language mode, so that a firmware whose ros.cpp builds as C++98 and whose
+// app builds as C++11 has one definition of each message.
 template <class T, size_t N> struct array {
   typedef T value_type;
   typedef T* iterator;
@@ -75,7 +69,6 @@ template <class T, size_t N> struct array {
     for (size_type i = 0; i < N; ++i) elems[i] = value;
   }
 };
-#endif
 
 // Bounded storage (genmros --storage bounded) holds strings and variable
 // arrays inside the message, no heap. Asked to hold more than its bound, a
