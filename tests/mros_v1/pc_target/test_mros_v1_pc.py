@@ -18,7 +18,6 @@ pinned by the tests at the end.
 
 import http.client
 import os
-import re
 import socket
 import struct
 import subprocess

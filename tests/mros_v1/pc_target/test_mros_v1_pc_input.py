@@ -7,7 +7,7 @@ import os
 
 import pytest
 
-from conftest import REPO, run_genmros
+from conftest import run_genmros
 from mros_v1_checkout import MROS_V1_ROOT
 
 
