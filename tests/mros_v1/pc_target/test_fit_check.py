@@ -139,20 +139,24 @@ def _full_text_size_of_user_type():
                               check=True).stdout)
 
 
-def test_ros_cpp_refuses_to_compile_where_no_genmros_check_ran(tmp_path):
+@pytest.mark.parametrize('compiler', [[], ['-U__has_include']],
+                         ids=['gcc', 'without __has_include'])
+def test_ros_cpp_refuses_to_compile_where_no_genmros_check_ran(tmp_path, compiler):
     # Headers exported without the settings (as a board's make build that
     # never gave genmros the settings would have them); ros.cpp's includes
     # put the library's settings on the path, and the check in the
-    # aggregate it includes stops the compile.
+    # aggregate it includes stops the compile, also with a compiler that has
+    # no __has_include (gcc-arm-none-eabi 4.9, which mROS v1's README lists).
     include = str(tmp_path / 'include')
     run_genmros('export', '--type', 'sensor_msgs/JointState', '-o', include, '--underlay', '/usr')
     source = tmp_path / 'ros_like.cpp'
-    source.write_text('#include "message_headers.h"\nint main() { return 0; }\n')
+    # ros.cpp's first two lines.
+    source.write_text('#include "ros.h"\n#include "message_headers.h"\nint main() { return 0; }\n')
     # ros.cpp's include path in the PC target's build, as mros_v1_pc.mk has it.
     library = os.path.join(MROS_V1_ROOT, 'mros-lib')
     library_paths = app_variables(os.path.join(library, 'Makefile.m'),
                                   ['MROS_DIR=' + library])['MROS_INCLUDE_PATHS'].split()
-    command = (['g++', '-std=gnu++98', '-fsyntax-only', '-I', include,
+    command = (['g++', '-std=gnu++98', '-fsyntax-only'] + compiler + ['-I', include,
                 '-I', os.path.join(TARGET_DIR, 'config'),
                 '-I', os.path.join(CUSTOM_PUBSUB, 'mros_config')] + library_paths
                + ['-I', os.path.join(TARGET_DIR, 'asp'), '-I', os.path.join(TARGET_DIR, 'lwip'),
