@@ -112,8 +112,10 @@ for cpu in cortex-m0 cortex-m4 cortex-a9; do
 done
 
 echo
-echo "RAM for a firmware's buffers (bytes): the publish block (PUB_MSG_MAX_SIZE + 4) and one message object."
-echo "Heap storage also takes what its strings and arrays hold from the heap, at run time."
+echo "RAM for a firmware's buffers (bytes): the publish block (PUB_MSG_MAX_SIZE + 4) and one message object,"
+echo "which is also the static storage delivery keeps a received message in, off the subscriber task's stack"
+echo "(counted in the bss of the table above). Heap storage also takes what its strings and arrays hold"
+echo "from the heap, at run time."
 echo
 echo "| type | heap: PUB_MSG_MAX_SIZE | heap: sizeof message | bounded: PUB_MSG_MAX_SIZE | bounded: sizeof message |"
 echo "|---|---:|---:|---:|---:|"

@@ -57,9 +57,10 @@ SUPPORT_NAMESPACES = frozenset('''
 # headers name packages from inside those namespaces, where these would be
 # found first. tests/generator/test_names.py holds this list equal to the headers'.
 SUPPORT_HEADER_NAMES = frozenset('''
-    CallCallbackFuncs Codec DataType DataTypeId Definition Duration ElementRun Fields
-    FloatCodec IntegerCodec LengthCounter MD5Sum Message OnBoardFrames Reader SequenceCodec
-    Slots StampCodec TextCodec Time UnsignedWord Writer array bounded_string bounded_vector
+    CallCallbackFuncs Codec DataType DataTypeId Definition DeliveryStorage Duration ElementRun
+    Fields FloatCodec IntegerCodec LengthCounter MD5Sum Message OnBoardFrames Reader
+    SequenceCodec Slots StampCodec Storage TextCodec Time UnsignedWord Writer array
+    bounded_string bounded_vector
     message_traits mros service_traits subtask_methods wire
 '''.split())
 

@@ -14,7 +14,7 @@ SUPPORT_FILES = [os.path.join(GENERATOR, 'support', name)
     os.path.join(GENERATOR, 'templates', 'mros_message_support_version.h.em')]
 # A template's parameter list, nested template arguments included.
 _TEMPLATE_HEAD = re.compile(r'template\s*<(?:[^<>]|<[^<>]*>)*>')
-_DECLARATION = re.compile(r'\b(?:struct|class|namespace|using)\s+([A-Za-z_]\w*)')
+_DECLARATION = re.compile(r'\b(?:struct|class|union|namespace|using)\s+([A-Za-z_]\w*)')
 
 
 def _declared(path):

@@ -12,6 +12,8 @@
 #ifndef MROS_V1_DELIVERY_H
 #define MROS_V1_DELIVERY_H
 
+#include <new>
+
 #include <mros_message_support.h>
 
 namespace mros {
@@ -81,6 +83,32 @@ template <class T> void memCopy(const T& message, char*& cursor) {
   OnBoardFrames<T>::note(body, static_cast<uint32_t>(cursor - body));
 }
 
+// Where a delivered message lives while its callback runs: static storage of
+// its type, not the subscriber task's stack. A bounded message holds its
+// strings and arrays itself and may take kilobytes, where the library gives
+// its tasks MROS_TASK_STACK_SIZE bytes (2 KiB in the samples); the library
+// delivers from its one subscriber task, one message at a time, so one place
+// per type is enough. Raw storage, zero-filled before start-up (no
+// constructor, no guard); a message is constructed in it for each delivery
+// and destroyed after, as it was on the stack.
+template <class T> class DeliveryStorage {
+ public:
+  static void* place() { return storage().bytes; }
+
+ private:
+  union Storage {
+    char bytes[sizeof(T)];
+    double align_double;
+    uint64_t align_integer;
+    void* align_pointer;
+  };
+
+  static Storage& storage() {
+    static Storage storage;
+    return storage;
+  }
+};
+
 // A frame as mROS v1 hands it to a subscriber: the length word, then the
 // body. The message is only delivered when the body decodes completely
 // within its known size.
@@ -92,11 +120,12 @@ template <class T> void deliverFrame(void (*callback)(void*), const char* frame)
     body_size = static_cast<uint32_t>(word[0]) | static_cast<uint32_t>(word[1]) << 8 |
                 static_cast<uint32_t>(word[2]) << 16 | static_cast<uint32_t>(word[3]) << 24;
   }
-  T message;
+  T* message = new (DeliveryStorage<T>::place()) T();
   Reader in(reinterpret_cast<const uint8_t*>(body), body_size);
-  if (Codec<T>::read(in, message)) {
-    callback(&message);
+  if (Codec<T>::read(in, *message)) {
+    callback(message);
   }
+  message->~T();
 }
 
 }  // namespace wire

@@ -1,0 +1,67 @@
+"""mROS v1 delivery (mros_v1_delivery.h) keeps the message it hands a
+subscriber off the subscriber task's stack: the library's tasks have a few
+KiB (MROS_TASK_STACK_SIZE, 2048 bytes in the samples), and a bounded
+message holds its data itself. GCC's -fstack-usage of deliverFrame for a
+bounded sensor_msgs/JointState of over 1 KB stays small, for the host and
+for GR-PEACH's Cortex-A9 at mROS v1's -Os."""
+
+import os
+import re
+import subprocess
+
+import pytest
+
+from conftest import run_genmros
+
+SOURCE = '''#include <message_headers.h>
+#include <sensor_msgs/JointState.h>
+static void received(void*) {}
+void deliver(char* frame) { callCallback(sensor_msgs::JointState::MROS_TYPE_ID, received, frame); }
+'''
+COMPILERS = {'host': ['g++', '-O2'],
+             'cortex-a9': ['arm-none-eabi-g++', '-Os', '-mcpu=cortex-a9', '-marm',
+                           '-mfloat-abi=hard', '-mfpu=vfpv3']}
+
+
+@pytest.fixture(scope='module')
+def bounded_joint_state(tmp_path_factory):
+    root = tmp_path_factory.mktemp('v1_delivery')
+    options = root / 'bounds.options'
+    options.write_text('* max_size:32 max_count:16\n')
+    include = str(root / 'include')
+    run_genmros('export', '--type', 'sensor_msgs/JointState', '-o', include, '--underlay', '/usr',
+                '--storage', 'bounded', '--options', str(options))
+    return include
+
+
+@pytest.mark.parametrize('cpu', [
+    'host', pytest.param('cortex-a9', marks=pytest.mark.slow)])
+def test_delivery_keeps_a_bounded_message_off_the_stack(bounded_joint_state, tmp_path, cpu):
+    source = tmp_path / 'deliver.cpp'
+    source.write_text(SOURCE)
+    subprocess.run(COMPILERS[cpu] + ['-std=gnu++98', '-fno-exceptions', '-fno-rtti',
+                                     '-fstack-usage', '-c', '-I', bounded_joint_state,
+                                     str(source), '-o', str(tmp_path / 'deliver.o')],
+                   check=True, cwd=str(tmp_path))
+    with open(str(tmp_path / 'deliver.su')) as stream:
+        usage = stream.read()
+    frames = [int(match.group(1)) for match in
+              re.finditer(r'deliverFrame[^\t]*\t(\d+)\t', usage)]
+    callers = [int(match.group(1)) for match in re.finditer(r'deliver\(char\*\)\t(\d+)\t', usage)]
+    assert _message_size(COMPILERS[cpu], bounded_joint_state, tmp_path) > 1000
+    # deliverFrame, inlined or not, and what calls it: far below the message.
+    assert frames + callers, usage
+    assert max(frames + callers) < 256, usage
+
+
+def _message_size(compiler, include, tmp_path):
+    """sizeof the bounded JointState for compiler's CPU, read from an object."""
+    probe = tmp_path / 'size.cpp'
+    probe.write_text('#include <sensor_msgs/JointState.h>\n'
+                     'char size_probe[sizeof(sensor_msgs::JointState)];\n')
+    subprocess.run(compiler + ['-std=gnu++98', '-c', '-I', include, str(probe), '-o',
+                               str(tmp_path / 'size.o')], check=True)
+    nm = 'arm-none-eabi-nm' if compiler[0].startswith('arm') else 'nm'
+    symbols = subprocess.run([nm, '-S', str(tmp_path / 'size.o')], capture_output=True, text=True,
+                             check=True).stdout
+    return int(re.search(r'^\S+ (\S+) [BbCc] size_probe$', symbols, re.M).group(1), 16)
