@@ -87,7 +87,9 @@ cost() {  # elf baseline_elf -> total bytes over the baseline
   echo "$((t - bt)) $((d - bd)) $((b - bb))"
 }
 
-echo "Bytes a message type adds to a firmware (text+data+bss over the baseline firmware without one):"
+echo "Bytes a message type adds to a firmware (text+data+bss over the baseline firmware without one);"
+echo "bss holds the static storage delivery receives the message in, off the subscriber task's stack,"
+echo "and on-board delivery's table of waiting frames (260 bytes once per firmware, for every type):"
 echo
 echo "| CPU | type | hand-written v1 | genmros heap | genmros / hand-written | genmros bounded | heap, compact text | compact / full |"
 echo "|---|---|---:|---:|---:|---:|---:|---:|"

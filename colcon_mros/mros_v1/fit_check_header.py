@@ -12,7 +12,8 @@ Python check's errors do.
 import os
 
 from colcon_mros.generator.render import render_template
-from colcon_mros.mros_v1.rules import (LIBRARY_HEADER_GUARD, POOL_KINDS, RULES, SETTINGS_HEADERS,
+from colcon_mros.mros_v1.rules import (LIBRARY_HEADER_GUARD, ONBOARD_FRAME_SLOTS, POOL_KINDS,
+                                       PUBLISHING_POOLS, RULES, SETTINGS_HEADERS,
                                        SHORTEST_NAMES, FirmwareNeeds)
 
 FIT_CHECK_HEADER = 'mros_v1_fit_check.h'
@@ -55,4 +56,5 @@ def fit_check_header(messages):
     return {FIT_CHECK_HEADER: render_template(
         TEMPLATE_DIR, FIT_CHECK_HEADER + '.em', needs=needs, pool_kinds=POOL_KINDS,
         types=[CheckedType(needed) for needed in needs.types],
-        library_guard=LIBRARY_HEADER_GUARD, settings_headers=SETTINGS_HEADERS)}
+        library_guard=LIBRARY_HEADER_GUARD, settings_headers=SETTINGS_HEADERS,
+        publishing_pools=PUBLISHING_POOLS, onboard_frame_slots=ONBOARD_FRAME_SLOTS)}

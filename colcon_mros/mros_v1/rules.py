@@ -48,6 +48,9 @@ TABLES = ('MROS_TOPIC_MAX_NUM', 'MROS_NODE_MAX_NUM', 'MROS_PUB_TOPIC_CONNECTOR_M
           'MROS_SUB_TOPIC_CONNECTOR_MAX_NUM')
 # The compile-time check looks at this many pools of each kind (the samples have 3).
 MAX_POOLS = 8
+# What mros_v1_delivery.h remembers of the frames waiting for the subscriber
+# task: one slot per block of the publishing pools (its default there).
+ONBOARD_FRAME_SLOTS = 'MROS_ONBOARD_FRAME_SLOTS'
 
 
 class PoolKind:
@@ -62,6 +65,10 @@ class PoolKind:
                        for index in range(1, MAX_POOLS + 1)]
         self.sizes = [name for _, name in self.blocks]
         self.name = prefix + 'MEMPOOL<n>_SIZE'
+        # How many blocks each pool has.
+        self.queue_lengths = [(index, prefix + 'MEMPOOL%d_QUELEN' % index)
+                              for index in range(1, MAX_POOLS + 1)]
+        self.queue_length_name = prefix + 'MEMPOOL<n>_QUELEN'
 
 
 PUBLISHING_POOLS = PoolKind('publishing', 'ROS_INNER_TOPIC_PUBLISHER_',

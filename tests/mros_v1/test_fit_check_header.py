@@ -106,6 +106,32 @@ def test_both_renderings_of_the_rules_refuse_the_same(bounded_export, tmp_path, 
             'MROS_TOPIC_TYPENAME_MAXLEN', 'publishing', 'receiving from ROS nodes'}
 
 
+def test_delivery_must_remember_every_publishing_block(bounded_export, tmp_path):
+    # The small settings' two publishing pools hold 16 + 8 blocks (the third
+    # pool's 100 are beyond ..._CONFIG_NUM): within on-board delivery's 32
+    # slots. One more block than the slots stops the compile, with the setting
+    # to define; defining it lets the compile through.
+    include, _ = bounded_export
+    source = os.path.join(include, 'aggregate.cpp')
+    with open(source, 'w') as stream:
+        stream.write('#include "message_headers.h"\n')
+    command = ['g++', '-std=gnu++98', '-fsyntax-only', '-I', include]
+    for values, extra, refused in (({}, [], False),
+                                   ({'ROS_INNER_TOPIC_PUBLISHER_MEMPOOL2_QUELEN': 17}, [], True),
+                                   ({'ROS_INNER_TOPIC_PUBLISHER_MEMPOOL2_QUELEN': 17},
+                                    ['-DMROS_ONBOARD_FRAME_SLOTS=33'], False)):
+        directory = tmp_path / ('%d%d' % (len(values), len(extra)))
+        directory.mkdir()
+        result = subprocess.run(command + ['-I', _settings_dir(directory, **values)] + extra
+                                + [source], capture_output=True, text=True)
+        messages = re.findall(r'error: #error "(the publishing pools[^"]*)"', result.stderr)
+        assert messages == ([
+            'the publishing pools hold more blocks than on-board delivery remembers: define '
+            'MROS_ONBOARD_FRAME_SLOTS to at least the sum of '
+            'ROS_INNER_TOPIC_PUBLISHER_MEMPOOL<n>_QUELEN (mros_usr_config.h), the same in every '
+            'file'] if refused else []), result.stderr
+
+
 def test_the_check_can_be_skipped(bounded_export, tmp_path):
     include, _ = bounded_export
     refusals, status, stderr = _compile_time_refusals(include, _settings_dir(tmp_path),

@@ -22,35 +22,43 @@ namespace wire {
 // mROS v1 delivers a frame on the board it was published on straight from
 // the publisher's memory block, where the 4-byte length word before the
 // body has not been written (it is 0 or stale: the library writes it only
-// for outside nodes). memCopy notes where it put each body of type T and
-// how long it was; delivery believes the length word only for other frames,
-// which the library received from outside with that word (into blocks of
-// its outer pool, never one of the publishers' blocks). Either way no byte
-// past a known size is read. The last MROS_ONBOARD_FRAME_SLOTS bodies of
-// each type are remembered (4 unless the firmware defines it, a power of
-// two): at least the blocks of that type waiting for the subscriber task,
-// which its topics' queue sizes bound.
+// for outside nodes). memCopy notes where it put each body and how long it
+// was, one note per memory block (a block holds one frame at a time, of
+// whichever type: the pool hands it out again, and it is noted again);
+// delivery believes the length word only for other frames, which the
+// library received from outside with that word (into blocks of its outer
+// pool, never one of the publishers' blocks). Either way no byte past a
+// known size is read. Any block of the publishing pools can hold a frame
+// waiting for the subscriber task, however many frames came after it, so
+// MROS_ONBOARD_FRAME_SLOTS blocks are remembered (32 unless the firmware
+// defines it, the same in every file): mros_v1_fit_check.h stops ros.cpp's
+// compile where the pools have more.
 #ifndef MROS_ONBOARD_FRAME_SLOTS
-#define MROS_ONBOARD_FRAME_SLOTS 4
+#define MROS_ONBOARD_FRAME_SLOTS 32
 #endif
-template <class T> class OnBoardFrames {
+class OnBoardFrames {
  public:
-  // Size first, then the address: a reader that finds the address reads the
-  // size that belongs to it.
+  // The block's slot, else a free one, else (more blocks than slots) the
+  // oldest. Size first, then the address: a reader that finds the address
+  // reads the size that belongs to it.
   static void note(const char* body, uint32_t size) {
     Slots& slots = table();
-    const unsigned slot = slots.next;
-    slots.next = (slot + 1) % kSlots;
+    unsigned slot = 0;
+    while (slot < kSlots && slots.bodies[slot] != body && slots.bodies[slot] != 0) {
+      ++slot;
+    }
+    if (slot == kSlots) {
+      slot = slots.next;
+      slots.next = (slot + 1) % kSlots;
+    }
     slots.bodies[slot] = 0;
     slots.sizes[slot] = size;
     slots.bodies[slot] = body;
   }
 
-  // The newest note of body: a block the pool hands out again is noted again.
   static bool find(const char* body, uint32_t& size) {
     const Slots& slots = table();
-    for (unsigned age = 1; age <= kSlots; ++age) {
-      const unsigned slot = (slots.next + kSlots - age) % kSlots;
+    for (unsigned slot = 0; slot < kSlots; ++slot) {
       if (slots.bodies[slot] == body) {
         size = slots.sizes[slot];
         return true;
@@ -68,7 +76,8 @@ template <class T> class OnBoardFrames {
   };
 
   // A function's static, zero-filled before start-up (no constructor, no
-  // guard), and only in firmware that delivers or publishes T.
+  // guard), one for the whole firmware, and only in firmware that publishes
+  // or delivers through the v1 library.
   static Slots& table() {
     static Slots slots;
     return slots;
@@ -80,7 +89,7 @@ template <class T> void memCopy(const T& message, char*& cursor) {
   Codec<T>::write(out, message);
   const char* body = cursor;
   cursor = reinterpret_cast<char*>(out.pos);
-  OnBoardFrames<T>::note(body, static_cast<uint32_t>(cursor - body));
+  OnBoardFrames::note(body, static_cast<uint32_t>(cursor - body));
 }
 
 // Where a delivered message lives while its callback runs: static storage of
@@ -115,7 +124,7 @@ template <class T> class DeliveryStorage {
 template <class T> void deliverFrame(void (*callback)(void*), const char* frame) {
   const char* body = frame + 4;
   uint32_t body_size;
-  if (!OnBoardFrames<T>::find(body, body_size)) {
+  if (!OnBoardFrames::find(body, body_size)) {
     const uint8_t* word = reinterpret_cast<const uint8_t*>(frame);
     body_size = static_cast<uint32_t>(word[0]) | static_cast<uint32_t>(word[1]) << 8 |
                 static_cast<uint32_t>(word[2]) << 16 | static_cast<uint32_t>(word[3]) << 24;
