@@ -6,7 +6,9 @@ preprocessor evaluates where the library's own settings headers are on the
 include path (ros.cpp's compile): a firmware whose types the library is
 certain to overrun does not build for the board, whatever build tool made
 its headers. A connection header counts with the shortest names, as the
-Python check's errors do.
+Python check's errors do. It also holds on-board delivery's table of waiting
+frames (mros_v1_delivery.h) to the number of blocks the publishing pools
+have, which only the compile knows.
 """
 
 import os
