@@ -83,7 +83,8 @@ class Requirement:
 class Fit:
     """A firmware's message types (the generator's models) against settings
     ({name: Setting}): the misfits (errors) and the warnings, and each
-    type's requirements."""
+    type's requirements (type_requirements: (TypeNeeds, [Requirement]) in
+    the types' order, one Requirement per rule and rule_settings' setting)."""
 
     def __init__(self, messages, settings):
         self.needs = FirmwareNeeds(messages)
@@ -92,10 +93,11 @@ class Fit:
         self.longest_names = self.topic_name_max.value + PEER_NAME_MAX
         self.rule_settings = [largest_pool(settings, rule.setting) if rule.is_pool
                               else _required(settings, rule.setting) for rule in RULES]
+        self.type_requirements = [(needed, self._requirements(needed))
+                                  for needed in self.needs.types]
         self.misfits = []
         self.warnings = []
-        for needed in self.needs.types:
-            requirements = self.requirements(needed)
+        for needed, requirements in self.type_requirements:
             self.misfits += [Misfit(needed.full_name, r.what, r.setting, r.assumed, r.needed)
                              if r.assumed is not None else
                              Misfit(needed.full_name, r.what, r.setting, r.needed)
@@ -116,7 +118,7 @@ class Fit:
                        ', '.join('%s: %s = %d at %s' % (use, pool.name, pool.value, pool.where())
                                  for use, pool in pools)))
 
-    def requirements(self, needed):
+    def _requirements(self, needed):
         """The Requirements of one TypeNeeds, one per rule."""
         requirements = []
         for rule, setting in zip(RULES, self.rule_settings):

@@ -60,17 +60,13 @@ def report(fit, settings_files):
              "'names <= N': fits while the two take at most N bytes together (with a topic of "
              'up to %d, %s, and a caller id of up to %d it does not).'
              % (fit.topic_name_max.value, fit.topic_name_max.name, PEER_NAME_MAX), '']
-    columns = None
     rows = []
-    for needed in fit.needs.types:
-        requirements = fit.requirements(needed)
-        if columns is None:
-            columns = ['%s %d' % (r.setting.name, r.setting.value) for r in requirements]
+    for needed, requirements in fit.type_requirements:
         frame = 'no maximum' if needed.max_frame is None else str(needed.max_frame)
         rows.append([needed.full_name, str(needed.text_bytes), str(needed.subscriber_header),
                      str(needed.publisher_header), frame] + [_cell(r) for r in requirements])
     header = ['type', 'definition text', 'subscriber header', 'publisher header',
-              'largest frame'] + (columns or [])
+              'largest frame'] + ['%s %d' % (s.name, s.value) for s in fit.rule_settings]
     lines.append('| %s |' % ' | '.join(header))
     lines.append('|---|' + '---:|' * (len(header) - 1))
     lines += ['| %s |' % ' | '.join(row) for row in rows]

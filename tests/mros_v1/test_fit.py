@@ -6,7 +6,6 @@ send. The expected values come from the settings files and rospy's own
 definition texts, not from genmros."""
 
 import os
-import re
 import subprocess
 
 import pytest
@@ -18,8 +17,9 @@ from colcon_mros.mros_v1.rules import (PEER_NAME_MAX, PUBLISHER_HEADER_FIXED,
                                        SUBSCRIBER_HEADER_FIXED, FirmwareNeeds)
 from colcon_mros.mros_v1.settings import read_settings
 from colcon_mros.mros_v1.pc_target.ros_graph import PYTHON, RosGraph
-from conftest import REPO, TEST_WS
+from conftest import TEST_WS
 from mros_v1_checkout import MROS_V1_ROOT
+from settings_headers import define, header_paths, small_settings
 from tcpros_peer import HostilePublisher, RawSubscriber
 
 USR_CONFIG = os.path.join(MROS_V1_ROOT, 'mros_ws', 'custom_pubsub', 'mros_config',
@@ -28,7 +28,6 @@ PACKET_CONFIG = os.path.join(MROS_V1_ROOT, 'mros-lib', 'mros-src', 'packet', 'ci
                              'kinetic', 'mros_packet_config.h')
 
 
-SMALL_SETTINGS = os.path.join(REPO, 'tests', 'fixtures', 'mros_v1_settings')
 
 
 def _messages(*type_names, storage='heap', option_files=()):
@@ -39,34 +38,10 @@ def _needs(*type_names):
     return FirmwareNeeds(_messages(*type_names))
 
 
-def _small_settings(tmp_path=None, **values):
-    """The small settings headers' paths, in a copy with values changed
-    where values are given."""
-    paths = [os.path.join(SMALL_SETTINGS, name)
-             for name in ('mros_usr_config.h', 'mros_packet_config.h')]
-    if not values:
-        return paths
-    copies = []
-    for path in paths:
-        with open(path) as stream:
-            text = stream.read()
-        for name, value in values.items():
-            text = re.sub(r'(#define %s )\S+' % name, r'\g<1>%d' % value, text)
-        copies.append(str(tmp_path / os.path.basename(path)))
-        with open(copies[-1], 'w') as stream:
-            stream.write(text)
-    return copies
-
-
-def _define(paths, name):
-    """(value, 'FILE:LINE') of a #define in the settings headers, read here by hand."""
-    for path in paths:
-        with open(path) as stream:
-            for number, line in enumerate(stream, 1):
-                match = re.match(r'#define %s \(?(\d+)U?\)?( /\*.*)?$' % name, line.strip())
-                if match:
-                    return int(match.group(1)), '%s:%d' % (path, number)
-    raise AssertionError('no %s in %s' % (name, paths))
+def _where(define):
+    """(value, 'FILE:LINE') of settings_headers.define's answer."""
+    value, path, line = define
+    return value, '%s:%d' % (path, line)
 
 
 def _genpy_full_text(type_name):
@@ -95,8 +70,8 @@ def _header_size(fields):
 
 
 def test_a_type_name_fits_the_name_fields_up_to_the_last_byte():
-    settings = _small_settings()
-    typename_max, where = _define(settings, 'MROS_TOPIC_TYPENAME_MAXLEN')
+    settings = header_paths(small_settings())
+    typename_max, where = _where(define(settings, 'MROS_TOPIC_TYPENAME_MAXLEN'))
     assert len('mros_test_base/Vector3i') + 1 == typename_max
     fit = Fit(_messages('mros_test_base/Vector3i', 'geometry_msgs/Quaternion'),
               read_settings(settings))
@@ -106,9 +81,9 @@ def test_a_type_name_fits_the_name_fields_up_to_the_last_byte():
 
 
 def test_a_bounded_frame_needs_the_largest_pool_within_the_pool_count(tmp_path):
-    settings = _small_settings()
-    publishing, _ = _define(settings, 'ROS_INNER_TOPIC_PUBLISHER_MEMPOOL2_SIZE')
-    receiving, receiving_at = _define(settings, 'ROS_OUTER_TOPIC_PUBLISHER_MEMPOOL1_SIZE')
+    settings = header_paths(small_settings())
+    publishing, _, _ = define(settings, 'ROS_INNER_TOPIC_PUBLISHER_MEMPOOL2_SIZE')
+    receiving, receiving_at = _where(define(settings, 'ROS_OUTER_TOPIC_PUBLISHER_MEMPOOL1_SIZE'))
     # A string of up to n bytes: its 4-byte length and n bytes, in a block
     # with the library's 4-byte frame header.
     options = tmp_path / 'bounds.options'
@@ -134,13 +109,14 @@ def test_a_connection_header_fits_for_certain_only_with_room_for_the_shortest_na
     text = len(_genmsg_full_text('mros_test/PersonalData').encode())
     subscriber = SUBSCRIBER_HEADER_FIXED + text + len('mros_test/PersonalData') + 1
     publisher = PUBLISHER_HEADER_FIXED + text + len('mros_test/PersonalData')
-    topic_max, _ = _define(_small_settings(), 'MROS_TOPIC_NAME_MAXLEN')
+    topic_max, _, _ = define(header_paths(small_settings()), 'MROS_TOPIC_NAME_MAXLEN')
     # Room for '/a' and '/a' exactly: fits, with a warning of how short the
     # names must be; one byte less: refused, with the value for the longest names.
-    settings = _small_settings(tmp_path, MROS_PACKET_MAXSIZE_REQ_TCPROS=subscriber + 4,
-                               MROS_PACKET_MAXSIZE_RES_TCPROS=publisher + 3)
-    request, request_at = _define(settings, 'MROS_PACKET_MAXSIZE_REQ_TCPROS')
-    reply, reply_at = _define(settings, 'MROS_PACKET_MAXSIZE_RES_TCPROS')
+    settings = header_paths(small_settings(
+        tmp_path / 'settings', MROS_PACKET_MAXSIZE_REQ_TCPROS=subscriber + 4,
+        MROS_PACKET_MAXSIZE_RES_TCPROS=publisher + 3))
+    request, request_at = _where(define(settings, 'MROS_PACKET_MAXSIZE_REQ_TCPROS'))
+    reply, reply_at = _where(define(settings, 'MROS_PACKET_MAXSIZE_RES_TCPROS'))
     fit = Fit(_messages('mros_test/PersonalData'), read_settings(settings))
     assert [misfit.line() for misfit in fit.misfits] == [
         "%s: mros_test/PersonalData: a ROS publisher's connection header needs "

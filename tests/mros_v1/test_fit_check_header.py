@@ -13,10 +13,9 @@ import pytest
 from colcon_mros.export.firmware_export import firmware_messages
 from colcon_mros.mros_v1.fit import Fit
 from colcon_mros.mros_v1.settings import read_settings
-from conftest import REPO, TEST_WS, run_genmros
+from conftest import TEST_WS, run_genmros
+from settings_headers import header_paths, small_settings
 
-SMALL_SETTINGS = os.path.join(REPO, 'tests', 'fixtures', 'mros_v1_settings')
-SETTINGS_HEADERS = ('mros_usr_config.h', 'mros_packet_config.h')
 TYPES = ['std_msgs/String', 'mros_test_base/Vector3i', 'geometry_msgs/Quaternion',
          'mros_test/PersonalData', 'sensor_msgs/JointState']
 # Bounded, so that every type has a largest frame for the pool rules.
@@ -38,25 +37,11 @@ def bounded_export(tmp_path_factory):
     return include, str(options)
 
 
-def _settings_dir(tmp_path, **values):
-    """A copy of the small settings with values changed."""
-    directory = tmp_path / 'settings'
-    directory.mkdir()
-    for name in SETTINGS_HEADERS:
-        with open(os.path.join(SMALL_SETTINGS, name)) as stream:
-            text = stream.read()
-        for setting, value in values.items():
-            text = re.sub(r'(#define %s )\S+' % setting, r'\g<1>%d' % value, text)
-        (directory / name).write_text(text)
-    return str(directory)
-
-
 def _python_refusals(options, settings_dir):
     """(type, setting) of each misfit of the Python check; a memory pool as
     'publishing' or 'receiving'."""
     messages = firmware_messages(TYPES, [TEST_WS, '/usr'], 'bounded', [options])
-    fit = Fit(messages, read_settings([os.path.join(settings_dir, name)
-                                       for name in SETTINGS_HEADERS]))
+    fit = Fit(messages, read_settings(header_paths(settings_dir)))
     return sorted((misfit.type_name, misfit.what.split(', ')[1].rstrip(',') if 'frame' in misfit.what
                    else misfit.setting.name) for misfit in fit.misfits)
 
@@ -88,7 +73,7 @@ def _compile_time_refusals(include, settings_dir, *flags):
 ], ids=['small', 'mixed', 'large'])
 def test_both_renderings_of_the_rules_refuse_the_same(bounded_export, tmp_path, values):
     include, options = bounded_export
-    settings_dir = _settings_dir(tmp_path, **values)
+    settings_dir = small_settings(tmp_path / 'settings', **values)
     expected = _python_refusals(options, settings_dir) if values.get(
         'ROS_OUTER_TOPIC_PUBLISHER_CONFIG_NUM', 1) else None
     refusals, status, stderr = _compile_time_refusals(include, settings_dir)
@@ -122,8 +107,9 @@ def test_delivery_must_remember_every_publishing_block(bounded_export, tmp_path)
                                     ['-DMROS_ONBOARD_FRAME_SLOTS=33'], False)):
         directory = tmp_path / ('%d%d' % (len(values), len(extra)))
         directory.mkdir()
-        result = subprocess.run(command + ['-I', _settings_dir(directory, **values)] + extra
-                                + [source], capture_output=True, text=True)
+        settings_dir = small_settings(directory / 'settings', **values)
+        result = subprocess.run(command + ['-I', settings_dir] + extra + [source],
+                                capture_output=True, text=True)
         messages = re.findall(r'error: #error "(the publishing pools[^"]*)"', result.stderr)
         assert messages == ([
             'the publishing pools hold more blocks than on-board delivery remembers: define '
@@ -134,6 +120,7 @@ def test_delivery_must_remember_every_publishing_block(bounded_export, tmp_path)
 
 def test_the_check_can_be_skipped(bounded_export, tmp_path):
     include, _ = bounded_export
-    refusals, status, stderr = _compile_time_refusals(include, _settings_dir(tmp_path),
+    refusals, status, stderr = _compile_time_refusals(include,
+                                                      small_settings(tmp_path / 'settings'),
                                                       '-DMROS_SKIP_FIT_CHECK')
     assert (refusals, status) == ([], 0), stderr

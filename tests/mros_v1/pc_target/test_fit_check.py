@@ -15,6 +15,7 @@ from colcon_mros.mros_v1.pc_target.build import TARGET_DIR, app_variables
 from colcon_mros.mros_v1.pc_target.ros_graph import PYTHON
 from conftest import run_genmros
 from mros_v1_checkout import MROS_V1_ROOT
+from settings_headers import define
 
 pytestmark = pytest.mark.needs_mros_v1
 
@@ -22,16 +23,6 @@ CUSTOM_PUBSUB = os.path.join(MROS_V1_ROOT, 'mros_ws', 'custom_pubsub')
 USR_CONFIG = os.path.join(CUSTOM_PUBSUB, 'mros_config', 'mros_usr_config.h')
 PACKET_CONFIG = os.path.join(MROS_V1_ROOT, 'mros-lib', 'mros-src', 'packet', 'cimpl', 'version',
                              'kinetic', 'mros_packet_config.h')
-
-
-def _define(path, name):
-    """(value, line) of a #define in a settings header, read here by hand."""
-    with open(path) as stream:
-        for number, line in enumerate(stream, 1):
-            match = re.match(r'\s*#define\s+%s\s+(\d+)' % name, line)
-            if match:
-                return int(match.group(1)), number
-    raise AssertionError('%s defines no %s' % (path, name))
 
 
 def _full_text_size(type_name):
@@ -52,7 +43,7 @@ def test_a_frame_over_the_largest_pool_is_refused_before_the_build(tmp_path):
     lines = []
     for pool, use in (('ROS_INNER_TOPIC_PUBLISHER_MEMPOOL3_SIZE', 'publishing'),
                       ('ROS_OUTER_TOPIC_PUBLISHER_MEMPOOL3_SIZE', 'receiving from ROS nodes')):
-        value, line = _define(USR_CONFIG, pool)
+        value, _, line = define([USR_CONFIG], pool)
         lines.append('genmros: error: %s:%d: std_msgs/String: a frame of up to %d bytes, %s, '
                      'needs %s >= %d (it is %d)' % (USR_CONFIG, line, frame, use, pool, frame + 4,
                                                     value))
@@ -65,7 +56,7 @@ def test_the_sample_fits_and_is_told_how_short_its_names_must_be():
     # while its topic and the ROS peer's name are short: a warning, not an error.
     report = run_genmros('mros-v1-fit', CUSTOM_PUBSUB).stdout
     text = _full_text_size_of_user_type()
-    request, request_line = _define(PACKET_CONFIG, 'MROS_PACKET_MAXSIZE_REQ_TCPROS')
+    request, _, request_line = define([PACKET_CONFIG], 'MROS_PACKET_MAXSIZE_REQ_TCPROS')
     budget = request - (115 + text + len('custom_pubsub/UserTypeTest') + 1)
     row = [line for line in report.splitlines() if line.startswith('| custom_pubsub/UserTypeTest')]
     assert len(row) == 1 and '| names <= %d |' % budget in row[0], report
@@ -92,7 +83,7 @@ def test_the_report_of_the_sample_with_joint_state_before_and_after_the_fix(tmp_
     before = run_genmros('mros-v1-fit', CUSTOM_PUBSUB, *types, check=False)
     assert before.returncode == 1, before.stderr
     text = _full_text_size('sensor_msgs/JointState')
-    topic_max, _ = _define(USR_CONFIG, 'MROS_TOPIC_NAME_MAXLEN')
+    topic_max, _, _ = define([USR_CONFIG], 'MROS_TOPIC_NAME_MAXLEN')
     names = topic_max + 64  # a topic as long as the library allows, a caller id of 64
     request = 115 + text + len('sensor_msgs/JointState') + 1 + names
     reply = 112 + text + len('sensor_msgs/JointState') + names
