@@ -39,21 +39,18 @@
 #if !defined(MROS_SKIP_FIT_CHECK)
 #if defined(@(library_guard))
 // The mROS v1 library's ros.cpp: its settings are on its include path.
-@[for header in settings_headers]@
-#include "@(header)"
-@[end for]@
 #define MROS_V1_FIT_CHECK_RUNS
 #elif defined(__has_include)
 #if __has_include("@(settings_headers[0])") && __has_include("@(settings_headers[1])")
-@[for header in settings_headers]@
-#include "@(header)"
-@[end for]@
 #define MROS_V1_FIT_CHECK_RUNS
 #endif
 #endif
 #endif
 
 #if defined(MROS_V1_FIT_CHECK_RUNS)
+@[for header in settings_headers]@
+#include "@(header)"
+@[end for]@
 
 // Every block of the publishing pools can hold a frame waiting for the
 // subscriber task: on-board delivery (mros_v1_delivery.h) remembers
