@@ -36,22 +36,29 @@ include $(MROS_DIR)/Makefile.m
 MROS_MSG_INCLUDE_DIR := $(BUILD)/include
 include $(GENMROS_MK)
 
+# On arm, tasks run on the board's stack sizes (asp/task_stacks.c) and the
+# host C library on the host stack: the link wraps what newlib/newlib.c
+# defines as __wrap_NAME.
 ifeq ($(TARGET),arm)
 CROSS := arm-linux-gnueabihf-
 CPU_FLAGS := -mcpu=cortex-a9 -marm -mfpu=vfpv3 -mfloat-abi=hard -mno-unaligned-access
-LINK_FLAGS := -static
+LINK_FLAGS := -static -Wl,@$(BUILD)/obj/newlib.wrap
+HOST_LIBC_OBJS := newlib.o
 else ifeq ($(TARGET),native)
 CROSS :=
 CPU_FLAGS :=
 LINK_FLAGS :=
+HOST_LIBC_OBJS :=
 else
 $(error mros_v1_pc.mk: TARGET is '$(TARGET)', not arm or native)
 endif
 CC := $(CROSS)gcc
 CXX := $(CROSS)g++
+NM := $(CROSS)nm
 
 OBJ_DIR := $(BUILD)/obj
-PC_SOURCE_DIRS := $(PC_TARGET)/asp $(PC_TARGET)/lwip $(PC_TARGET)/mbed $(PC_TARGET)/config
+PC_SOURCE_DIRS := $(PC_TARGET)/asp $(PC_TARGET)/lwip $(PC_TARGET)/mbed $(PC_TARGET)/newlib \
+                  $(PC_TARGET)/config
 # The app's sources first: its mros_config/ replaces the library's config/.
 VPATH := $(APP_DIRS) $(BUILD)/cfg $(VPATH) $(PC_SOURCE_DIRS)
 
@@ -66,21 +73,28 @@ CFLAGS := $(COMMON_FLAGS)
 # mROS v1's flags for C++ (Makefile.mbd), and the app's own.
 CXXFLAGS := $(COMMON_FLAGS) -std=gnu++98 -fno-rtti -fno-exceptions -fno-builtin $(APP_CXXFLAGS)
 
-PC_OBJS := kernel.o lwip.o ros_environment.o mbed.o
+PC_OBJS := kernel.o task_stacks.o lwip.o ros_environment.o mbed.o $(HOST_LIBC_OBJS)
 LIBRARY_OBJS := $(addprefix $(OBJ_DIR)/,$(MROS_CXX_OBJ) $(MROS_C_OBJ) $(PC_OBJS))
 APP_ONLY_OBJS := $(addprefix $(OBJ_DIR)/,$(APP_OBJS) kernel_cfg.o)
 
 library: $(LIBRARY_OBJS)
 app: $(APP_ONLY_OBJS)
 
-$(BUILD)/$(APP_NAME): $(LIBRARY_OBJS) $(APP_ONLY_OBJS)
-	$(CXX) $(CPU_FLAGS) -pthread $(SANITIZER_FLAGS) $(LINK_FLAGS) -o $@ $^
+$(BUILD)/$(APP_NAME): $(LIBRARY_OBJS) $(APP_ONLY_OBJS) $(if $(HOST_LIBC_OBJS),$(OBJ_DIR)/newlib.wrap)
+	$(CXX) $(CPU_FLAGS) -pthread $(SANITIZER_FLAGS) $(LINK_FLAGS) -o $@ $(LIBRARY_OBJS) $(APP_ONLY_OBJS)
+
+# --wrap=NAME for each __wrap_NAME newlib.o defines.
+$(OBJ_DIR)/newlib.wrap: $(OBJ_DIR)/newlib.o
+	$(NM) --defined-only $< | sed -n 's/^.* T __wrap_\(.*\)$$/--wrap=\1/p' > $@
 
 $(OBJ_DIR)/%.o: %.c | $(OBJ_DIR)
 	$(CC) $(CFLAGS) -c $< -o $@
 
 $(OBJ_DIR)/%.o: %.cpp | $(OBJ_DIR)
 	$(CXX) $(CXXFLAGS) -c $< -o $@
+
+# The lwIP stand-in's host calls are lambdas.
+$(OBJ_DIR)/lwip.o: CXXFLAGS += -std=gnu++11
 
 $(OBJ_DIR):
 	mkdir -p $@

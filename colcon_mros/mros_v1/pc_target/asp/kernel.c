@@ -18,6 +18,11 @@
  * time; a handler that falls due while a task runs is taken at that task's
  * next service call. One timer thread turns time-outs and timer expiries into
  * ready tasks and pending handlers.
+ *
+ * A task's code runs on the board's stack size where task_stacks.c
+ * provides it; the host's lock, condition variables and clock, which stand
+ * for ASP's interrupt masking, run on the task thread's host stack
+ * (pc_on_host_stack), so that only the kernel's own frames count there.
  */
 #define _GNU_SOURCE
 #include <errno.h>
@@ -109,12 +114,16 @@ static pthread_once_t clock_started = PTHREAD_ONCE_INIT;
 
 static void start_clock(void) { clock_gettime(CLOCK_MONOTONIC, &start_time); }
 
+static void read_clock(void *now) {
+  pthread_once(&clock_started, start_clock);
+  clock_gettime(CLOCK_MONOTONIC, now);
+}
+
 /* Also right for a ticker an app starts from a static constructor, before
  * main(). */
 uint64_t pc_now_us(void) {
   struct timespec now;
-  pthread_once(&clock_started, start_clock);
-  clock_gettime(CLOCK_MONOTONIC, &now);
+  pc_on_host_stack(read_clock, &now);
   return (uint64_t)(now.tv_sec - start_time.tv_sec) * 1000000u +
          (uint64_t)((now.tv_nsec - start_time.tv_nsec) / 1000);
 }
@@ -122,6 +131,28 @@ uint64_t pc_now_us(void) {
 static void fatal(const char *what) {
   fprintf(stderr, "mROS PC target: %s\n", what);
   exit(70);
+}
+
+/* ---- the host's lock and condition variables, on the host stack ---- */
+
+static void lock_on_host(void *unused) {
+  (void)unused;
+  pthread_mutex_lock(&kernel_lock);
+}
+
+static void unlock_on_host(void *unused) {
+  (void)unused;
+  pthread_mutex_unlock(&kernel_lock);
+}
+
+static void signal_on_host(void *condition) { pthread_cond_signal(condition); }
+
+static void enter(void) { pc_on_host_stack(lock_on_host, NULL); }
+
+static void unlock(void) { pc_on_host_stack(unlock_on_host, NULL); }
+
+static void signal_condition(pthread_cond_t *condition) {
+  pc_on_host_stack(signal_on_host, condition);
 }
 
 /* ---- ready queues and dispatching (kernel_lock held) ---- */
@@ -174,13 +205,16 @@ static void schedule(void) {
   if (next != NULL) {
     remove_ready(next);
     next->state = RUNNING;
-    pthread_cond_signal(&next->dispatched);
+    signal_condition(&next->dispatched);
   }
 }
 
-static void wait_for_cpu(struct tcb *self) {
+static void wait_for_cpu_on_host(void *task) {
+  struct tcb *self = task;
   while (running != self) pthread_cond_wait(&self->dispatched, &kernel_lock);
 }
+
+static void wait_for_cpu(struct tcb *self) { pc_on_host_stack(wait_for_cpu_on_host, self); }
 
 /* The caller gives up the CPU (it is already queued or waiting) and runs
  * again when it is dispatched. */
@@ -214,11 +248,9 @@ static struct tcb *task_of(ID id) {
   return &tasks[id - 1];
 }
 
-static void enter(void) { pthread_mutex_lock(&kernel_lock); }
-
 static ER leave(ER result) {
   preempt_if_needed(current);
-  pthread_mutex_unlock(&kernel_lock);
+  unlock();
   return result;
 }
 
@@ -230,7 +262,7 @@ static ER block(struct tcb *self, enum wait_reason reason, TMO timeout) {
   self->has_deadline = timeout != TMO_FEVR;
   if (self->has_deadline) {
     self->deadline_us = pc_now_us() + (uint64_t)timeout * 1000u;
-    pthread_cond_signal(&timer_wakeup);
+    signal_condition(&timer_wakeup);
   }
   switch_away(self);
   self->wait = WAIT_NONE;
@@ -256,14 +288,20 @@ static void finish_task(struct tcb *self) {
   switch_away(self);
 }
 
+static void run_task_code(void *task) {
+  struct tcb *self = task;
+  self->config->task(self->config->exinf);
+}
+
 static void *task_thread(void *argument) {
   struct tcb *self = argument;
   current = self;
+  pc_task_thread_init(self->id);
   enter();
   for (;;) {
     wait_for_cpu(self);
-    pthread_mutex_unlock(&kernel_lock);
-    if (setjmp(self->exit_point) == 0) self->config->task(self->config->exinf);
+    unlock();
+    if (setjmp(self->exit_point) == 0) pc_run_task(run_task_code, self);
     enter();
     finish_task(self);
   }
@@ -305,10 +343,14 @@ static ER_UINT cancel_requests(ID tskid, int wakeups) {
 
 ER_UINT can_act(ID tskid) { return cancel_requests(tskid, 0); }
 
+/* Jumps up to task_thread's frame from the host stack, below it. */
+static void exit_task(void *task) { longjmp(((struct tcb *)task)->exit_point, 1); }
+
 ER ext_tsk(void) {
   struct tcb *self = current;
   if (self == NULL || self == &handler_tcb) return E_CTX;
-  longjmp(self->exit_point, 1);
+  pc_on_host_stack(exit_task, self);
+  return E_SYS; /* not reached */
 }
 
 ER get_tid(ID *p_tskid) {
@@ -319,7 +361,7 @@ ER get_tid(ID *p_tskid) {
 ER iget_tid(ID *p_tskid) {
   enter();
   *p_tskid = (running != NULL && running != &handler_tcb) ? running->id : TSK_NONE;
-  pthread_mutex_unlock(&kernel_lock);
+  unlock();
   return E_OK;
 }
 
@@ -495,7 +537,7 @@ int pc_timer_start(pc_handler handler, void *arg, uint64_t first_us, uint64_t pe
     if (!timers[timer].in_use) break;
   }
   if (timer == MAX_TIMERS) {
-    pthread_mutex_unlock(&kernel_lock);
+    unlock();
     return -1;
   }
   timers[timer].in_use = 1;
@@ -505,8 +547,8 @@ int pc_timer_start(pc_handler handler, void *arg, uint64_t first_us, uint64_t pe
   timers[timer].deadline_us = pc_now_us() + first_us;
   timers[timer].period_us = period_us;
   timers[timer].pending = 0;
-  pthread_cond_signal(&timer_wakeup);
-  pthread_mutex_unlock(&kernel_lock);
+  signal_condition(&timer_wakeup);
+  unlock();
   return timer_handle(timer);
 }
 
@@ -518,7 +560,7 @@ void pc_timer_stop(int handle) {
     timers[timer].in_use = 0;
     timers[timer].pending = 0;
   }
-  pthread_mutex_unlock(&kernel_lock);
+  unlock();
 }
 
 void pc_raise_interrupt(pc_handler handler, void *arg) {
@@ -562,7 +604,7 @@ static void *handler_thread(void *unused) {
   for (;;) {
     wait_for_cpu(&handler_tcb);
     while (take_pending(&call)) {
-      pthread_mutex_unlock(&kernel_lock);
+      unlock();
       call.handler(call.arg);
       enter();
     }
@@ -655,7 +697,7 @@ void pc_host_call_begin(void) {
   self->state = IN_HOST_CALL;
   running = NULL;
   schedule();
-  pthread_mutex_unlock(&kernel_lock);
+  unlock();
 }
 
 void pc_host_call_end(void) {
@@ -664,7 +706,7 @@ void pc_host_call_end(void) {
   enter();
   wake(self);
   wait_for_cpu(self);
-  pthread_mutex_unlock(&kernel_lock);
+  unlock();
 }
 
 void pc_dispatch_point(void) {
@@ -674,22 +716,38 @@ void pc_dispatch_point(void) {
 
 /* ---- system log ---- */
 
-void syslog(unsigned int prio, const char *format, ...) {
+struct log_entry {
+  unsigned int priority;
+  const char *format;
+  va_list arguments;
+};
+
+static void write_log_entry(void *entry_pointer) {
   static const char *const levels[] = {"emerg", "alert", "crit", "error",
                                        "warning", "notice", "info", "debug"};
+  struct log_entry *entry = entry_pointer;
   char line[1024];
   int length;
-  va_list arguments;
-  length = snprintf(line, sizeof line, "[%s] ", levels[prio & 7u]);
-  va_start(arguments, format);
-  length += vsnprintf(line + length, sizeof line - (size_t)length - 1, format, arguments);
-  va_end(arguments);
+  length = snprintf(line, sizeof line, "[%s] ", levels[entry->priority & 7u]);
+  length += vsnprintf(line + length, sizeof line - (size_t)length - 1, entry->format,
+                      entry->arguments);
   if (length > (int)sizeof line - 2) length = (int)sizeof line - 2;
   while (length > 0 && (line[length - 1] == '\n' || line[length - 1] == '\r')) length--;
   line[length++] = '\n';
   if (write(STDERR_FILENO, line, (size_t)length) < 0) {
     /* Nowhere left to report it. */
   }
+}
+
+/* Formatted and written on the host stack: on the board, ASP's logtask
+ * formats the line, not the calling task. */
+void syslog(unsigned int prio, const char *format, ...) {
+  struct log_entry entry;
+  entry.priority = prio;
+  entry.format = format;
+  va_start(entry.arguments, format);
+  pc_on_host_stack(write_log_entry, &entry);
+  va_end(entry.arguments);
   pc_dispatch_point();
 }
 
@@ -713,9 +771,41 @@ static void init_cond(pthread_cond_t *cond, int monotonic) {
   pthread_condattr_destroy(&attributes);
 }
 
+static void report_stacks_at_exit(void) { pc_report_stacks(); }
+
+/* The main thread takes SIGINT, SIGTERM and SIGUSR1 for the whole program
+ * (every other thread blocks them): SIGUSR1 reports the task stacks, the
+ * others report them and end the program as they would have. */
+static void served_signals(sigset_t *signals) {
+  sigemptyset(signals);
+  sigaddset(signals, SIGINT);
+  sigaddset(signals, SIGTERM);
+  sigaddset(signals, SIGUSR1);
+}
+
+static void serve_signals(void) {
+  sigset_t signals;
+  int received;
+  served_signals(&signals);
+  for (;;) {
+    if (sigwait(&signals, &received) != 0) continue;
+    if (received == SIGUSR1) {
+      pc_report_stacks();
+      continue;
+    }
+    pc_report_stacks();
+    signal(received, SIG_DFL);
+    pthread_sigmask(SIG_UNBLOCK, &signals, NULL);
+    raise(received);
+  }
+}
+
 int main(void) {
   uint_t index;
+  sigset_t served;
   signal(SIGPIPE, SIG_IGN);
+  served_signals(&served);
+  pthread_sigmask(SIG_BLOCK, &served, NULL);
   pthread_once(&clock_started, start_clock);
   init_cond(&timer_wakeup, 1);
 
@@ -744,6 +834,8 @@ int main(void) {
     semaphores[index].count = pc_semaphore_configs[index].initial_count;
   }
   for (index = 0; index < pc_cyclic_count; index++) cyclic_timers[index] = -1;
+  pc_task_stacks_init();
+  atexit(report_stacks_at_exit);
 
   for (index = 0; index < pc_initializer_count; index++) {
     pc_initializer_configs[index].routine(pc_initializer_configs[index].exinf);
@@ -759,6 +851,7 @@ int main(void) {
     if (tasks[index].config->attr & TA_ACT) make_ready(&tasks[index], 0);
   }
   schedule();
-  pthread_mutex_unlock(&kernel_lock);
-  for (;;) pause();
+  unlock();
+  serve_signals();
+  return 0;
 }

@@ -24,6 +24,7 @@ struct pc_task_config {
   TASK task;
   PRI priority;
   size_t stack_size;
+  const char *stack_origin; /* where stack_size is set: "MACRO at FILE:LINE; CRE_TSK at FILE:LINE" */
 };
 
 /* CRE_SEM(ID, { attr, initial count, maximum count }) */
@@ -84,6 +85,21 @@ void pc_raise_interrupt(pc_handler handler, void *arg);
 
 /* Microseconds on a monotonic clock since start-up. */
 uint64_t pc_now_us(void);
+
+/* The board's task stacks (task_stacks.c). On the arm target each task runs
+ * on a stack of its CRE_TSK size above a guard, and the host's own work
+ * (locks, sockets, the C library) runs on the task thread's host stack;
+ * elsewhere tasks keep their threads' host stacks and these are plain calls.
+ * pc_task_stacks_init maps the stacks (before any task thread starts),
+ * pc_task_thread_init sets up the calling thread as task id's, and
+ * pc_run_task runs its code on its stack. */
+void pc_task_stacks_init(void);
+void pc_task_thread_init(ID id);
+void pc_run_task(void (*body)(void *), void *argument);
+/* Calls function(argument) on the calling task thread's host stack. */
+void pc_on_host_stack(void (*function)(void *), void *argument);
+/* Each task's peak stack use against its size, to stderr. */
+void pc_report_stacks(void);
 
 #ifdef __cplusplus
 }

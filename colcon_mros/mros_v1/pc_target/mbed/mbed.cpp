@@ -39,15 +39,28 @@ void open_output_log() {
   if (path != NULL && path[0] != '\0') output_log = open(path, O_WRONLY | O_APPEND | O_CREAT, 0644);
 }
 
+struct OutputChange {
+  PinName pin;
+  const char *value;
+};
+
 // One line a change, written whole (O_APPEND), so a test can read it as it comes.
-void log_output(PinName pin, const char *value) {
+void write_output_change(void *change_pointer) {
+  const OutputChange *change = static_cast<const OutputChange *>(change_pointer);
   char line[64];
-  int length = snprintf(line, sizeof line, "P%d_%d %s\n", pin / 16, pin % 16, value);
+  int length = snprintf(line, sizeof line, "P%d_%d %s\n", change->pin / 16, change->pin % 16,
+                        change->value);
   pthread_once(&output_log_opened, open_output_log);
   if (output_log < 0) return;
   if (write(output_log, line, static_cast<size_t>(length)) < 0) {
     // An output nobody can read is not the app's problem.
   }
+}
+
+// On the host stack, as the board writes a pin without the task's stack.
+void log_output(PinName pin, const char *value) {
+  OutputChange change = {pin, value};
+  pc_on_host_stack(write_output_change, &change);
 }
 
 // "P6_0 1" or "P6_0=1": the pin number, or -1.
@@ -119,7 +132,7 @@ void start_input_poller() {
 }
 
 int read_input(PinName pin) {
-  refresh_inputs();
+  pc_on_host_stack(poll_inputs, NULL);
   pc_dispatch_point();
   if (!valid(pin)) return 0;
   pthread_mutex_lock(&io_lock);

@@ -3,8 +3,9 @@
  * interface and DHCP client standing for the PC's own address. Every socket
  * call is a host call (pc_target.h): the task gives up the CPU and takes it
  * back in priority order, as it waits for lwIP's tcpip thread on the board.
+ * Host calls and name lookups run on the task thread's host stack: they
+ * are the host's, not the board's lwIP.
  */
-#define _GNU_SOURCE
 #include <errno.h>
 #include <fcntl.h>
 #include <stdio.h>
@@ -24,17 +25,34 @@
 #include "eth_arch.h"
 #include "pc_target.h"
 
+namespace {
+
+template <typename Work>
+void do_work(void *work) {
+  (*static_cast<Work *>(work))();
+}
+
+// Does work() on the calling task thread's host stack.
+template <typename Work>
+void on_host_stack(Work work) {
+  pc_on_host_stack(do_work<Work>, &work);
+}
+
+}  // namespace
+
 /* A host call that keeps the host's errno for the caller. */
-#define HOST_CALL(type, call)        \
-  do {                               \
-    type result_;                    \
-    int errno_;                      \
-    pc_host_call_begin();            \
-    result_ = (call);                \
-    errno_ = errno;                  \
-    pc_host_call_end();              \
-    errno = errno_;                  \
-    return result_;                  \
+#define HOST_CALL(type, call)      \
+  do {                             \
+    type result_;                  \
+    int errno_;                    \
+    on_host_stack([&] {            \
+      pc_host_call_begin();        \
+      result_ = (call);            \
+      errno_ = errno;              \
+      pc_host_call_end();          \
+    });                            \
+    errno = errno_;                \
+    return result_;                \
   } while (0)
 
 int lwip_accept(int s, struct sockaddr *addr, socklen_t *addrlen) {
@@ -119,7 +137,7 @@ void lwip_init(void) {}
 
 char *ipaddr_ntoa(const ip_addr_t *addr) {
   static char text[16];
-  const unsigned char *bytes = (const unsigned char *)&addr->addr;
+  const unsigned char *bytes = reinterpret_cast<const unsigned char *>(&addr->addr);
   snprintf(text, sizeof text, "%u.%u.%u.%u", bytes[0], bytes[1], bytes[2], bytes[3]);
   return text;
 }
@@ -163,10 +181,12 @@ struct hostent *lwip_gethostbyname(const char *name) {
   static ip_addr_t address;
   static char *addresses[2];
   static struct hostent entry;
-  if (!address_of(name, &address)) return NULL;
-  addresses[0] = (char *)&address.addr;
+  int found = 0;
+  on_host_stack([&] { found = address_of(name, &address); });
+  if (!found) return NULL;
+  addresses[0] = reinterpret_cast<char *>(&address.addr);
   addresses[1] = NULL;
-  entry.h_name = (char *)name;
+  entry.h_name = const_cast<char *>(name);
   entry.h_aliases = NULL;
   entry.h_addrtype = AF_INET;
   entry.h_length = 4;
@@ -180,12 +200,10 @@ static void unusable(const char *variable, const char *value) {
   exit(2);
 }
 
-const char *pc_node_address(void) {
-  static char text[16];
+static void find_node_address(char *text, size_t size) {
   const char *ros_ip = getenv("ROS_IP");
   const char *ros_hostname = getenv("ROS_HOSTNAME");
   ip_addr_t address;
-  if (text[0] != '\0') return text;
   if (ros_ip != NULL && ros_ip[0] != '\0') {
     if (!ipaddr_aton(ros_ip, &address)) unusable("ROS_IP", ros_ip);
   } else if (ros_hostname != NULL && ros_hostname[0] != '\0') {
@@ -193,7 +211,12 @@ const char *pc_node_address(void) {
   } else {
     ipaddr_aton("127.0.0.1", &address);
   }
-  snprintf(text, sizeof text, "%s", ipaddr_ntoa(&address));
+  snprintf(text, size, "%s", ipaddr_ntoa(&address));
+}
+
+const char *pc_node_address(void) {
+  static char text[16];
+  if (text[0] == '\0') on_host_stack([&] { find_node_address(text, sizeof text); });
   return text;
 }
 
