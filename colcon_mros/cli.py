@@ -224,7 +224,8 @@ def _add_mros_v1_pc(subparsers):
     parser.add_argument('app_dir', metavar='APP_DIR', help="the app's directory (with app.cfg)")
     parser.add_argument('--target', choices=PC_TARGETS, default='arm',
                         help='arm: 32-bit ARM Linux, the board\'s instruction set, a static '
-                             'program run with qemu-arm (default); native: this PC')
+                             'program run with qemu-arm, each task on its app.cfg stack size '
+                             '(default); native: this PC, 1 MiB task stacks')
     parser.add_argument('-o', dest='build_dir', metavar='DIR',
                         help='build directory (default: APP_DIR/build-pc-TARGET)')
     _add_app(parser)

@@ -44,7 +44,23 @@ def test_objects_are_numbered_in_order_of_creation_across_includes(tmp_path):
     assert '#define TNUM_SEMID 1\n#define READY 1\n' in header
     source = (tmp_path / 'out' / 'kernel_cfg.c').read_text()
     assert '#include "%s"' % os.path.join(str(tmp_path), 'app', 'app.h') in source
-    assert '{"SECOND", TA_NULL, (intptr_t)(7), (TASK)(second), PRI(1, 2), 2 * 1024},' in source
+    assert ('{"SECOND", TA_NULL, (intptr_t)(7), (TASK)(second), PRI(1, 2), 2 * 1024, '
+            '"CRE_TSK at app.cfg:5"},') in source
+    # Outside the app's directory: the whole path.
+    assert '"CRE_TSK at %s:1"},' % os.path.join(str(tmp_path), 'lib', 'base.cfg') in source
+
+
+def test_a_stack_size_names_the_header_line_that_defines_it(tmp_path):
+    # What the overflow line of the PC target's task stacks quotes.
+    _write(tmp_path, 'app/config/sizes.h', '#ifndef SIZES\n#define SIZES\n'
+                                           '#define USER_STACK (1024 * 1)\n#endif\n')
+    cfg = _write(tmp_path, 'app/app.cfg', '#include "config/sizes.h"\n'
+                                          'CRE_TSK(USER, { TA_NULL, 0, user, 5, USER_STACK, NULL });\n'
+                                          'CRE_TSK(OTHER, { TA_NULL, 0, other, 5, ELSEWHERE, NULL });\n')
+    config = read_config(cfg, [])
+    user, other = config.objects
+    assert config.stack_origin(user) == 'USER_STACK at config/sizes.h:3; CRE_TSK at app.cfg:2'
+    assert config.stack_origin(other) == 'ELSEWHERE; CRE_TSK at app.cfg:3'
 
 
 @pytest.mark.parametrize('text, line, problem', [

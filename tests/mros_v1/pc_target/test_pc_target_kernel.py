@@ -32,6 +32,7 @@ def trace(tmp_path_factory):
     subprocess.run(['gcc', '-O2', '-Wall', '-Wextra', '-Werror', '-pthread',
                     '-I', os.path.join(build, 'cfg'), '-I', os.path.join(PC_TARGET, 'asp'),
                     '-I', FIXTURE, os.path.join(PC_TARGET, 'asp', 'kernel.c'),
+                    os.path.join(PC_TARGET, 'asp', 'task_stacks.c'),
                     os.path.join(build, 'cfg', 'kernel_cfg.c'),
                     os.path.join(FIXTURE, 'kernel_test.c'), '-o', program], check=True)
     result = subprocess.run([program], capture_output=True, text=True, timeout=60)

@@ -25,11 +25,14 @@ def ticker_output(tmp_path_factory):
     for name in ('asp', 'mbed', 'lwip', 'config'):
         includes += ['-I', os.path.join(PC_TARGET, name)]
     objects = []
-    for source in (os.path.join(PC_TARGET, 'asp', 'kernel.c'), os.path.join(PC_TARGET, 'lwip', 'lwip.c'),
+    for source in (os.path.join(PC_TARGET, 'asp', 'kernel.c'),
+                   os.path.join(PC_TARGET, 'asp', 'task_stacks.c'),
+                   os.path.join(PC_TARGET, 'lwip', 'lwip.cpp'),
                    os.path.join(build, 'cfg', 'kernel_cfg.c')):
         objects.append(os.path.join(build, os.path.basename(source) + '.o'))
-        subprocess.run(['gcc', '-O1', '-Wall', '-Wextra', '-Werror', '-pthread', '-c'] + SANITIZE
-                       + includes + [source, '-o', objects[-1]], check=True)
+        compiler = ['g++', '-std=gnu++11'] if source.endswith('.cpp') else ['gcc']
+        subprocess.run(compiler + ['-O1', '-Wall', '-Wextra', '-Werror', '-pthread', '-c']
+                       + SANITIZE + includes + [source, '-o', objects[-1]], check=True)
     program = os.path.join(build, 'ticker_test')
     subprocess.run(['g++', '-O1', '-Wall', '-Wextra', '-Werror', '-pthread'] + SANITIZE + includes
                    + [os.path.join(PC_TARGET, 'mbed', 'mbed.cpp'),

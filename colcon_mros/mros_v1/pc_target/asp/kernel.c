@@ -771,11 +771,10 @@ static void init_cond(pthread_cond_t *cond, int monotonic) {
   pthread_condattr_destroy(&attributes);
 }
 
-static void report_stacks_at_exit(void) { pc_report_stacks(); }
-
 /* The main thread takes SIGINT, SIGTERM and SIGUSR1 for the whole program
  * (every other thread blocks them): SIGUSR1 reports the task stacks, the
- * others report them and end the program as they would have. */
+ * others, which end a node, report them and end the program as they would
+ * have. A program that stops itself (exit) has said why in its own line. */
 static void served_signals(sigset_t *signals) {
   sigemptyset(signals);
   sigaddset(signals, SIGINT);
@@ -835,7 +834,6 @@ int main(void) {
   }
   for (index = 0; index < pc_cyclic_count; index++) cyclic_timers[index] = -1;
   pc_task_stacks_init();
-  atexit(report_stacks_at_exit);
 
   for (index = 0; index < pc_initializer_count; index++) {
     pc_initializer_configs[index].routine(pc_initializer_configs[index].exinf);

@@ -9,7 +9,8 @@
  * lwIP stand-ins, the host C library) runs on the task thread's own host
  * stack instead, through pc_on_host_stack(): on the board those are ASP,
  * lwIP and newlib, whose costs the PC cannot know. Each stack is painted,
- * so that its peak use can be reported at exit and on SIGUSR1.
+ * so that its peak use can be reported when the program is stopped
+ * (SIGINT, SIGTERM) and on SIGUSR1.
  *
  * Elsewhere (the native target, with or without sanitizers) tasks keep the
  * 1 MiB host stacks of their threads and nothing here is measured.
