@@ -83,6 +83,7 @@ class App:
             variables.get('APPL_CXXOBJS', '').split()
         self.cxx_flags = [flag for flag in variables.get('APPL_CXXFLAGS', '').split()
                           if flag.startswith('-')]
+        self.c_optimization, self.cxx_optimization = board_optimization(variables)
         self.json_file = variables.get('MSG_SETTING_JSON')
 
     def message_types(self, types=(), msg_paths=()):
@@ -136,6 +137,18 @@ def app_variables(makefile, given=()):
                                                        seen | {reference.group(1)})
                               if reference.group(1) not in seen else '', value)
     return {name: expand(value, {name}).strip() for name, value in values.items()}
+
+
+def board_optimization(variables):
+    """(C flags, C++ flags) of optimization that an app's own build gives
+    its code and the library's on the board, from its Makefile's variables:
+    for C, Makefile.asp's COPTS (-O0, then -O2 unless OMIT_OPTIMIZATION is
+    set); for C++, Makefile.mbd's flags, which come after those
+    (-DDEBUG -O0 where DEBUG = true, else -DNDEBUG -Os). The samples set
+    both: their board build is unoptimized."""
+    c_flags = '-O0' if variables.get('OMIT_OPTIMIZATION') else '-O2'
+    cxx_flags = '-DDEBUG -O0' if variables.get('DEBUG') == 'true' else '-DNDEBUG -Os'
+    return c_flags, cxx_flags
 
 
 def library_settings(app):
@@ -252,6 +265,8 @@ def build(request):
     variables = {
         'MROS_ROOT': app.mros_root, 'APP_NAME': app.name, 'APP_DIRS': ' '.join(app.source_dirs),
         'APP_OBJS': ' '.join(app.objects), 'APP_CXXFLAGS': ' '.join(app.cxx_flags),
+        'BOARD_C_OPTIMIZATION': app.c_optimization,
+        'BOARD_CXX_OPTIMIZATION': app.cxx_optimization,
         'TARGET': request.target, 'BUILD': build_dir,
         'SANITIZER_FLAGS': SANITIZER_FLAGS if request.sanitize else '',
         'MROS_MSG_TYPES': ' '.join(types),

@@ -9,6 +9,9 @@
 #   APP_DIRS      the app's source directories (its Makefile's APPLDIR)
 #   APP_OBJS      its objects (APPLNAME.o, APPL_COBJS, APPL_CXXOBJS)
 #   APP_CXXFLAGS  its extra C++ flags (APPL_CXXFLAGS)
+#   BOARD_C_OPTIMIZATION, BOARD_CXX_OPTIMIZATION  the optimization its
+#                 Makefile gives C and C++ on the board (DEBUG,
+#                 OMIT_OPTIMIZATION), for the library's and the app's code
 #   TARGET        arm: 32-bit ARM Linux (the board's ISA, static, run with
 #                 qemu-arm); native: this PC
 #   BUILD         the output directory
@@ -67,13 +70,20 @@ VPATH := $(APP_DIRS) $(BUILD)/cfg $(VPATH) $(PC_SOURCE_DIRS)
 INCLUDES := -I$(BUILD)/include -I$(PC_TARGET)/config $(addprefix -I,$(APP_DIRS)) \
             $(MROS_INCLUDE_PATHS) -I$(BUILD)/cfg -I$(PC_TARGET)/asp -I$(PC_TARGET)/lwip \
             -I$(PC_TARGET)/mbed
-COMMON_FLAGS := $(CPU_FLAGS) -O2 -g -pthread -MMD -MP $(SANITIZER_FLAGS) $(FIT_CHECK_FLAGS) \
+COMMON_FLAGS := $(CPU_FLAGS) -g -pthread -MMD -MP $(SANITIZER_FLAGS) $(FIT_CHECK_FLAGS) \
                 $(CDEFS) $(INCLUDES)
-CFLAGS := $(COMMON_FLAGS)
+# The library and the app as the board's build optimizes them, so that their
+# frames on the board's task stacks are the board's; the stand-ins with -O2.
+C_OPTIMIZATION = $(BOARD_C_OPTIMIZATION)
+CXX_OPTIMIZATION = $(BOARD_CXX_OPTIMIZATION)
+CFLAGS = $(COMMON_FLAGS) $(C_OPTIMIZATION)
 # mROS v1's flags for C++ (Makefile.mbd), and the app's own.
-CXXFLAGS := $(COMMON_FLAGS) -std=gnu++98 -fno-rtti -fno-exceptions -fno-builtin $(APP_CXXFLAGS)
+CXXFLAGS = $(COMMON_FLAGS) $(CXX_OPTIMIZATION) -std=gnu++98 -fno-rtti -fno-exceptions \
+           -fno-builtin $(APP_CXXFLAGS)
 
 PC_OBJS := kernel.o task_stacks.o lwip.o ros_environment.o mbed.o $(HOST_LIBC_OBJS)
+$(addprefix $(OBJ_DIR)/,$(PC_OBJS)): C_OPTIMIZATION := -O2
+$(addprefix $(OBJ_DIR)/,$(PC_OBJS)): CXX_OPTIMIZATION := -O2
 LIBRARY_OBJS := $(addprefix $(OBJ_DIR)/,$(MROS_CXX_OBJ) $(MROS_C_OBJ) $(PC_OBJS))
 APP_ONLY_OBJS := $(addprefix $(OBJ_DIR)/,$(APP_OBJS) kernel_cfg.o)
 
