@@ -45,7 +45,7 @@ include $(GENMROS_MK)
 ifeq ($(TARGET),arm)
 CROSS := arm-linux-gnueabihf-
 CPU_FLAGS := -mcpu=cortex-a9 -marm -mfpu=vfpv3 -mfloat-abi=hard -mno-unaligned-access
-LINK_FLAGS := -static -Wl,@$(BUILD)/obj/newlib.wrap
+LINK_FLAGS := -static
 HOST_LIBC_OBJS := newlib.o
 else ifeq ($(TARGET),native)
 CROSS :=
@@ -60,6 +60,10 @@ CXX := $(CROSS)g++
 NM := $(CROSS)nm
 
 OBJ_DIR := $(BUILD)/obj
+ifneq ($(HOST_LIBC_OBJS),)
+HOST_LIBC_WRAP := $(OBJ_DIR)/newlib.wrap
+LINK_FLAGS += -Wl,@$(HOST_LIBC_WRAP)
+endif
 PC_SOURCE_DIRS := $(PC_TARGET)/asp $(PC_TARGET)/lwip $(PC_TARGET)/mbed $(PC_TARGET)/newlib \
                   $(PC_TARGET)/config
 # The app's sources first: its mros_config/ replaces the library's config/.
@@ -90,11 +94,11 @@ APP_ONLY_OBJS := $(addprefix $(OBJ_DIR)/,$(APP_OBJS) kernel_cfg.o)
 library: $(LIBRARY_OBJS)
 app: $(APP_ONLY_OBJS)
 
-$(BUILD)/$(APP_NAME): $(LIBRARY_OBJS) $(APP_ONLY_OBJS) $(if $(HOST_LIBC_OBJS),$(OBJ_DIR)/newlib.wrap)
+$(BUILD)/$(APP_NAME): $(LIBRARY_OBJS) $(APP_ONLY_OBJS) $(HOST_LIBC_WRAP)
 	$(CXX) $(CPU_FLAGS) -pthread $(SANITIZER_FLAGS) $(LINK_FLAGS) -o $@ $(LIBRARY_OBJS) $(APP_ONLY_OBJS)
 
 # --wrap=NAME for each __wrap_NAME newlib.o defines.
-$(OBJ_DIR)/newlib.wrap: $(OBJ_DIR)/newlib.o
+$(HOST_LIBC_WRAP): $(OBJ_DIR)/newlib.o
 	$(NM) --defined-only $< | sed -n 's/^.* T __wrap_\(.*\)$$/--wrap=\1/p' > $@
 
 $(OBJ_DIR)/%.o: %.c | $(OBJ_DIR)
