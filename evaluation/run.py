@@ -125,9 +125,11 @@ def _waited(process, pattern, count, start=0):
 
 
 def run(workspace, program, count, scratch):
-    """Every direction of the evaluation: a list of Direction."""
+    """Every direction of the evaluation: a list of Direction, and the
+    boards that ran them."""
     environment = workspace.environment()
     directions = []
+    boards = []
     with RosGraph(environment) as graph:
         listeners = [
             ('mROS -> rospy listener', graph.start('rospy personal_data_listener.py',
@@ -138,6 +140,7 @@ def run(workspace, program, count, scratch):
         graph.wait_for_graph(subscribers=[('/mros_str', '/rospy_personal_listener'),
                                           ('/mros_str', '/ros_personal_listener')])
         board = Board(graph, program, scratch)
+        boards.append(board)
         for title, listener in listeners:
             heard = [('%s %s' % (m.group(1), m.group(2)), int(m.group(3)), int(m.group(4)))
                      for m in _waited(listener, ROS_HEARD.pattern, count)]
@@ -151,6 +154,7 @@ def run(workspace, program, count, scratch):
                          ('roscpp', workspace.roscpp('personal_data_talker'))):
         with RosGraph(environment) as graph:
             board = Board(graph, program, scratch)
+            boards.append(board)
             graph.wait_for_graph(subscribers=[('/test_msg', '/mros_node2')])
             start = len(board.process.lines())
             graph.start('%s talker' % talker, argv)
@@ -158,7 +162,19 @@ def run(workspace, program, count, scratch):
             directions.append(Direction('%s talker -> mROS' % talker, 'Charlie Parker', 32, 100100,
                                         parse_mros_listener(board.process.lines()[start:]),
                                         count))
-    return directions
+    return directions, boards
+
+
+def stack_peaks(boards):
+    """{task: (the largest peak of its stack over the boards' last reports,
+    its size)}: the reports each board prints when it is stopped."""
+    peaks = {}
+    for board in boards:
+        reports = board.stack_reports()
+        for task, (peak, size) in (reports[-1] if reports else {}).items():
+            known = peaks.get(task, (None, size))[0]
+            peaks[task] = (max(p for p in (known, peak, 0) if p is not None), size)
+    return peaks
 
 
 def main():
@@ -185,7 +201,10 @@ def main():
         print('building the evaluation app with the mROS v1 library of %s (genmros mros-v1-pc) ...'
               % mros_root, flush=True)
         program = build_app(mros_root, os.path.join(build_root, 'app'))
-        directions = run(workspace, program, args.messages, build_root)
+        directions, boards = run(workspace, program, args.messages, build_root)
+    print("\nthe board's task stacks, the deepest of its runs (bytes):")
+    for task, (peak, size) in stack_peaks(boards).items():
+        print('  %-14s %5d of %5d' % (task, peak, size))
     print("\n==== the paper's evaluation on the real mROS v1 library (PC target, qemu-arm) ====")
     for direction in directions:
         print(direction.summary())

@@ -28,6 +28,10 @@ import time
 import xmlrpc.client
 
 BOARD_IP = '127.0.0.2'
+# The task stack report the arm target prints when stopped and on SIGUSR1
+# (asp/task_stacks.c): its heading, then a line per task.
+_STACK_REPORT = 'mROS PC target: task stacks'
+_STACK_LINE = re.compile(r'^  (\w+) +(\d+|-) of +(\d+) bytes +(?:\d+%|\(never ran\))$')
 PEER_IP = '127.0.0.1'
 # How long a message may take through qemu, the library's 100 ms polling
 # and a loaded machine.
@@ -266,6 +270,20 @@ class Board:
     @property
     def slave_uri(self):
         return 'http://%s:%d/' % (BOARD_IP, self.slave_port)
+
+    def stack_reports(self):
+        """Every task stack report in the app's log so far, in order: each
+        {task: (peak bytes, or None if it never ran; size)}."""
+        reports = []
+        for line in self.process.lines():
+            if line.startswith(_STACK_REPORT):
+                reports.append({})
+                continue
+            match = _STACK_LINE.match(line) if reports else None
+            if match:
+                peak = None if match.group(2) == '-' else int(match.group(2))
+                reports[-1][match.group(1)] = (peak, int(match.group(3)))
+        return reports
 
 
 class CatkinWorkspace:

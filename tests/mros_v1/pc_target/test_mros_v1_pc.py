@@ -18,6 +18,7 @@ pinned by the tests at the end.
 
 import http.client
 import os
+import re
 import socket
 import struct
 import subprocess
@@ -419,12 +420,13 @@ def test_an_unusable_ros_environment_stops_the_node_with_one_line(programs, vari
 
 
 def test_paper_evaluation_on_the_real_library(ros_workspace, tmp_path):
-    # The README's main command's driver, as it runs, on the suite's test_ws.
+    # The README's main command's driver, as it runs, on the suite's test_ws,
+    # with this checkout (the script's own directory is not the checkout's).
     result = subprocess.run(
         ['/usr/bin/python3', os.path.join(REPO, 'evaluation', 'run.py'), '--messages', '5',
          '--workspace', ros_workspace.root, '--build-dir', str(tmp_path)],
-        env=dict(os.environ, MROS_V1_ROOT=MROS_V1_ROOT), capture_output=True, text=True,
-        timeout=900)
+        env=dict(os.environ, MROS_V1_ROOT=MROS_V1_ROOT, PYTHONPATH=REPO), capture_output=True,
+        text=True, timeout=900)
     summary = result.stdout.split("==== the paper's evaluation")[-1].splitlines()[1:]
     assert [line.split('  ')[0] for line in summary] == [
         'mROS -> rospy listener', 'mROS -> roscpp listener', 'mROS -> mROS on board',
@@ -432,6 +434,13 @@ def test_paper_evaluation_on_the_real_library(ros_workspace, tmp_path):
     for line in summary[:-1]:
         assert line.endswith(' PASS') and ' 5 messages ' in line, line
     assert result.returncode == 0
+    # Within the board's stacks (an overflow would have stopped the board),
+    # every task of app.cfg and the library's mros.cfg reported.
+    stacks = re.findall(r'^  (\w+) +(\d+) of +(\d+)$', result.stdout, re.M)
+    assert sorted(task for task, _, _ in stacks) == [
+        'MAIN_TASK', 'PUB_TASK', 'SUB_TASK', 'USR_TASK1', 'USR_TASK2', 'XML_MAS_TASK',
+        'XML_SLV_TASK'], result.stdout[-3000:]
+    assert all(64 <= int(peak) <= int(size) for _, peak, size in stacks), stacks
 
 
 # ---- the library's own limits, as it behaves today (see the README) ----

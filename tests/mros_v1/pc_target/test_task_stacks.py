@@ -26,7 +26,6 @@ HEADER_FLAGS = ('--storage', 'bounded', '--options', os.path.join(APP_FIXTURE, '
 OVERFLOW = re.compile(r'^mROS PC target: task (\w+) overflowed its stack of (\d+) bytes '
                       r'\((\w+) at ([^:]+):(\d+); CRE_TSK at ([^:]+):(\d+)\); it needs at least '
                       r'(\d+) bytes$')
-REPORT_LINE = re.compile(r'^  (\w+) +(\d+|-) of +(\d+) bytes +(?:(\d+)%|\(never ran\))$')
 
 
 def _defined_size(name):
@@ -82,21 +81,6 @@ def test_the_native_target_keeps_host_stacks_and_runs_on(tmp_path):
     assert 'overflowed' not in board.process.output()
 
 
-def _report(lines, start):
-    """{task: (peak, size, percent)} of the first stack report in lines[start:],
-    and its heading's index; a task that never ran has peak and percent None."""
-    heading = next(index for index in range(start, len(lines))
-                   if lines[index].startswith('mROS PC target: task stacks'))
-    report = {}
-    for line in lines[heading + 1:]:
-        match = REPORT_LINE.match(line)
-        if not match:
-            break
-        report[match.group(1)] = tuple(None if value in (None, '-') else int(value)
-                                       for value in match.groups()[1:])
-    return report, heading
-
-
 def test_the_stack_report_shows_each_task_against_its_size(arm_program, tmp_path):
     with RosGraph() as graph:
         board = Board(graph, arm_program, str(tmp_path), inputs={'P6_0': 0})
@@ -106,37 +90,19 @@ def test_the_stack_report_shows_each_task_against_its_size(arm_program, tmp_path
         heading = board.process.wait_for('task stacks, peak use', timeout=DELIVERY_TIMEOUT)
         assert heading and board.process.alive()
         status = board.process.stop(signal.SIGINT)
-    lines = board.process.lines()
-    on_request, first = _report(lines, 0)
-    at_exit, _ = _report(lines, first + 1)
+    on_request, at_exit = board.stack_reports()
     assert status == -signal.SIGINT, board.process.output()
     library_size, _ = _defined_size('MROS_TASK_STACK_SIZE')
     user_size, _ = _defined_size('MROS_USR1_STACK_SIZE')
-    sizes = {task: size for task, (_, size, _) in on_request.items()}
+    sizes = {task: size for task, (_, size) in on_request.items()}
     assert sizes == {'MAIN_TASK': library_size, 'PUB_TASK': library_size,
                      'SUB_TASK': library_size, 'XML_SLV_TASK': library_size,
                      'XML_MAS_TASK': library_size, 'USR_TASK1': user_size,
                      'USR_TASK2': user_size}, board.process.output()
-    peak, _, percent = on_request['USR_TASK1']
     # The buffer, the kernel's 64 bytes of context and a few frames; not the
     # host's snprintf and vsnprintf, which alone take more than the 1 KiB.
-    assert 600 + 64 < peak < user_size and percent == peak * 100 // user_size
+    assert 600 + 64 < on_request['USR_TASK1'][0] < user_size
     assert set(at_exit) == set(on_request)
-    for task, (peak, size, _) in at_exit.items():
+    for task, (peak, size) in at_exit.items():
         # Every task ran, and has at least the kernel's context on its stack.
-        assert 64 <= on_request[task][0] <= peak <= size, (task, lines)
-
-
-@pytest.mark.parametrize('sample', ['custom_pubsub', 'string_pubsub'])
-def test_the_library_and_app_build_as_the_apps_makefile_builds_them_for_the_board(sample):
-    # The samples' Makefiles set DEBUG = true and OMIT_OPTIMIZATION = true:
-    # Makefile.asp then gives C -O0 alone, Makefile.mbd gives C++ -DDEBUG -O0.
-    app = App(os.path.join(MROS_V1_ROOT, 'mros_ws', sample), MROS_V1_ROOT)
-    with open(os.path.join(app.dir, 'Makefile')) as stream:
-        text = stream.read()
-    assert re.search(r'^DEBUG = true$', text, re.M)
-    assert re.search(r'^OMIT_OPTIMIZATION = true$', text, re.M)
-    assert (app.c_optimization, app.cxx_optimization) == ('-O0', '-DDEBUG -O0')
-    # The test apps' Makefile sets neither.
-    fixture = App(APP_FIXTURE, MROS_V1_ROOT)
-    assert (fixture.c_optimization, fixture.cxx_optimization) == ('-O2', '-DNDEBUG -Os')
+        assert 64 <= on_request[task][0] <= peak <= size, (task, board.process.output())
