@@ -154,6 +154,15 @@ static int formatted(void (*function)(void *), struct formatted_call *call) {
   return call->result;
 }
 
+/* The body of a variadic wrapper: function does the call on the host
+ * stack, with the arguments that follow last. */
+#define FORMATTED_CALL(function, call, last) \
+  int result;                                \
+  va_start((call).arguments, last);          \
+  result = formatted(function, &(call));     \
+  va_end((call).arguments);                  \
+  return result
+
 int __wrap_vsnprintf(char *buffer, size_t size, const char *format, va_list arguments) {
   struct formatted_call call = {.buffer = buffer, .size = size, .format = format};
   int result;
@@ -165,46 +174,26 @@ int __wrap_vsnprintf(char *buffer, size_t size, const char *format, va_list argu
 
 int __wrap_snprintf(char *buffer, size_t size, const char *format, ...) {
   struct formatted_call call = {.buffer = buffer, .size = size, .format = format};
-  int result;
-  va_start(call.arguments, format);
-  result = formatted(call_vsnprintf, &call);
-  va_end(call.arguments);
-  return result;
+  FORMATTED_CALL(call_vsnprintf, call, format);
 }
 
 int __wrap_sprintf(char *buffer, const char *format, ...) {
   struct formatted_call call = {.buffer = buffer, .format = format};
-  int result;
-  va_start(call.arguments, format);
-  result = formatted(call_vsprintf, &call);
-  va_end(call.arguments);
-  return result;
+  FORMATTED_CALL(call_vsprintf, call, format);
 }
 
 int __wrap_fprintf(FILE *stream, const char *format, ...) {
   struct formatted_call call = {.stream = stream, .format = format};
-  int result;
-  va_start(call.arguments, format);
-  result = formatted(call_vfprintf, &call);
-  va_end(call.arguments);
-  return result;
+  FORMATTED_CALL(call_vfprintf, call, format);
 }
 
 int __wrap_printf(const char *format, ...) {
   struct formatted_call call = {.stream = stdout, .format = format};
-  int result;
-  va_start(call.arguments, format);
-  result = formatted(call_vfprintf, &call);
-  va_end(call.arguments);
-  return result;
+  FORMATTED_CALL(call_vfprintf, call, format);
 }
 
 /* sscanf as C99 headers name it. */
 int __wrap___isoc99_sscanf(const char *input, const char *format, ...) {
   struct formatted_call call = {.input = input, .format = format};
-  int result;
-  va_start(call.arguments, format);
-  result = formatted(call_vsscanf, &call);
-  va_end(call.arguments);
-  return result;
+  FORMATTED_CALL(call_vsscanf, call, format);
 }
