@@ -106,3 +106,18 @@ def test_the_stack_report_shows_each_task_against_its_size(arm_program, tmp_path
     for task, (peak, size) in at_exit.items():
         # Every task ran, and has at least the kernel's context on its stack.
         assert 64 <= on_request[task][0] <= peak <= size, (task, board.process.output())
+
+
+@pytest.mark.parametrize('sample', ['custom_pubsub', 'string_pubsub'])
+def test_the_library_and_app_build_as_the_apps_makefile_builds_them_for_the_board(sample):
+    # The samples' Makefiles set DEBUG = true and OMIT_OPTIMIZATION = true:
+    # Makefile.asp then gives C -O0 alone, Makefile.mbd gives C++ -DDEBUG -O0.
+    app = App(os.path.join(MROS_V1_ROOT, 'mros_ws', sample), MROS_V1_ROOT)
+    with open(os.path.join(app.dir, 'Makefile')) as stream:
+        text = stream.read()
+    assert re.search(r'^DEBUG = true$', text, re.M)
+    assert re.search(r'^OMIT_OPTIMIZATION = true$', text, re.M)
+    assert (app.c_optimization, app.cxx_optimization) == ('-O0', '-DDEBUG -O0')
+    # The test apps' Makefile sets neither.
+    fixture = App(APP_FIXTURE, MROS_V1_ROOT)
+    assert (fixture.c_optimization, fixture.cxx_optimization) == ('-O2', '-DNDEBUG -Os')
