@@ -241,6 +241,10 @@ def _add_mros_v1_pc(subparsers):
                         help='build library, stand-ins and app with AddressSanitizer and '
                              'UndefinedBehaviorSanitizer (with --target native), so that an '
                              'overrun shows on the PC before the board')
+    parser.add_argument('--hardened', action='store_true',
+                        help="build the library with genmros' patch set for it applied, on a "
+                             'copy in the build directory (genmros mros-v1-harden applies it to '
+                             'a checkout); default: the library as it is')
     parser.add_argument('-v', '--verbose', action='store_true',
                         help='show every compiler command (default: one line per step; '
                              'compiler errors are always shown in full)')
@@ -268,8 +272,23 @@ def _add_mros_v1_fit(subparsers):
     parser.set_defaults(run=_mros_v1_fit)
 
 
+def _add_mros_v1_harden(subparsers):
+    parser = subparsers.add_parser(
+        'mros-v1-harden', help="apply genmros' patch set to an mROS v1 checkout's library",
+        description="Apply genmros' patch set for the mROS v1 library (fixes, each named for "
+                    'what it fixes) to the mros-lib/ of a checkout, for the board\'s own build. '
+                    'Only mros-lib/ is changed, and only where every file is as the patches '
+                    'expect; a patch already applied is left as it is.')
+    parser.add_argument('mros_root', metavar='MROS_ROOT', help='the mROS v1 checkout')
+    action = parser.add_mutually_exclusive_group()
+    action.add_argument('--check', action='store_true',
+                        help='say which patches are applied; exit 0 if all are, 1 if not')
+    action.add_argument('--revert', action='store_true', help='take the patches out')
+    parser.set_defaults(run=_mros_v1_harden)
+
+
 SUBCOMMANDS = (_add_generate, _add_export, _add_printers, _add_export_dir_commands,
-               _add_mros_v1_pc, _add_mros_v1_fit)
+               _add_mros_v1_pc, _add_mros_v1_fit, _add_mros_v1_harden)
 
 
 def build_parser():
@@ -364,7 +383,7 @@ def _mros_v1_pc(options):
         storage=options.storage, option_files=options.option_files,
         definition_text=options.definition_text, jobs=options.jobs,
         fit_check=not options.no_fit_check, fit_strict=options.fit_strict,
-        sanitize=options.sanitize, verbose=options.verbose))
+        sanitize=options.sanitize, hardened=options.hardened, verbose=options.verbose))
     print('genmros: built %s\n  run it with ROS_MASTER_URI and ROS_IP set: %s'
           % (program, ' '.join(build.runner(options.target) + [program])))
     if options.run_program:
@@ -390,6 +409,22 @@ def _mros_v1_fit(options):
     text, stops = report.report(fit, settings)
     sys.stdout.write(text)
     return 1 if stops else 0
+
+
+def _mros_v1_harden(options):
+    from colcon_mros.mros_v1.patches.patch_set import apply_patches, check_root, patch_states
+    root = check_root(options.mros_root)
+    if options.check:
+        states = patch_states(root)
+        for patch, applied in states:
+            print('%-13s %s: %s' % ('applied' if applied else 'not applied', patch.name,
+                                    patch.description))
+        return 0 if all(applied for _, applied in states) else 1
+    done = apply_patches(root, revert=options.revert)
+    verb = 'took out' if options.revert else 'applied'
+    print('genmros: %s %s' % (verb, ', '.join(done)) if done else
+          'genmros: nothing to do: the patches are %s' % ('out' if options.revert else 'in'))
+    return 0
 
 
 def main(argv=None):

@@ -12,8 +12,8 @@ from conftest import REPO
 PACKAGE = os.path.join(REPO, 'colcon_mros')
 # Top first; a module's layer is the longest of these its name below
 # colcon_mros starts with.
-LAYERS = ['cli', 'mros_v1.report', 'mros_v1.pc_target', 'integrations', 'export', 'mros_v1',
-          'generator', '']
+LAYERS = ['cli', 'mros_v1.report', 'mros_v1.pc_target', 'mros_v1.patches', 'integrations',
+          'export', 'mros_v1', 'generator', '']
 TOP_MODULES = {'cli': 'cli', '__main__': 'cli', 'errors': '', '__init__': '', '__version__': ''}
 
 

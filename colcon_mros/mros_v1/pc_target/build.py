@@ -9,6 +9,7 @@ PC target's ASP, lwIP and mbed stand-ins, the app, the link.
 """
 
 import dataclasses
+import filecmp
 import json
 import os
 import re
@@ -59,6 +60,7 @@ class PcBuild:
     fit_check: bool = True
     fit_strict: bool = False
     sanitize: bool = False
+    hardened: bool = False  # the library with the patch set applied, on a copy
     verbose: bool = False
 
 
@@ -208,6 +210,26 @@ def find_app(app_dir, mros_root=None):
     return app_dir, find_mros_root(app_dir, mros_root)
 
 
+def hardened_library(mros_root, build_dir):
+    """The root of a copy of mros_root's mros-lib in build_dir with the patch
+    set applied; a file whose text is the same as at the last build keeps
+    its time, so that make rebuilds only what changed."""
+    from colcon_mros.mros_v1.patches.patch_set import LIBRARY_DIR, apply_patches
+    root = os.path.join(build_dir, 'hardened')
+    os.makedirs(build_dir, exist_ok=True)
+    with tempfile.TemporaryDirectory(prefix='genmros-hardened-', dir=build_dir) as scratch:
+        shutil.copytree(os.path.join(mros_root, LIBRARY_DIR), os.path.join(scratch, LIBRARY_DIR))
+        apply_patches(scratch)
+        for directory, _, names in os.walk(os.path.join(scratch, LIBRARY_DIR)):
+            target = os.path.join(root, os.path.relpath(directory, scratch))
+            os.makedirs(target, exist_ok=True)
+            for name in names:
+                source, copy = os.path.join(directory, name), os.path.join(target, name)
+                if not os.path.isfile(copy) or not filecmp.cmp(source, copy, shallow=False):
+                    shutil.copy2(source, copy)
+    return root
+
+
 def check_tools(target, sanitize):
     if sanitize and target != 'native':
         raise GenmrosError('--sanitize needs --target native (qemu-arm runs no sanitizer)')
@@ -259,11 +281,13 @@ def build(request):
         fit.refuse(request.fit_strict)
         for warning in fit.warnings:
             print('genmros: warning: %s' % warning)
-    flavour = request.target + ('-sanitize' if request.sanitize else '')
+    flavour = request.target + ('-sanitize' if request.sanitize else '') + \
+        ('-hardened' if request.hardened else '')
     build_dir = os.path.abspath(request.build_dir or os.path.join(app.dir, 'build-pc-' + flavour))
     write_kernel_config(config, os.path.join(build_dir, 'cfg'))
+    library_root = hardened_library(app.mros_root, build_dir) if request.hardened else app.mros_root
     variables = {
-        'MROS_ROOT': app.mros_root, 'APP_NAME': app.name, 'APP_DIRS': ' '.join(app.source_dirs),
+        'MROS_ROOT': library_root, 'APP_NAME': app.name, 'APP_DIRS': ' '.join(app.source_dirs),
         'APP_OBJS': ' '.join(app.objects), 'APP_CXXFLAGS': ' '.join(app.cxx_flags),
         'BOARD_C_OPTIMIZATION': app.c_optimization,
         'BOARD_CXX_OPTIMIZATION': app.cxx_optimization,
@@ -282,7 +306,8 @@ def build(request):
     command = ['make', '--no-print-directory', '-f', MAKEFILE, '-j%d' % request.jobs] + \
         ([] if request.verbose else ['-s']) + ['%s=%s' % item for item in sorted(variables.items())]
     program = os.path.join(build_dir, app.name)
-    words = {'root': app.mros_root, 'name': app.name, 'program': program}
+    words = {'root': app.mros_root + (' (hardened)' if request.hardened else ''),
+             'name': app.name, 'program': program}
     for goal, line in STEPS:
         print('genmros: %s' % (line % words), flush=True)
         if goal != 'program':

@@ -91,6 +91,21 @@ def test_limit_publishing_a_frame_larger_than_the_largest_pool_crashes_the_libra
     assert 'published' not in output.replace('publishing', '')
 
 
+def test_hardened_publish_drops_a_frame_larger_than_the_largest_pool(tmp_path):
+    # The same app on the library with genmros' patch set (--hardened).
+    program = build_app(MROS_V1_ROOT, str(tmp_path / 'hardened'), 'library_limits.cpp',
+                        types=['std_msgs/String'], header_flags=['--hardened'])
+    with RosGraph() as graph:
+        board = Board(graph, program, str(tmp_path), inputs=PUBLISH)
+        dropped = board.process.wait_for(
+            r'publish\(\) dropped a frame of (\d+) bytes: no memory pool block holds it \(raise '
+            r'the largest ROS_INNER_TOPIC_PUBLISHER_MEMPOOL<n>_SIZE\)', timeout=DELIVERY_TIMEOUT)[0]
+        board.process.wait_for(r'\] published$', timeout=DELIVERY_TIMEOUT)
+        assert int(dropped.group(1)) > 2000
+        time.sleep(1)
+        assert board.process.alive(), board.process.output()
+
+
 def test_limit_a_received_frame_larger_than_the_largest_pool_is_dropped_with_its_connection(
         limits_program, tmp_path):
     with RosGraph() as graph:

@@ -1,0 +1,87 @@
+"""genmros mros-v1-pc --hardened: the sample string_pubsub on the real
+library with genmros' patch set applied to a copy (colcon_mros/mros_v1/
+patches), against the same app on the library as it is. Each patch's test
+here fails without it; test_mros_v1_pc.py pins the unpatched library's
+behaviour (test_limit_*)."""
+
+import os
+import re
+
+import pytest
+
+from colcon_mros.mros_v1.pc_target.ros_graph import DELIVERY_TIMEOUT, Board, RosGraph
+from conftest import run_genmros
+from mros_v1_checkout import MROS_V1_ROOT
+from tcpros_peer import HostilePublisher, RawSubscriber, closed_by_peer, encode_header
+
+pytestmark = [pytest.mark.needs_mros_v1, pytest.mark.needs_qemu, pytest.mark.slow]
+
+APP = os.path.join(MROS_V1_ROOT, 'mros_ws', 'string_pubsub')
+STRING_MD5 = '992ce8a1687cec8c8bd883ec73ca41d1'
+# gcc quotes the name as the locale allows.
+STRTOL_WARNING = re.compile(r"implicit declaration of function .strtol.")
+
+
+def _build(build_root, *flags):
+    output = os.path.join(build_root, 'build')
+    result = run_genmros('mros-v1-pc', APP, '-o', output, '--target', 'arm', '-j2', *flags)
+    return os.path.join(output, 'string_pubsub'), result.stdout + result.stderr
+
+
+@pytest.fixture(scope='module')
+def hardened(tmp_path_factory):
+    return _build(str(tmp_path_factory.mktemp('hardened')), '--hardened')
+
+
+def test_the_hardened_build_leaves_the_checkout_as_it_is_and_declares_strtol(hardened,
+                                                                              tmp_path):
+    program, output = hardened
+    assert 'mROS v1 library of %s (hardened)' % MROS_V1_ROOT in output
+    assert not STRTOL_WARNING.search(output), output
+    _, unpatched_output = _build(str(tmp_path))
+    assert STRTOL_WARNING.search(unpatched_output), unpatched_output
+    check = run_genmros('mros-v1-harden', MROS_V1_ROOT, '--check', check=False)
+    assert check.returncode == 1 and check.stdout
+    assert all(line.startswith('not applied') for line in check.stdout.splitlines())
+
+
+def _subscriber_connection(hostile, board):
+    try:
+        connection, header = hostile.accept(timeout=DELIVERY_TIMEOUT)
+    except OSError as error:
+        raise AssertionError('the board did not connect (%s):\n%s'
+                             % (error, board.process.output()))
+    assert header['md5sum'] == STRING_MD5, header
+    return connection
+
+
+def _reply_header(extra=None):
+    fields = {'callerid': '/hostile', 'md5sum': STRING_MD5, 'type': 'std_msgs/String',
+              'topic': '/test_string'}
+    fields.update(extra or {})
+    return encode_header(fields)
+
+
+def test_hardened_a_long_header_from_a_publisher_is_refused_and_the_node_stays_up(hardened,
+                                                                                    tmp_path):
+    # Unpatched, the library reads this header past its 512-byte buffer and
+    # crashes (test_mros_v1_pc.py, test_limit_a_long_header_from_a_publisher_...).
+    program, _ = hardened
+    with RosGraph() as graph:
+        board = Board(graph, program, str(tmp_path))
+        graph.wait_for_graph(subscribers=[('/test_string', '/mros_node2')])
+        with HostilePublisher(graph, '/hostile', '/test_string', 'std_msgs/String') as hostile:
+            connection = _subscriber_connection(hostile, board)
+            connection.sendall(_reply_header({'message_definition': 'x' * 5000}))
+            # Refused, and the connection closed: no socket is left behind.
+            assert closed_by_peer(connection), board.process.output()
+            refusal = board.process.wait_for(
+                r"refused a publisher's connection header of (\d+) bytes: the buffer holds 512 "
+                r'\(raise MROS_PACKET_MAXSIZE_REQ_TCPROS and MROS_PACKET_MAXSIZE_RES_TCPROS\)',
+                timeout=DELIVERY_TIMEOUT)[0]
+            assert int(refusal.group(1)) > 5000
+            # The node still serves: its slave and publisher take a subscriber.
+            raw = RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5)
+            raw.close()
+            assert raw.header['md5sum'] == STRING_MD5
+        assert board.process.alive(), board.process.output()
