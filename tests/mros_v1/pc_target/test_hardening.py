@@ -6,31 +6,42 @@ behaviour (test_limit_*)."""
 
 import os
 import re
+import socket
+import sys
+import xmlrpc.client
 
 import pytest
 
-from colcon_mros.mros_v1.pc_target.ros_graph import DELIVERY_TIMEOUT, Board, RosGraph
+from colcon_mros.mros_v1.pc_target.ros_graph import (DELIVERY_TIMEOUT, PEER_IP, Board,
+                                                      RosGraph)
 from conftest import run_genmros
 from mros_v1_checkout import MROS_V1_ROOT
 from tcpros_peer import HostilePublisher, RawSubscriber, closed_by_peer, encode_header
 
 pytestmark = [pytest.mark.needs_mros_v1, pytest.mark.needs_qemu, pytest.mark.slow]
 
-APP = os.path.join(MROS_V1_ROOT, 'mros_ws', 'string_pubsub')
+SAMPLES = os.path.join(MROS_V1_ROOT, 'mros_ws')
 STRING_MD5 = '992ce8a1687cec8c8bd883ec73ca41d1'
 # gcc quotes the name as the locale allows.
 STRTOL_WARNING = re.compile(r"implicit declaration of function .strtol.")
 
 
-def _build(build_root, *flags):
+def _build(build_root, *flags, app='string_pubsub'):
     output = os.path.join(build_root, 'build')
-    result = run_genmros('mros-v1-pc', APP, '-o', output, '--target', 'arm', '-j2', *flags)
-    return os.path.join(output, 'string_pubsub'), result.stdout + result.stderr
+    result = run_genmros('mros-v1-pc', os.path.join(SAMPLES, app), '-o', output, '--target',
+                         'arm', '-j2', *flags)
+    return os.path.join(output, app), result.stdout + result.stderr
 
 
 @pytest.fixture(scope='module')
 def hardened(tmp_path_factory):
     return _build(str(tmp_path_factory.mktemp('hardened')), '--hardened')
+
+
+@pytest.fixture(scope='module')
+def hardened_custom_pubsub(tmp_path_factory):
+    return _build(str(tmp_path_factory.mktemp('hardened_custom')), '--hardened',
+                  app='custom_pubsub')[0]
 
 
 def test_the_hardened_build_leaves_the_checkout_as_it_is_and_declares_strtol(hardened,
@@ -84,4 +95,55 @@ def test_hardened_a_long_header_from_a_publisher_is_refused_and_the_node_stays_u
             raw = RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5)
             raw.close()
             assert raw.header['md5sum'] == STRING_MD5
+        assert board.process.alive(), board.process.output()
+
+
+def test_hardened_a_long_header_from_a_subscriber_is_refused_and_the_node_stays_up(hardened,
+                                                                                     tmp_path):
+    # Unpatched, the library reads it past its 512-byte buffer (AddressSanitizer's
+    # report in test_mros_v1_pc_types.py; on the board, the slave task's state).
+    program, _ = hardened
+    with RosGraph() as graph:
+        board = Board(graph, program, str(tmp_path))
+        graph.wait_for_graph(publishers=[('/mros_msg', '/mros_node')])
+        # Once a subscriber is served, the slave is up for the next.
+        RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5).close()
+        code, _, protocol = xmlrpc.client.ServerProxy(board.slave_uri).requestTopic(
+            '/long_subscriber', '/mros_msg', [['TCPROS']])
+        assert code == 1
+        connection = socket.create_connection((protocol[1], protocol[2]),
+                                              timeout=DELIVERY_TIMEOUT)
+        connection.sendall(encode_header({
+            'callerid': '/long_subscriber', 'topic': '/mros_msg', 'type': 'std_msgs/String',
+            'md5sum': STRING_MD5, 'message_definition': 'x' * 3000}))
+        assert closed_by_peer(connection), board.process.output()
+        refusal = board.process.wait_for(
+            r"refused a subscriber's connection header of (\d+) bytes: the buffer holds 512 "
+            r'\(raise MROS_PACKET_MAXSIZE_REQ_TCPROS and MROS_PACKET_MAXSIZE_RES_TCPROS\)',
+            timeout=DELIVERY_TIMEOUT)[0]
+        assert int(refusal.group(1)) > 3000
+        raw = RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5)
+        raw.close()
+        assert raw.header['md5sum'] == STRING_MD5
+        assert board.process.alive(), board.process.output()
+
+
+ANYMSG_LISTENER = """
+import rospy
+rospy.init_node('anymsg_listener')
+rospy.Subscriber('mros_msg', rospy.AnyMsg,
+                 lambda m: print('anymsg got %d bytes' % len(m._buff), flush=True))
+rospy.spin()
+"""
+
+
+def test_hardened_an_anymsg_subscriber_gets_data(hardened_custom_pubsub, tmp_path):
+    # rospy's AnyMsg, as rostopic hz and rosbag record subscribe; unpatched it
+    # gets nothing (test_mros_v1_pc.py, test_limit_no_message_definition_...).
+    with RosGraph() as graph:
+        board = Board(graph, hardened_custom_pubsub, str(tmp_path))
+        listener = graph.start('anymsg_listener', [sys.executable, '-c', ANYMSG_LISTENER],
+                               {'ROS_IP': PEER_IP})
+        got = listener.wait_for(r'anymsg got (\d+) bytes', timeout=DELIVERY_TIMEOUT, count=2)
+        assert all(int(match.group(1)) > 0 for match in got)
         assert board.process.alive(), board.process.output()
