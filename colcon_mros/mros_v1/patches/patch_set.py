@@ -106,16 +106,25 @@ class _Mismatch(Exception):
 
 def _patched_text(text, hunks, path):
     """text with hunks applied, in order; _Mismatch where a hunk's old lines
-    are not where it expects them (after the earlier hunks' shift)."""
+    are neither where it expects them (after the earlier hunks' shift) nor
+    in one other place (where another patch moved them)."""
     lines = text.splitlines(keepends=True)
     shift = 0
+
+    def found_at(start, count):
+        return [line.rstrip('\r\n') for line in lines[start:start + count]]
     for hunk in hunks:
         start = max(hunk.old_start - 1, 0) + shift
-        found = [line.rstrip('\r\n') for line in lines[start:start + len(hunk.old)]]
-        if found != hunk.old:
-            mismatch = next((index for index, (have, want) in enumerate(zip(found, hunk.old))
-                             if have != want), len(found))
-            raise _Mismatch(path, start + mismatch + 1)
+        if found_at(start, len(hunk.old)) != hunk.old:
+            elsewhere = [index for index in range(len(lines))
+                         if found_at(index, len(hunk.old)) == hunk.old]
+            if len(elsewhere) != 1:
+                found = found_at(start, len(hunk.old))
+                mismatch = next((index for index, (have, want) in enumerate(zip(found, hunk.old))
+                                 if have != want), len(found))
+                raise _Mismatch(path, start + mismatch + 1)
+            shift += elsewhere[0] - start
+            start = elsewhere[0]
         ending = '\r\n' if lines and lines[min(start, len(lines) - 1)].endswith('\r\n') else '\n'
         lines[start:start + len(hunk.old)] = [line + ending for line in hunk.new]
         shift += len(hunk.new) - len(hunk.old)

@@ -119,3 +119,16 @@ def test_every_patch_is_named_for_what_it_fixes_and_applies_alone(checkout):
         assert apply_patches(str(checkout), patches=[patch]) == [patch.name]
         assert apply_patches(str(checkout), revert=True, patches=[patch]) == [patch.name]
     assert _same_as_original(checkout) == []
+
+
+def test_every_hunk_has_one_place_in_the_library():
+    # A hunk that another patch moved is found by its lines; they must not
+    # also fit somewhere else (where a change by hand would then land it).
+    for patch in patch_set():
+        for path, hunks in patch.files.items():
+            with open(os.path.join(MROS_V1_ROOT, path), encoding='utf-8') as stream:
+                lines = stream.read().splitlines()
+            for hunk in hunks:
+                places = [index + 1 for index in range(len(lines))
+                          if lines[index:index + len(hunk.old)] == hunk.old]
+                assert places == [hunk.old_start], (patch.name, path, places)

@@ -147,3 +147,16 @@ def test_hardened_an_anymsg_subscriber_gets_data(hardened_custom_pubsub, tmp_pat
         got = listener.wait_for(r'anymsg got (\d+) bytes', timeout=DELIVERY_TIMEOUT, count=2)
         assert all(int(match.group(1)) > 0 for match in got)
         assert board.process.alive(), board.process.output()
+
+
+def test_hardened_the_publisher_header_carries_the_definition_text(hardened, tmp_path):
+    # Unpatched, the library stores the text and never sends it
+    # (test_mros_v1_pc.py, test_limit_no_message_definition_...).
+    from std_msgs.msg import String  # genpy's, from the ROS environment
+    program, _ = hardened
+    with RosGraph() as graph:
+        board = Board(graph, program, str(tmp_path))
+        graph.wait_for_graph(publishers=[('/mros_msg', '/mros_node')])
+        raw = RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5)
+        raw.close()
+    assert raw.header['message_definition'] == String._full_text
