@@ -160,3 +160,4 @@ def test_hardened_the_publisher_header_carries_the_definition_text(hardened, tmp
         raw = RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5)
         raw.close()
     assert raw.header['message_definition'] == String._full_text
+

@@ -514,6 +514,57 @@ def test_ros_tools_see_the_app_and_what_the_library_refuses(ros_side, programs, 
         assert status == 0 and 'version: 2.0' in bag_info and 'messages:' not in bag_info, bag_info
 
 
+def _gencpp_full_text(package, type_name):
+    """genmsg's full definition text of a type of the sample's ROS package,
+    which gencpp and roscpp send (its message types use built-ins only)."""
+    import genmsg
+    import genmsg.gentools
+    import genmsg.msg_loader
+    context = genmsg.MsgContext.create_default()
+    search_path = {package: [os.path.join(MROS_V1_ROOT, 'ros_catkin_ws', 'src', package, 'msg')]}
+    spec = genmsg.msg_loader.load_msg_by_type(context, '%s/%s' % (package, type_name),
+                                              search_path)
+    genmsg.msg_loader.load_depends(context, spec, search_path)
+    return genmsg.gentools.compute_full_text(context, spec)
+
+
+@pytest.fixture(scope='module')
+def hardened_custom_pubsub(tmp_path_factory):
+    """custom_pubsub built with the library's patch set (--hardened)."""
+    output = str(tmp_path_factory.mktemp('hardened_custom_pubsub'))
+    run_genmros('mros-v1-pc', os.path.join(MROS_V1_ROOT, 'mros_ws', 'custom_pubsub'), '-o',
+                output, '--target', 'arm', '-j2', '--hardened')
+    return os.path.join(output, 'custom_pubsub')
+
+
+def test_hardened_rostopic_hz_rosbag_record_and_play(ros_side, hardened_custom_pubsub,
+                                                     tmp_path):
+    # The test above with the library's patch set (test_hardening.py has the
+    # others): rostopic hz and rosbag record get the data, the bag the text.
+    import rosbag  # the ROS environment's
+    with RosGraph(ros_side) as graph:
+        board = Board(graph, hardened_custom_pubsub, str(tmp_path))
+        graph.wait_for_graph(publishers=[('/mros_msg', '/mros_node')],
+                             subscribers=[('/test_msg', '/mros_node2')])
+        _, rates = ros_tool(graph, 'rostopic', 'hz', '/mros_msg', timeout=8)
+        assert re.search(r'average rate: \d+\.\d+', rates), rates
+        bag = str(tmp_path / 'board.bag')
+        ros_tool(graph, 'rosbag', 'record', '--duration=5', '-O', bag, '/mros_msg')
+        with rosbag.Bag(bag) as recorded:
+            connections = list(recorded._connections.values())
+            messages = list(recorded.read_messages(raw=True))
+        assert len(connections) == 1 and len(messages) >= 2, board.process.output()
+        header = {key: value.decode() for key, value in connections[0].header.items()}
+        assert header['type'] == 'custom_pubsub/UserTypeTest'
+        assert header['message_definition'] == _gencpp_full_text('custom_pubsub', 'UserTypeTest')
+        # Played back into the board, on the topic it subscribes to.
+        start = len(board.process.lines())
+        status, played = ros_tool(graph, 'rosbag', 'play', bag, '/mros_msg:=/test_msg')
+        assert status == 0, played
+        board.process.wait_for('recieved name: ', timeout=DELIVERY_TIMEOUT, start=start)
+        assert board.process.alive(), board.process.output()
+
+
 def test_limit_no_message_definition_and_no_data_for_anymsg(ros_side, programs, tmp_path):
     with RosGraph(ros_side) as graph:
         board = Board(graph, programs['custom_pubsub'], str(tmp_path))
