@@ -565,6 +565,26 @@ def test_hardened_rostopic_hz_rosbag_record_and_play(ros_side, hardened_custom_p
         assert board.process.alive(), board.process.output()
 
 
+
+def test_hardened_every_slave_call_is_answered(ros_side, hardened_custom_pubsub, tmp_path):
+    # The slave's limits above, with the library's patch set: publisherUpdate
+    # is answered, a call the library does not implement gets a fault, and
+    # rosnode ping and rosnode info work.
+    with RosGraph(ros_side) as graph:
+        board = Board(graph, hardened_custom_pubsub, str(tmp_path))
+        graph.wait_for_graph(publishers=[('/mros_msg', '/mros_node')],
+                             subscribers=[('/test_msg', '/mros_node2')])
+        slave = xmlrpc.client.ServerProxy(board.slave_uri)
+        assert slave.publisherUpdate('/master', '/test_msg', []) == [1, '', 0]
+        assert slave.getPublications('/caller') == [
+            -1, 'not implemented by the mROS v1 library', 0]
+        assert slave.getPid('/caller') == [1, '', 1]
+        status, ping = ros_tool(graph, 'rosnode', 'ping', '-c', '1', '/mros_node')
+        assert status == 0 and 'xmlrpc reply from http://%s:' % BOARD_IP in ping, ping
+        status, info = ros_tool(graph, 'rosnode', 'info', '/mros_node')
+        assert status == 0 and 'Publications:' in info and '/mros_msg' in info, info
+        assert board.process.alive(), board.process.output()
+
 def test_limit_no_message_definition_and_no_data_for_anymsg(ros_side, programs, tmp_path):
     with RosGraph(ros_side) as graph:
         board = Board(graph, programs['custom_pubsub'], str(tmp_path))
