@@ -286,6 +286,57 @@ def test_sanitized_custom_pubsub_round_trips_with_the_samples_roscpp_nodes(ros_s
     assert sanitizer_reports(board.process.output()) <= LIBRARY_REPORTS
 
 
+@pytest.fixture(scope='module')
+def hardened_sanitized(tmp_path_factory):
+    """The sample apps as `sanitized` builds them, on the library with
+    genmros' patch set (--hardened)."""
+    build_root = str(tmp_path_factory.mktemp('mros_v1_pc_sanitize_hardened'))
+    built = {}
+    for app in APPS:
+        output = os.path.join(build_root, app)
+        run_genmros('mros-v1-pc', os.path.join(MROS_V1_ROOT, 'mros_ws', app), '-o', output,
+                    '--target', 'native', '--sanitize', '--hardened', '-j2')
+        built[app] = os.path.join(output, app)
+    return built
+
+
+def test_hardened_sanitized_custom_pubsub_round_trips_without_a_report(ros_side,
+                                                                       hardened_sanitized,
+                                                                       tmp_path):
+    # The patch set reads the decoder's length fields at any alignment: not
+    # even the library's own report above is left.
+    board = round_trip_with_the_samples_roscpp_nodes(
+        ros_side, hardened_sanitized['custom_pubsub'], str(tmp_path), runner=())
+    assert sanitizer_reports(board.process.output()) == set()
+
+
+# A request longer than the slave's 1024-byte buffer (MROS_PACKET_MAXSIZE_
+# *_REQUEST_TOPIC, _PUBLISHER_UPDATE in mros_packet_config.h), without its end.
+UNENDED_REQUEST = b'POST / HTTP/1.1\r\nContent-Length: 4000\r\n\r\n<methodCall>' + b'x' * 4000
+
+
+@pytest.mark.parametrize('library', ['as it is', 'hardened'])
+def test_a_request_that_fills_the_slaves_buffer(ros_side, sanitized, hardened_sanitized,
+                                                library, tmp_path):
+    # As it is, the slave writes the NUL after the request one byte past its
+    # buffer (AddressSanitizer stops the app); hardened (bounded-slave-request),
+    # it refuses the request and keeps serving.
+    programs = {'as it is': sanitized, 'hardened': hardened_sanitized}[library]
+    with RosGraph(ros_side) as graph:
+        board = _sanitized_string_pubsub(graph, programs, str(tmp_path))
+        _send_and_vanish(board.slave_port, UNENDED_REQUEST)
+        board.process.wait_for(r'mros_proc_receive\(\) \d+ ret=12', timeout=DELIVERY_TIMEOUT)
+        if library == 'hardened':
+            raw = RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5)
+            raw.close()
+            assert board.process.alive(), board.process.output()
+        else:
+            board.process.popen.wait(timeout=DELIVERY_TIMEOUT)
+    overflow = ('mros_protocol_slave_cimpl.c', 15, 'global-buffer-overflow')
+    reports = sanitizer_reports(board.process.output())
+    assert reports == ({overflow} if library == 'as it is' else set()), board.process.output()
+
+
 def _open_sockets(pid):
     return sum(os.readlink('/proc/%d/fd/%s' % (pid, fd)).startswith('socket:')
                for fd in os.listdir('/proc/%d/fd' % pid))
