@@ -91,12 +91,11 @@ def test_limit_publishing_a_frame_larger_than_the_largest_pool_crashes_the_libra
     assert 'published' not in output.replace('publishing', '')
 
 
-def test_hardened_publish_drops_a_frame_larger_than_the_largest_pool(tmp_path):
+def test_hardened_publish_drops_a_frame_larger_than_the_largest_pool(hardened_limits_program,
+                                                                    tmp_path):
     # The same app on the library with genmros' patch set (--hardened).
-    program = build_app(MROS_V1_ROOT, str(tmp_path / 'hardened'), 'library_limits.cpp',
-                        types=['std_msgs/String'], header_flags=['--hardened'])
     with RosGraph() as graph:
-        board = Board(graph, program, str(tmp_path), inputs=PUBLISH)
+        board = Board(graph, hardened_limits_program, str(tmp_path), inputs=PUBLISH)
         dropped = board.process.wait_for(
             r'publish\(\) dropped a frame of (\d+) bytes: no memory pool block holds it \(raise '
             r'the largest ROS_INNER_TOPIC_PUBLISHER_MEMPOOL<n>_SIZE\)', timeout=DELIVERY_TIMEOUT)[0]
@@ -165,6 +164,45 @@ def test_limit_more_peers_than_the_node_table_holds_lose_their_connections(
         eight_talkers(graph, board)
         board.process.wait_for(re.escape(NODE_TABLE_FULL), timeout=DELIVERY_TIMEOUT)
         assert board.process.alive(), board.process.output()
+
+
+@pytest.fixture(scope='module')
+def hardened_limits_program(tmp_path_factory):
+    """The same app on the library with genmros' patch set (--hardened)."""
+    return build_app(MROS_V1_ROOT, str(tmp_path_factory.mktemp('limits_hardened')),
+                     'library_limits.cpp', types=['std_msgs/String'],
+                     header_flags=['--hardened'])
+
+
+def test_hardened_a_full_node_table_names_its_setting(tmp_path):
+    # The case above on the library with the patch set: it answers
+    # publisherUpdate, so it connects to each publisher once and custom_pubsub's
+    # 10 nodes hold the 8 topics; with room for 6 the line says which setting
+    # to raise, and its value.
+    small_table = 6
+    root = library_copy(MROS_V1_ROOT, str(tmp_path / 'mros_v1'),
+                        {(USR_CONFIG, 'MROS_NODE_MAX_NUM'): small_table})
+    program = build_app(root, str(tmp_path / 'app'), 'library_limits.cpp',
+                        types=['std_msgs/String'], header_flags=['--hardened'])
+    with RosGraph() as graph:
+        board = start(graph, program, str(tmp_path), TOPICS)
+        eight_talkers(graph, board)
+        board.process.wait_for(re.escape(
+            'no room for another node: the table holds MROS_NODE_MAX_NUM = %d (raise it in '
+            'mros_usr_config.h)' % small_table), timeout=DELIVERY_TIMEOUT)
+        assert board.process.alive(), board.process.output()
+    assert NODE_TABLE_FULL not in board.process.output()
+
+
+def test_hardened_every_topic_is_delivered_with_the_samples_tables(hardened_limits_program,
+                                                                    tmp_path):
+    with RosGraph() as graph:
+        board = start(graph, hardened_limits_program, str(tmp_path), TOPICS)
+        eight_talkers(graph, board)
+        for topic in range(TOPIC_COUNT):
+            board.process.wait_for(r't%d: heard \[from t%d\]' % (topic, topic),
+                                   timeout=DELIVERY_TIMEOUT)
+    assert NODE_TABLE_FULL not in board.process.output()
 
 
 def test_with_the_tables_raised_every_topic_is_delivered(wide_tables_program, tmp_path):
