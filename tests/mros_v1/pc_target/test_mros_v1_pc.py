@@ -437,6 +437,29 @@ def test_limit_a_request_the_library_cannot_answer_leaks_its_socket(ros_side, sa
     assert sanitizer_reports(board.process.output()) <= LIBRARY_REPORTS
 
 
+def test_hardened_a_request_the_library_cannot_answer_leaves_no_socket(ros_side,
+                                                                       hardened_sanitized,
+                                                                       tmp_path):
+    # The case above with the patch set (answer-every-slave-call,
+    # close-unserved-subscriber-connections): both sockets are closed. (The
+    # patched library serves the short header above; a topic it does not
+    # publish is what it cannot answer.)
+    with RosGraph(ros_side) as graph:
+        board = _sanitized_string_pubsub(graph, hardened_sanitized, str(tmp_path))
+        pid = board.process.popen.pid
+        before = (_threads(pid), _open_sockets(pid))
+        body = b'<methodCall><methodName>requestTopic</methodName></methodCall>'
+        _send_and_vanish(board.slave_port, b'POST / HTTP/1.1\r\nContent-Length: %d\r\n\r\n%s'
+                         % (len(body), body))
+        board.process.wait_for(r'mros_xmlpacket_request_topic_req_decode\(\)',
+                               timeout=DELIVERY_TIMEOUT)
+        _send_and_vanish(board.publisher_port, encode_header({'topic': '/not_published'}))
+        board.process.wait_for(r'mros_protocol_publish_run\(\) \d+ ret=', timeout=DELIVERY_TIMEOUT)
+        assert _held_until(pid, before) == before
+        assert board.process.alive(), board.process.output()
+    assert sanitizer_reports(board.process.output()) == set()
+
+
 def test_limit_a_connection_header_without_a_topic_crashes_the_library(ros_side, sanitized,
                                                                        tmp_path):
     # A field whose length runs past the header leaves the decoder without
