@@ -43,7 +43,7 @@ def every_header_translation_unit(include_root, path):
               '              message.deserialize(buffer, size);',
               '  message.memCopy(cursor);',
               '  message.deserialize(cursor);',
-              '  subtask_methods::CallCallbackFuncs<T::MROS_TYPE_ID>::call(0, cursor);',
+              '  subtask_methods::CallCallbackFuncs<T::MROS_TYPE_ID>::call(0, cursor, size);',
               '  return total + static_cast<int>(message.serializedLength());',
               '}',
               '',

@@ -81,8 +81,18 @@ template <class T> void deliverOutsideFrame(const uint8_t* data, uint32_t size, 
   if (size) memcpy(frame + 4, data, size);
   g_expected = expected;
   g_delivered = false;
-  subtask_methods::CallCallbackFuncs<T::MROS_TYPE_ID>::call(&onDelivery<T>, frame);
+  subtask_methods::CallCallbackFuncs<T::MROS_TYPE_ID>::call(&onDelivery<T>, frame,
+                                                            mros::wire::kFrameSizeUnknown);
   require(g_delivered == (consumed >= 0), "outside frame: delivery does not match the decode");
+  // As genmros' patch set for the library hands it over: with the frame's
+  // size, which bounds the read whatever the length word claims.
+  std::vector<uint8_t> expected_within_size;
+  const int32_t consumed_within_size = decodeFresh<T>(data, size, expected_within_size);
+  g_expected = expected_within_size;
+  g_delivered = false;
+  subtask_methods::CallCallbackFuncs<T::MROS_TYPE_ID>::call(&onDelivery<T>, frame, 4 + size);
+  require(g_delivered == (consumed_within_size >= 0),
+          "sized frame: delivery does not match the decode");
   free(frame);
 }
 
@@ -97,7 +107,8 @@ template <class T> void deliverOnBoardFrame(const uint8_t* data, uint32_t size) 
   require(cursor == g_block_arena + 4 + body, "memCopy() wrote other than dataSize() bytes");
   g_expected = encode(message);
   g_delivered = false;
-  subtask_methods::CallCallbackFuncs<T::MROS_TYPE_ID>::call(&onDelivery<T>, g_block_arena);
+  subtask_methods::CallCallbackFuncs<T::MROS_TYPE_ID>::call(&onDelivery<T>, g_block_arena,
+                                                            mros::wire::kFrameSizeUnknown);
   require(g_delivered, "on-board frame not delivered");
 }
 

@@ -65,3 +65,46 @@ def _message_size(compiler, include, tmp_path):
     symbols = subprocess.run([nm, '-S', str(tmp_path / 'size.o')], capture_output=True, text=True,
                              check=True).stdout
     return int(re.search(r'^\S+ (\S+) [BbCc] size_probe$', symbols, re.M).group(1), 16)
+
+
+DELIVERY_PROGRAM = r'''#include <cstdio>
+#include <string>
+#include <message_headers.h>
+#include <std_msgs/String.h>
+static int delivered = 0;
+static std::string text;
+static void received(void* message) {
+  ++delivered;
+  text = static_cast<std_msgs::String*>(message)->data;
+}
+int main() {
+  // "hello" as a frame: a length word the library left stale (0), then the
+  // body: the string's length and its bytes.
+  char frame[4 + 4 + 5] = {0, 0, 0, 0, 5, 0, 0, 0, 'h', 'e', 'l', 'l', 'o'};
+  callCallback(std_msgs::String::MROS_TYPE_ID, received, frame, sizeof frame);
+  std::printf("whole: %d %s\n", delivered, text.c_str());
+  callCallback(std_msgs::String::MROS_TYPE_ID, received, frame, sizeof frame - 1);
+  callCallback(std_msgs::String::MROS_TYPE_ID, received, frame, 3);
+  std::printf("short: %d\n", delivered);
+  callCallback(std_msgs::String::MROS_TYPE_ID, received, frame);
+  std::printf("no size: %d\n", delivered);
+  return 0;
+}
+'''
+
+
+def test_delivery_reads_no_further_than_the_frame_size_the_library_gives(tmp_path):
+    # genmros' patch set for the library passes the frame's size
+    # (frame-size-to-delivery); without it, delivery believes the length
+    # word of a frame it did not write (here a stale 0: nothing decodes).
+    include = str(tmp_path / 'include')
+    run_genmros('export', '--type', 'std_msgs/String', '-o', include, '--underlay', '/usr')
+    with open(os.path.join(include, 'message_headers.h')) as stream:
+        assert '#define MROS_CALL_CALLBACK_TAKES_FRAME_SIZE 1\n' in stream.read()
+    source = tmp_path / 'deliver.cpp'
+    source.write_text(DELIVERY_PROGRAM)
+    program = str(tmp_path / 'deliver')
+    subprocess.run(['g++', '-std=gnu++98', '-Wall', '-Wextra', '-Werror', '-I', include,
+                    str(source), '-o', program], check=True)
+    output = subprocess.run([program], capture_output=True, text=True, check=True).stdout
+    assert output == 'whole: 1 hello\nshort: 1\nno size: 1\n'

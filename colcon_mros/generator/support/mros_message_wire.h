@@ -506,7 +506,8 @@ template <class T> int32_t deserialize(T& message, const uint8_t* buffer, uint32
 // (the mROS v1 library's per-firmware aggregate) includes: only firmware
 // built with the v1 library instantiates it.
 template <class T> void memCopy(const T& message, char*& cursor);
-template <class T> void deliverFrame(void (*callback)(void*), const char* frame);
+template <class T>
+void deliverFrame(void (*callback)(void*), const char* frame, uint32_t frame_size);
 
 }  // namespace wire
 

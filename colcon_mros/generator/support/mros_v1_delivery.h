@@ -118,13 +118,22 @@ template <class T> class DeliveryStorage {
   }
 };
 
+// What callCallback is given where the library does not say how long a
+// frame is (mROS v1 as it is; genmros' patch set for it passes the size).
+const uint32_t kFrameSizeUnknown = 0xffffffffu;
+
 // A frame as mROS v1 hands it to a subscriber: the length word, then the
-// body. The message is only delivered when the body decodes completely
-// within its known size.
-template <class T> void deliverFrame(void (*callback)(void*), const char* frame) {
+// body; frame_size, where the library gives it, is the whole frame's. The
+// message is only delivered when the body decodes completely within its
+// known size.
+template <class T>
+void deliverFrame(void (*callback)(void*), const char* frame, uint32_t frame_size) {
   const char* body = frame + 4;
   uint32_t body_size;
-  if (!OnBoardFrames::find(body, body_size)) {
+  if (frame_size != kFrameSizeUnknown) {
+    if (frame_size < 4) return;
+    body_size = frame_size - 4;
+  } else if (!OnBoardFrames::find(body, body_size)) {
     const uint8_t* word = reinterpret_cast<const uint8_t*>(frame);
     body_size = static_cast<uint32_t>(word[0]) | static_cast<uint32_t>(word[1]) << 8 |
                 static_cast<uint32_t>(word[2]) << 16 | static_cast<uint32_t>(word[3]) << 24;

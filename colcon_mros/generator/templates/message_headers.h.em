@@ -16,17 +16,26 @@
 #include <@(msg.full_name).h>
 @[end for]@
 
-// Decodes a received TCPROS frame of type id and passes it to callback.
-inline void callCallback(int id, void (*callback)(void*), char* frame) {
+// Decodes a received TCPROS frame of type id, frame_size bytes long with
+// its length word, and passes it to callback. The mROS v1 library as it is
+// gives no size (the three-argument form below); genmros' patch set for it
+// passes the size where this macro says the headers take it.
+#define MROS_CALL_CALLBACK_TAKES_FRAME_SIZE 1
+inline void callCallback(int id, void (*callback)(void*), char* frame, uint32_t frame_size) {
   switch (id) {
 @[for msg in messages]@
     case @(msg.cpp_name)::MROS_TYPE_ID:
-      subtask_methods::CallCallbackFuncs<@(msg.cpp_name)::MROS_TYPE_ID>::call(callback, frame);
+      subtask_methods::CallCallbackFuncs<@(msg.cpp_name)::MROS_TYPE_ID>::call(
+          callback, frame, frame_size);
       break;
 @[end for]@
     default:
       break;
   }
+}
+
+inline void callCallback(int id, void (*callback)(void*), char* frame) {
+  callCallback(id, callback, frame, mros::wire::kFrameSizeUnknown);
 }
 
 // MD5 sum of type id, or NULL for a type this firmware does not know.

@@ -166,8 +166,8 @@ namespace subtask_methods {
 // Called by the mROS subscriber task with a frame to deliver.
 template <>
 struct CallCallbackFuncs<@(msg.cpp_name)::MROS_TYPE_ID> {
-  static void call(void (*callback)(void*), char* frame) {
-    mros::wire::deliverFrame<@(msg.cpp_name)>(callback, frame);
+  static void call(void (*callback)(void*), char* frame, uint32_t frame_size) {
+    mros::wire::deliverFrame<@(msg.cpp_name)>(callback, frame, frame_size);
   }
 };
 

@@ -14,8 +14,11 @@ from pc_target_apps import build_app
 pytestmark = [pytest.mark.needs_mros_v1, pytest.mark.needs_qemu, pytest.mark.slow]
 
 
-def test_a_waiting_frame_arrives_whole_after_more_of_its_type(tmp_path):
-    program = build_app(MROS_V1_ROOT, str(tmp_path), 'onboard_burst.cpp')
+@pytest.mark.parametrize('flags', [(), ('--hardened',)], ids=['as it is', 'hardened'])
+def test_a_waiting_frame_arrives_whole_after_more_of_its_type(tmp_path, flags):
+    # Hardened, the library passes each frame's size to delivery
+    # (frame-size-to-delivery), which then needs no note of it.
+    program = build_app(MROS_V1_ROOT, str(tmp_path), 'onboard_burst.cpp', header_flags=flags)
     with RosGraph() as graph:
         board = Board(graph, program, str(tmp_path))
         board.process.wait_for('published', timeout=DELIVERY_TIMEOUT)
