@@ -2,7 +2,8 @@
 """Throughput and latency of the real mROS v1 library on the PC target
 against roscpp, side by side in one run: the library's talker
 (bench/mros_v1_pc/, built natively by genmros mros-v1-pc with
-custom_pubsub's configuration and app.h) -> a roscpp node,
+custom_pubsub's configuration and app.h) -> a roscpp node, the same
+talker on the library with genmros' patch set (--hardened),
 and a roscpp talker (mros_test_nodes bench_talker) -> the same roscpp node,
 both with mros_test/PersonalData, through a real rosmaster on a free
 loopback port. The library's sample memory pools hold at most 1 KiB a
@@ -15,7 +16,7 @@ messages published as fast as each side goes (roscpp: as fast as publish()
 returns; the library's task gives up the CPU after each publish, as an ASP
 task must for the library to send), divided by the time from the first send
 to the last arrival; the share delivered is shown beside it.
-Prints a table with ratios (mROS v1 / roscpp).
+Prints a table with ratios (hardened / as it is, mROS v1 / roscpp).
 
   bench/mros_v1_pc_bench.py [--build-dir DIR] [--rounds N]
 
@@ -105,7 +106,8 @@ def measure(graph, workspace, talker, on_board, scratch, tag):
 
 
 def build(mros_root, build_root):
-    """(the ROS nodes of test_ws, the library's talker program), built in build_root."""
+    """(the ROS nodes of test_ws, {library: the talker program}), built in
+    build_root, on the library as it is and hardened."""
     shutil.copytree(TEST_WS_SRC, os.path.join(build_root, 'test_ws', 'src'), dirs_exist_ok=True)
     workspace = CatkinWorkspace(os.path.join(build_root, 'test_ws'), 'mros_test_nodes')
     workspace.build(os.path.join(build_root, 'catkin_make.log'), '-DCMAKE_BUILD_TYPE=Release')
@@ -114,10 +116,14 @@ def build(mros_root, build_root):
         if not os.path.lexists(os.path.join(talker, sample_file)):
             os.symlink(os.path.join(mros_root, 'mros_ws', 'custom_pubsub', sample_file),
                        os.path.join(talker, sample_file))
-    subprocess.run(['genmros', 'mros-v1-pc', talker, '--target', 'native', '--mros-root',
-                    mros_root, '--msg-path', TEST_WS_SRC, '--type', 'mros_test/PersonalData',
-                    '-o', os.path.join(build_root, 'talker-build')], check=True)
-    return workspace, os.path.join(build_root, 'talker-build', 'bench_talker')
+    programs = {}
+    for library, flags in (('mros_v1', []), ('mros_v1_hardened', ['--hardened'])):
+        output = os.path.join(build_root, 'talker-build-' + library)
+        subprocess.run(['genmros', 'mros-v1-pc', talker, '--target', 'native', '--mros-root',
+                        mros_root, '--msg-path', TEST_WS_SRC, '--type', 'mros_test/PersonalData',
+                        '-o', output] + flags, check=True)
+        programs[library] = os.path.join(output, 'bench_talker')
+    return workspace, programs
 
 
 def main():
@@ -130,13 +136,14 @@ def main():
     if not os.path.isfile(os.path.join(mros_root, 'mros-lib', 'Makefile.m')):
         print("no mROS v1 checkout at '%s': set MROS_V1_ROOT" % mros_root, file=sys.stderr)
         return 1
-    samples = {'mros_v1': [], 'roscpp': []}
+    samples = {'mros_v1': [], 'mros_v1_hardened': [], 'roscpp': []}
     with tempfile.TemporaryDirectory(prefix='mros_v1_pc_bench_') as scratch:
-        workspace, program = build(mros_root, os.path.abspath(args.build_dir or scratch))
+        workspace, programs = build(mros_root, os.path.abspath(args.build_dir or scratch))
         with RosGraph(workspace.environment()) as graph:
             for round_index in range(args.rounds):
-                samples['mros_v1'].append(measure(graph, workspace, [program], True, scratch,
-                                                  'mros_v1-%d' % round_index))
+                for library, program in programs.items():
+                    samples[library].append(measure(graph, workspace, [program], True, scratch,
+                                                    '%s-%d' % (library, round_index)))
                 samples['roscpp'].append(measure(graph, workspace,
                                                  workspace.roscpp('bench_talker', 'personal'),
                                                  False, scratch, 'roscpp-%d' % round_index))
@@ -151,15 +158,21 @@ def print_table(samples, rounds):
             ('latency p90 [us]', 'p90', '%.0f'),
             ('latency p99 [us]', 'p99', '%.0f'),
             ('delivered at %d/s' % LATENCY[1], 'delivered', '%.3f')]
-    print('\nPersonalData to a roscpp node: the real mROS v1 library (PC target, native) vs. '
-          'roscpp (same machine, one run, median of %d alternating round(s))' % rounds)
-    print('| metric | mROS v1 | roscpp | mROS v1/roscpp |')
-    print('|---|---:|---:|---:|')
+    print('\nPersonalData to a roscpp node: the real mROS v1 library (PC target, native), as it '
+          'is and hardened, vs. roscpp (same machine, one run, median of %d alternating '
+          'round(s))' % rounds)
+    print('| metric | mROS v1 | mROS v1 hardened | roscpp | hardened/as it is | '
+          'mROS v1/roscpp |')
+    print('|---|---:|---:|---:|---:|---:|')
+
+    def ratio(numerator, denominator):
+        return numerator / denominator if denominator else 0
     for label, key, fmt in rows:
-        mros = statistics.median(r[key] for r in samples['mros_v1'])
-        roscpp = statistics.median(r[key] for r in samples['roscpp'])
-        print('| %s | %s | %s | %.2f |' % (label, fmt % mros, fmt % roscpp,
-                                          mros / roscpp if roscpp else 0))
+        mros, hardened, roscpp = (statistics.median(r[key] for r in samples[name])
+                                  for name in ('mros_v1', 'mros_v1_hardened', 'roscpp'))
+        print('| %s | %s | %s | %s | %.2f | %.2f |' % (
+            label, fmt % mros, fmt % hardened, fmt % roscpp, ratio(hardened, mros),
+            ratio(mros, roscpp)))
 
 
 if __name__ == '__main__':
