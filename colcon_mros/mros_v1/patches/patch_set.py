@@ -179,7 +179,9 @@ def apply_patches(root, revert=False, patches=None):
     is checked before any is written; each is written whole, atomically."""
     texts = {}
     done = []
-    for patch, applied in patch_states(root, patches):
+    states = patch_states(root, patches)
+    # Taken out in the reverse order: each from the text it was applied to.
+    for patch, applied in reversed(states) if revert else states:
         if applied != revert:
             continue
         texts.update(_changed_texts(root, patch.reversed() if revert else patch, texts))

@@ -69,7 +69,7 @@ def test_apply_check_revert_on_a_checkout(checkout):
         'applied       %s: %s' % (patch.name, patch.description) for patch in patch_set()]
 
     reverted = run_genmros('mros-v1-harden', str(checkout), '--revert')
-    assert reverted.stdout == 'genmros: took out %s\n' % ', '.join(names)
+    assert reverted.stdout == 'genmros: took out %s\n' % ', '.join(reversed(names))
     assert _same_as_original(checkout) == []
 
 
