@@ -73,6 +73,23 @@ def _reply_header(extra=None):
     return encode_header(fields)
 
 
+def _refused_and_still_serving(board, connection, peer, longer_than):
+    """The board refused a connection header of more than longer_than bytes
+    from a peer ('publisher' or 'subscriber') with its line, closed the
+    connection (no socket is left behind), and still serves: its slave and
+    publisher take a subscriber."""
+    assert closed_by_peer(connection), board.process.output()
+    refusal = board.process.wait_for(
+        r"refused a %s's connection header of (\d+) bytes: the buffer holds 512 "
+        r'\(raise MROS_PACKET_MAXSIZE_REQ_TCPROS and MROS_PACKET_MAXSIZE_RES_TCPROS\)' % peer,
+        timeout=DELIVERY_TIMEOUT)[0]
+    assert int(refusal.group(1)) > longer_than
+    raw = RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5)
+    raw.close()
+    assert raw.header['md5sum'] == STRING_MD5
+    assert board.process.alive(), board.process.output()
+
+
 def test_hardened_a_long_header_from_a_publisher_is_refused_and_the_node_stays_up(hardened,
                                                                                     tmp_path):
     # Unpatched, the library reads this header past its 512-byte buffer and
@@ -84,18 +101,7 @@ def test_hardened_a_long_header_from_a_publisher_is_refused_and_the_node_stays_u
         with HostilePublisher(graph, '/hostile', '/test_string', 'std_msgs/String') as hostile:
             connection = _subscriber_connection(hostile, board)
             connection.sendall(_reply_header({'message_definition': 'x' * 5000}))
-            # Refused, and the connection closed: no socket is left behind.
-            assert closed_by_peer(connection), board.process.output()
-            refusal = board.process.wait_for(
-                r"refused a publisher's connection header of (\d+) bytes: the buffer holds 512 "
-                r'\(raise MROS_PACKET_MAXSIZE_REQ_TCPROS and MROS_PACKET_MAXSIZE_RES_TCPROS\)',
-                timeout=DELIVERY_TIMEOUT)[0]
-            assert int(refusal.group(1)) > 5000
-            # The node still serves: its slave and publisher take a subscriber.
-            raw = RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5)
-            raw.close()
-            assert raw.header['md5sum'] == STRING_MD5
-        assert board.process.alive(), board.process.output()
+            _refused_and_still_serving(board, connection, 'publisher', 5000)
 
 
 def test_hardened_a_long_header_from_a_subscriber_is_refused_and_the_node_stays_up(hardened,
@@ -116,16 +122,7 @@ def test_hardened_a_long_header_from_a_subscriber_is_refused_and_the_node_stays_
         connection.sendall(encode_header({
             'callerid': '/long_subscriber', 'topic': '/mros_msg', 'type': 'std_msgs/String',
             'md5sum': STRING_MD5, 'message_definition': 'x' * 3000}))
-        assert closed_by_peer(connection), board.process.output()
-        refusal = board.process.wait_for(
-            r"refused a subscriber's connection header of (\d+) bytes: the buffer holds 512 "
-            r'\(raise MROS_PACKET_MAXSIZE_REQ_TCPROS and MROS_PACKET_MAXSIZE_RES_TCPROS\)',
-            timeout=DELIVERY_TIMEOUT)[0]
-        assert int(refusal.group(1)) > 3000
-        raw = RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5)
-        raw.close()
-        assert raw.header['md5sum'] == STRING_MD5
-        assert board.process.alive(), board.process.output()
+        _refused_and_still_serving(board, connection, 'subscriber', 3000)
 
 
 ANYMSG_LISTENER = """
