@@ -1,6 +1,7 @@
-"""Test apps on the real mROS v1 library, built by genmros mros-v1-pc from
-this checkout: tests/fixtures/mros_v1_pc_app's Makefile and app.cfg with one
-of its sources as app.cpp."""
+"""Apps on the real mROS v1 library, built by genmros mros-v1-pc from this
+checkout: the checkout's sample apps, and test apps of
+tests/fixtures/mros_v1_pc_app's Makefile and app.cfg with one of its sources
+as app.cpp."""
 
 import os
 import re
@@ -33,14 +34,28 @@ def build_app(mros_root, build_root, source, target='arm', types=('mros_test/Per
             os.symlink(origin, os.path.join(app, name))
     output = os.path.join(build_root, 'build')
     type_args = [argument for name in types for argument in ('--type', name)]
+    _mros_v1_pc(app, output, ['--mros-root', mros_root, '--msg-path', os.path.join(TEST_WS, 'src'),
+                              '--target', target] + type_args + list(header_flags))
+    return os.path.join(output, 'test_app')
+
+
+def build_sample(mros_root, app, output, *flags):
+    """The checkout's sample app mros_ws/<app> built into output with flags
+    (--target, --sanitize, --hardened, ...); returns (the program, what
+    genmros and the compilers printed)."""
+    printed = _mros_v1_pc(os.path.join(mros_root, 'mros_ws', app), output, flags)
+    return os.path.join(output, app), printed
+
+
+def _mros_v1_pc(app_dir, output, flags):
+    """genmros mros-v1-pc of this checkout; what it printed, or RuntimeError."""
     result = subprocess.run(
-        [sys.executable, '-m', 'colcon_mros', 'mros-v1-pc', app, '--mros-root', mros_root,
-         '--msg-path', os.path.join(TEST_WS, 'src'), '-o', output, '--target', target, '-j2']
-        + type_args + list(header_flags), cwd=REPO, capture_output=True, text=True)
+        [sys.executable, '-m', 'colcon_mros', 'mros-v1-pc', app_dir, '-o', output, '-j2']
+        + list(flags), cwd=REPO, capture_output=True, text=True)
     if result.returncode != 0:
         raise RuntimeError('genmros mros-v1-pc failed:\n' + result.stdout[-3000:]
                            + result.stderr[-3000:])
-    return os.path.join(output, 'test_app')
+    return result.stdout + result.stderr
 
 
 def library_copy(mros_root, destination, settings):

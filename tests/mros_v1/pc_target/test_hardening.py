@@ -16,21 +16,19 @@ from colcon_mros.mros_v1.pc_target.ros_graph import (DELIVERY_TIMEOUT, PEER_IP, 
                                                       RosGraph)
 from conftest import run_genmros
 from mros_v1_checkout import MROS_V1_ROOT
+from pc_target_apps import build_sample
 from tcpros_peer import HostilePublisher, RawSubscriber, closed_by_peer, encode_header
 
 pytestmark = [pytest.mark.needs_mros_v1, pytest.mark.needs_qemu, pytest.mark.slow]
 
-SAMPLES = os.path.join(MROS_V1_ROOT, 'mros_ws')
 STRING_MD5 = '992ce8a1687cec8c8bd883ec73ca41d1'
 # gcc quotes the name as the locale allows.
 STRTOL_WARNING = re.compile(r"implicit declaration of function .strtol.")
 
 
 def _build(build_root, *flags, app='string_pubsub'):
-    output = os.path.join(build_root, 'build')
-    result = run_genmros('mros-v1-pc', os.path.join(SAMPLES, app), '-o', output, '--target',
-                         'arm', '-j2', *flags)
-    return os.path.join(output, app), result.stdout + result.stderr
+    return build_sample(MROS_V1_ROOT, app, os.path.join(build_root, 'build'), '--target', 'arm',
+                        *flags)
 
 
 @pytest.fixture(scope='module')

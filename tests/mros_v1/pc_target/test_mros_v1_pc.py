@@ -31,9 +31,10 @@ import pytest
 
 from colcon_mros.mros_v1.pc_target.ros_graph import (
     BOARD_IP, DELIVERY_TIMEOUT, PEER_IP, Board, RosGraph, sourced_environment)
-from conftest import REPO, run_genmros
+from conftest import REPO
 from fixtures.build_integration.tools import run
 from mros_v1_checkout import MROS_V1_ROOT
+from pc_target_apps import build_sample
 from sanitizer_reports import LIBRARY_REPORTS, sanitizer_reports
 from tcpros_peer import HostilePublisher, RawSubscriber, encode_header
 
@@ -66,17 +67,17 @@ def sample_node(ros_side, package, node):
     return [os.path.join(ros_side['DEVEL_LIB'], package, node)]
 
 
+def _samples(tmp_path_factory, name, *flags):
+    """{app: program} of the sample apps built by genmros mros-v1-pc with flags."""
+    build_root = str(tmp_path_factory.mktemp(name))
+    return {app: build_sample(MROS_V1_ROOT, app, os.path.join(build_root, app), *flags)[0]
+            for app in APPS}
+
+
 @pytest.fixture(scope='module')
 def programs(tmp_path_factory):
     """The sample apps, built for ARM Linux by genmros mros-v1-pc."""
-    build_root = str(tmp_path_factory.mktemp('mros_v1_pc'))
-    built = {}
-    for app in APPS:
-        output = os.path.join(build_root, app)
-        run_genmros('mros-v1-pc', os.path.join(MROS_V1_ROOT, 'mros_ws', app), '-o', output,
-                    '--target', 'arm', '-j2')
-        built[app] = os.path.join(output, app)
-    return built
+    return _samples(tmp_path_factory, 'mros_v1_pc', '--target', 'arm')
 
 
 def ros_node(graph, name, argv, **options):
@@ -269,14 +270,7 @@ def test_custom_pubsub_round_trip_with_the_samples_roscpp_nodes_and_rospy(ros_si
 def sanitized(tmp_path_factory):
     """The sample apps, built for this PC with AddressSanitizer and
     UndefinedBehaviorSanitizer by genmros mros-v1-pc --sanitize."""
-    build_root = str(tmp_path_factory.mktemp('mros_v1_pc_sanitize'))
-    built = {}
-    for app in APPS:
-        output = os.path.join(build_root, app)
-        run_genmros('mros-v1-pc', os.path.join(MROS_V1_ROOT, 'mros_ws', app), '-o', output,
-                    '--target', 'native', '--sanitize', '-j2')
-        built[app] = os.path.join(output, app)
-    return built
+    return _samples(tmp_path_factory, 'mros_v1_pc_sanitize', '--target', 'native', '--sanitize')
 
 
 def test_sanitized_custom_pubsub_round_trips_with_the_samples_roscpp_nodes(ros_side, sanitized,
@@ -290,14 +284,8 @@ def test_sanitized_custom_pubsub_round_trips_with_the_samples_roscpp_nodes(ros_s
 def hardened_sanitized(tmp_path_factory):
     """The sample apps as `sanitized` builds them, on the library with
     genmros' patch set (--hardened)."""
-    build_root = str(tmp_path_factory.mktemp('mros_v1_pc_sanitize_hardened'))
-    built = {}
-    for app in APPS:
-        output = os.path.join(build_root, app)
-        run_genmros('mros-v1-pc', os.path.join(MROS_V1_ROOT, 'mros_ws', app), '-o', output,
-                    '--target', 'native', '--sanitize', '--hardened', '-j2')
-        built[app] = os.path.join(output, app)
-    return built
+    return _samples(tmp_path_factory, 'mros_v1_pc_sanitize_hardened', '--target', 'native',
+                    '--sanitize', '--hardened')
 
 
 def test_hardened_sanitized_custom_pubsub_round_trips_without_a_report(ros_side,
@@ -605,10 +593,9 @@ def _gencpp_full_text(package, type_name):
 @pytest.fixture(scope='module')
 def hardened_custom_pubsub(tmp_path_factory):
     """custom_pubsub built with the library's patch set (--hardened)."""
-    output = str(tmp_path_factory.mktemp('hardened_custom_pubsub'))
-    run_genmros('mros-v1-pc', os.path.join(MROS_V1_ROOT, 'mros_ws', 'custom_pubsub'), '-o',
-                output, '--target', 'arm', '-j2', '--hardened')
-    return os.path.join(output, 'custom_pubsub')
+    return build_sample(MROS_V1_ROOT, 'custom_pubsub',
+                        str(tmp_path_factory.mktemp('hardened_custom_pubsub')), '--target', 'arm',
+                        '--hardened')[0]
 
 
 def test_hardened_rostopic_hz_rosbag_record_and_play(ros_side, hardened_custom_pubsub,
