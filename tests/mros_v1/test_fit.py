@@ -20,7 +20,7 @@ from colcon_mros.mros_v1.pc_target.ros_graph import PYTHON, RosGraph
 from conftest import TEST_WS
 from mros_v1_checkout import MROS_V1_ROOT
 from settings_headers import define, header_paths, small_settings
-from tcpros_peer import HostilePublisher, RawSubscriber
+from colcon_mros.mros_v1.pc_target.tcpros_peer import HostilePublisher, RawSubscriber
 
 USR_CONFIG = os.path.join(MROS_V1_ROOT, 'mros_ws', 'custom_pubsub', 'mros_config',
                           'mros_usr_config.h')

@@ -17,7 +17,8 @@ from colcon_mros.mros_v1.pc_target.ros_graph import (DELIVERY_TIMEOUT, PEER_IP, 
 from conftest import run_genmros
 from mros_v1_checkout import MROS_V1_ROOT
 from pc_target_apps import build_sample
-from tcpros_peer import HostilePublisher, RawSubscriber, closed_by_peer, encode_header
+from colcon_mros.mros_v1.pc_target.tcpros_peer import (
+    HostilePublisher, RawSubscriber, closed_by_peer, encode_header)
 
 pytestmark = [pytest.mark.needs_mros_v1, pytest.mark.needs_qemu, pytest.mark.slow]
 

@@ -1,0 +1,607 @@
+#!/usr/bin/python3
+"""Fuzz the mROS v1 library's network side on the PC target, loopback only.
+
+    /usr/bin/python3 bench/fuzz/network_fuzz.py [--seconds 600] [--inputs N] [--seed S]
+                                                [--as-it-is] [--build-dir DIR]
+
+builds bench/fuzz/relay_app (a node relaying std_msgs/String,
+sensor_msgs/JointState, geometry_msgs/PoseStamped, sensor_msgs/Imu and
+geometry_msgs/Twist from src/<Type> to back/<Type>) with genmros mros-v1-pc
+--target native --sanitize --hardened (--as-it-is: the library unpatched),
+starts it beside a real rosmaster and sends it, in turn:
+
+- mutated XML-RPC calls to its slave port (every slave method, valid and
+  broken HTTP, lying Content-Length, long and binary bodies);
+- mutated TCPROS connection headers to its publisher port, as subscribers;
+- a hostile publisher: a publisherUpdate tells the node to connect to a
+  fresh port of the fuzzer's, whose requestTopic answer, connection header
+  and frames (lying lengths inside the message, truncated and long frames)
+  are mutated.
+
+Subscribers on every back/<Type> drain what the node relays meanwhile. Every
+few seconds the fuzzer asks the slave getPid and counts the node's threads
+and resident memory. The peers are raw sockets: they send no
+message_definition, so the app is built without the fit check (ROS nodes'
+headers would not fit custom_pubsub's 512-byte buffers; the hardened library
+refuses them).
+
+At the end (after --seconds, or --inputs inputs) the fuzzer relays genpy's
+serialization of samples of each type through the node and compares the
+bytes, then stops the node. It prints a table and exits non-zero if the
+node died or stopped answering, a sanitizer reported anything, the threads
+grew, the memory grew past MEMORY_GROWTH_LIMIT after the first quarter, or a
+type no longer came back byte-exact; the last inputs are kept in the build
+directory. The test suite runs it for 45 s; the figures in bench/README.md
+are of a 10-minute run.
+"""
+
+import argparse
+import base64
+import io
+import json
+import os
+import random
+import selectors
+import re
+import shutil
+import socket
+import struct
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+import xmlrpc.client
+
+from colcon_mros.mros_v1.pc_target.ros_graph import BOARD_IP, PEER_IP, Board, RosGraph
+from colcon_mros.mros_v1.pc_target.tcpros_peer import (
+    HostilePublisher, RawSubscriber, encode_header, frame, read_header)
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(HERE))
+RELAY_APP = os.path.join(HERE, 'relay_app')
+# The relay's types, by the name of their topics.
+TYPES = {'String': 'std_msgs/String', 'JointState': 'sensor_msgs/JointState',
+         'PoseStamped': 'geometry_msgs/PoseStamped', 'Imu': 'sensor_msgs/Imu',
+         'Twist': 'geometry_msgs/Twist'}
+SLAVE_METHODS = ['requestTopic', 'getPid', 'getBusInfo', 'getBusStats', 'getMasterUri',
+                 'getSubscriptions', 'getPublications', 'publisherUpdate', 'paramUpdate',
+                 'shutdown', 'noSuchMethod']
+# ASan's quarantine holds freed memory up to its size before reusing it: a
+# small one lets a leak show in the resident memory within minutes.
+SANITIZER_OPTIONS = {'ASAN_OPTIONS': 'quarantine_size_mb=8:detect_leaks=0',
+                     'UBSAN_OPTIONS': 'print_stacktrace=1'}
+MEMORY_GROWTH_LIMIT = 16 * 1024 * 1024
+HEALTH_PERIOD = 5.0  # seconds between getPid, thread and memory readings
+ANSWER_TIMEOUT = 10.0  # for the node's slave to answer getPid
+PEER_TIMEOUT = 0.2  # how long a fuzzing peer waits for the node
+SANITIZER_REPORT = re.compile(r'runtime error:|ERROR: AddressSanitizer|ERROR: LeakSanitizer')
+INTERESTING_WORDS = [0, 1, 3, 4, 0x7f, 0x80, 0xff, 0x100, 0x1ff, 0x200, 0x3ff, 0x400, 0xffff,
+                     0x10000, 0x7fffffff, 0x80000000, 0xfffffffe, 0xffffffff]
+
+
+# --- the node --------------------------------------------------------------
+
+def build(mros_root, build_root, hardened):
+    """The relay app built with the sanitizers; returns the program."""
+    app = shutil.copytree(RELAY_APP, os.path.join(build_root, 'relay_app'), dirs_exist_ok=True)
+    for sample_file in ('mros_config', 'app.h'):  # custom_pubsub's configuration and tasks
+        if not os.path.lexists(os.path.join(app, sample_file)):
+            os.symlink(os.path.join(mros_root, 'mros_ws', 'custom_pubsub', sample_file),
+                       os.path.join(app, sample_file))
+    output = os.path.join(build_root, 'build-hardened' if hardened else 'build-as-it-is')
+    command = [sys.executable, '-m', 'colcon_mros', 'mros-v1-pc', app, '-o', output,
+               '--mros-root', mros_root, '--target', 'native', '--sanitize', '--no-fit-check']
+    command += ['--hardened'] if hardened else []
+    for datatype in TYPES.values():
+        command += ['--type', datatype]
+    result = subprocess.run(command, cwd=REPO, capture_output=True, text=True)
+    if result.returncode != 0:
+        raise SystemExit('genmros mros-v1-pc failed:\n' + result.stdout[-3000:]
+                         + result.stderr[-3000:])
+    return os.path.join(output, 'fuzz_relay')
+
+
+def samples():
+    """{topic name: (type, MD5 sum, [genpy's bytes of each sample])}."""
+    from geometry_msgs.msg import PoseStamped, Twist
+    from sensor_msgs.msg import Imu, JointState
+    from std_msgs.msg import String
+    messages = {
+        'String': [String(), String(data='mROS'), String(data='x' * 300)],
+        'JointState': [JointState(), JointState(name=['shoulder', 'elbow'], position=[0.5, -1.25],
+                                                velocity=[2.0], effort=[])],
+        'PoseStamped': [PoseStamped()],
+        'Imu': [Imu()],
+        'Twist': [Twist()],
+    }
+    pose = messages['PoseStamped'][0]
+    pose.header.seq, pose.header.stamp.secs, pose.header.frame_id = 7, 1700000000, 'map'
+    pose.pose.position.x, pose.pose.orientation.w = 1.5, 1.0
+    messages['JointState'][1].header.frame_id = 'arm'
+    messages['Imu'][0].orientation_covariance = [float(i) for i in range(9)]
+    messages['Imu'][0].header.frame_id = 'imu_link'
+    messages['Twist'][0].linear.x, messages['Twist'][0].angular.z = 0.25, -3.5
+    result = {}
+    for name, instances in messages.items():
+        wire = []
+        for message in instances:
+            buffer = io.BytesIO()
+            message.serialize(buffer)
+            wire.append(buffer.getvalue())
+        result[name] = (instances[0]._type, instances[0]._md5sum, wire)
+    return result
+
+
+class NodeHealth:
+    """getPid answered, threads and resident memory of the node's process."""
+
+    def __init__(self, board):
+        self.board = board
+        self.readings = []  # (seconds since start, threads, resident bytes)
+        self.start = time.monotonic()
+
+    def check(self):
+        """Reads the figures; returns an error text or None."""
+        pid = self.board.process.popen.pid
+        if not self.board.process.alive():
+            return 'the node exited with status %s' % self.board.process.popen.returncode
+        try:
+            threads = len(os.listdir('/proc/%d/task' % pid))
+            with open('/proc/%d/status' % pid) as status:
+                resident = int(re.search(r'^VmRSS:\s+(\d+) kB', status.read(), re.M).group(1))
+        except (OSError, AttributeError):
+            return 'the node exited'
+        self.readings.append((time.monotonic() - self.start, threads, resident * 1024))
+        try:
+            code, _, _ = slave_proxy(self.board, ANSWER_TIMEOUT).getPid('/network_fuzz')
+        except (OSError, xmlrpc.client.Error) as error:
+            return 'the node did not answer getPid within %.0f s: %s' % (ANSWER_TIMEOUT, error)
+        return None if code == 1 else 'getPid answered %r' % code
+
+    def bounded(self):
+        """An error text if threads grew or memory grew past the limit
+        after the first quarter of the run."""
+        if len(self.readings) < 2:
+            return None
+        first_threads = self.readings[0][1]
+        if max(threads for _, threads, _ in self.readings) > first_threads:
+            return 'the node\'s threads grew from %d to %d' % (
+                first_threads, max(t for _, t, _ in self.readings))
+        settled = self.readings[len(self.readings) // 4][2]
+        growth = self.readings[-1][2] - settled
+        if growth > MEMORY_GROWTH_LIMIT:
+            return 'the node\'s resident memory grew by %d KiB after the first quarter' % (
+                growth // 1024)
+        return None
+
+
+class _TimedTransport(xmlrpc.client.Transport):
+    def __init__(self, timeout):
+        super().__init__()
+        self._timeout = timeout
+
+    def make_connection(self, host):
+        connection = super().make_connection(host)
+        connection.timeout = self._timeout
+        return connection
+
+
+def slave_proxy(board, timeout):
+    return xmlrpc.client.ServerProxy(board.slave_uri, transport=_TimedTransport(timeout))
+
+
+# --- mutation ---------------------------------------------------------------
+
+class Mutator:
+    """Byte-level mutations in the manner of libFuzzer's, from one seeded
+    random generator, so a run is repeated by its seed."""
+
+    def __init__(self, rng):
+        self.rng = rng
+
+    def mutate(self, data, tokens=()):
+        data = bytearray(data)
+        for _ in range(self.rng.randint(1, 4)):
+            data = self.rng.choice(self._operations)(self, data, tokens)
+        return bytes(data)
+
+    def _position(self, data):
+        return self.rng.randint(0, len(data))
+
+    def _flip_bit(self, data, _):
+        if data:
+            data[self.rng.randrange(len(data))] ^= 1 << self.rng.randrange(8)
+        return data
+
+    def _interesting_byte(self, data, _):
+        if data:
+            data[self.rng.randrange(len(data))] = self.rng.choice([0, 0x7f, 0x80, 0xff, 0x3c,
+                                                                   0x3e, 0x3d, 0x0a])
+        return data
+
+    def _interesting_word(self, data, _):
+        position = self._position(data)
+        word = self.rng.choice(INTERESTING_WORDS + [len(data), len(data) - 4, len(data) + 1])
+        data[position:position + 4] = struct.pack('<I', word & 0xffffffff)
+        return data
+
+    def _insert_random(self, data, _):
+        position = self._position(data)
+        data[position:position] = bytes(self.rng.randrange(256)
+                                        for _ in range(self.rng.randint(1, 32)))
+        return data
+
+    def _insert_token(self, data, tokens):
+        if tokens:
+            position = self._position(data)
+            data[position:position] = self.rng.choice(tokens)
+        return data
+
+    def _delete(self, data, _):
+        start = self._position(data)
+        del data[start:start + self.rng.randint(1, 64)]
+        return data
+
+    def _repeat(self, data, _):
+        start = self._position(data)
+        piece = data[start:start + self.rng.randint(1, 64)]
+        data[start:start] = piece * self.rng.randint(1, 200)
+        return data
+
+    def _truncate(self, data, _):
+        return data[:self._position(data)]
+
+    def _long_run(self, data, _):
+        position = self._position(data)
+        data[position:position] = bytes([self.rng.choice(b'A<>=\x00\xff')]) * self.rng.choice(
+            [255, 256, 511, 512, 513, 1023, 1024, 1025, 3000, 70000])
+        return data
+
+    _operations = [_flip_bit, _interesting_byte, _interesting_word, _insert_random,
+                   _insert_token, _delete, _repeat, _truncate, _long_run]
+
+
+def http_post(body, host, content_length=None):
+    length = len(body) if content_length is None else content_length
+    return ('POST /RPC2 HTTP/1.1\r\nHost: %s\r\nUser-Agent: network_fuzz\r\n'
+            'Content-Type: text/xml\r\nContent-Length: %d\r\n\r\n' % (host, length)).encode() + body
+
+
+def http_answer(body):
+    return ('HTTP/1.0 200 OK\r\nServer: network_fuzz\r\nContent-Type: text/xml\r\n'
+            'Content-Length: %d\r\n\r\n' % len(body)).encode() + body
+
+
+def exchange(address, data, timeout=PEER_TIMEOUT):
+    """Connects, sends data, reads what comes within timeout, closes."""
+    try:
+        with socket.create_connection(address, timeout=timeout) as connection:
+            connection.sendall(data)
+            connection.shutdown(socket.SHUT_WR)
+            while connection.recv(65536):
+                pass
+    except OSError:
+        pass
+
+
+# --- the three ways in --------------------------------------------------------
+
+class Fuzzer:
+    """The fuzzing peers of one node; each method sends one input and
+    returns what it sent, for the record of the last inputs."""
+
+    def __init__(self, board, samples_by_name, rng):
+        self.board, self.samples, self.rng = board, samples_by_name, rng
+        self.mutator = Mutator(rng)
+        self.slave_address = (BOARD_IP, board.slave_port)
+        self.publisher_address = (BOARD_IP, board.publisher_port)
+        self.names = list(TYPES)
+        self.xml_tokens = [b'<value>', b'</value>', b'<string>', b'<array><data>', b'</data>',
+                           b'<i4>', b'</i4>', b'<methodName>', b'</param>', b'&amp;', b'http://',
+                           b'TCPROS', b'/src/String', b':', b'\r\n\r\n', b'Content-Length: ']
+        self.header_tokens = [b'callerid=', b'topic=', b'md5sum=', b'type=', b'md5sum=*',
+                              b'message_definition=', b'latching=1', b'tcp_nodelay=1', b'=']
+
+    def _name(self):
+        return self.rng.choice(self.names)
+
+    def slave_call(self):
+        name = self._name()
+        method = self.rng.choice(SLAVE_METHODS)
+        topic = self.rng.choice(['/src/', '/back/']) + name
+        params = {
+            'requestTopic': ('/fuzz', topic, [['TCPROS']]),
+            'publisherUpdate': ('/master', topic, ['http://%s:%d/' % (
+                PEER_IP, self.rng.choice([1, self.board.slave_port, 65535]))]),
+            'paramUpdate': ('/fuzz', '/param', 1),
+            'shutdown': ('/fuzz', 'fuzzing'),
+        }.get(method, ('/fuzz',))
+        body = xmlrpc.client.dumps(params, method).encode()
+        kind = self.rng.random()
+        if kind < 0.45:
+            data = http_post(self.mutator.mutate(body, self.xml_tokens), '%s:%d' % self.slave_address)
+        elif kind < 0.6:
+            data = http_post(body, '%s:%d' % self.slave_address,
+                             self.rng.choice(INTERESTING_WORDS[:12]))
+        else:
+            data = self.mutator.mutate(http_post(body, '%s:%d' % self.slave_address),
+                                       self.xml_tokens)
+        exchange(self.slave_address, data)
+        return 'slave', data
+
+    def subscriber_header(self):
+        name = self._name()
+        datatype, md5sum, _ = self.samples[name]
+        fields = {'callerid': '/fuzz_subscriber', 'topic': '/back/' + name, 'type': datatype,
+                  'md5sum': self.rng.choice([md5sum, '*']), 'tcp_nodelay': '1'}
+        for key in list(fields):
+            if self.rng.random() < 0.1:
+                del fields[key]
+        header = encode_header(fields)
+        if self.rng.random() < 0.8:
+            header = self.mutator.mutate(header, self.header_tokens)
+        exchange(self.publisher_address, header)
+        return 'subscriber header', header
+
+    def hostile_publisher(self):
+        """A publisherUpdate naming a new port of ours; the node's
+        requestTopic there, its connection and the frames get mutated
+        answers."""
+        name = self._name()
+        datatype, md5sum, wire = self.samples[name]
+        topic = '/src/' + name
+        record = []
+        with socket.create_server((PEER_IP, 0)) as xmlrpc_listener, \
+                socket.create_server((PEER_IP, 0)) as tcpros_listener:
+            uri = 'http://%s:%d/' % (PEER_IP, xmlrpc_listener.getsockname()[1])
+            update = xmlrpc.client.dumps(('/master', topic, [uri]), 'publisherUpdate').encode()
+            exchange(self.slave_address, http_post(update, '%s:%d' % self.slave_address))
+            answer = xmlrpc.client.dumps(
+                ([1, 'ready', ['TCPROS', PEER_IP, tcpros_listener.getsockname()[1]]],),
+                methodresponse=True).encode()
+            if self.rng.random() < 0.3:
+                answer = self.mutator.mutate(answer, self.xml_tokens)
+            record.append(answer)
+            if not self._answer_request_topic(xmlrpc_listener, answer):
+                return 'hostile publisher', b'\n'.join(record)
+            tcpros_listener.settimeout(1.0)
+            try:
+                connection, _ = tcpros_listener.accept()
+            except OSError:
+                return 'hostile publisher', b'\n'.join(record)
+            with connection:
+                connection.settimeout(1.0)
+                try:
+                    read_header(connection)
+                except (OSError, EOFError, ValueError, struct.error):
+                    return 'hostile publisher', b'\n'.join(record)
+                header = encode_header({'callerid': '/fuzz_publisher', 'md5sum': md5sum,
+                                        'type': datatype, 'topic': topic})
+                if self.rng.random() < 0.3:
+                    header = self.mutator.mutate(header, self.header_tokens)
+                frames = header
+                for _ in range(self.rng.randint(1, 5)):
+                    body = self.rng.choice(wire)
+                    kind = self.rng.random()
+                    if kind < 0.6:  # a frame whose message lies about its lengths
+                        frames += frame(self.mutator.mutate(body))
+                    elif kind < 0.8:
+                        frames += self.mutator.mutate(frame(body))
+                    else:
+                        frames += frame(body)
+                record.append(frames)
+                try:
+                    connection.sendall(frames)
+                    time.sleep(self.rng.choice([0, 0.01, 0.05]))
+                except OSError:
+                    pass
+        return 'hostile publisher', b'\n'.join(record)
+
+    def _answer_request_topic(self, listener, answer):
+        listener.settimeout(1.0)
+        try:
+            connection, _ = listener.accept()
+        except OSError:
+            return False
+        with connection:
+            connection.settimeout(1.0)
+            request = b''
+            try:
+                while b'</methodCall>' not in request:
+                    chunk = connection.recv(4096)
+                    if not chunk:
+                        break
+                    request += chunk
+                connection.sendall(http_answer(answer))
+            except OSError:
+                return False
+        return True
+
+    def run_one(self):
+        return self.rng.choice([self.slave_call, self.subscriber_header,
+                                self.hostile_publisher])()
+
+
+# --- the check afterwards ---------------------------------------------------
+
+def relayed_byte_exact(graph, board, samples_by_name):
+    """Each sample of each type through the node: [(name, error text)] of
+    those that did not come back as they went."""
+    failures = []
+    for name, (datatype, md5sum, wire) in samples_by_name.items():
+        try:
+            back = RawSubscriber(board.slave_uri, '/back/' + name, datatype, md5sum, timeout=10)
+        except (AssertionError, OSError, EOFError) as error:
+            failures.append((name, 'no subscription to /back/%s: %s' % (name, error)))
+            continue
+        with HostilePublisher(graph, '/network_fuzz_check_' + name.lower(), '/src/' + name,
+                              datatype) as publisher:
+            try:
+                connection, _ = publisher.accept(timeout=10)
+                connection.sendall(encode_header({'callerid': publisher.node_name,
+                                                  'md5sum': md5sum, 'type': datatype,
+                                                  'topic': publisher.topic}))
+                back.connection.settimeout(10)
+                for index, sample in enumerate(wire):
+                    connection.sendall(frame(sample))
+                    body = back.next_body()
+                    if body != sample:
+                        failures.append((name, 'sample %d came back as %s, not %s' % (
+                            index, body.hex(), sample.hex())))
+                        break
+                connection.close()
+            except (OSError, EOFError) as error:
+                failures.append((name, 'not relayed: %s' % error))
+        back.close()
+    return failures
+
+
+class Drain:
+    """A subscriber on every back/<Type>, reading whatever the node relays
+    while it is fuzzed, so the relay's publish path runs too."""
+
+    def __init__(self, board, samples_by_name):
+        self.connections = []
+        for name, (datatype, md5sum, _) in samples_by_name.items():
+            subscriber = RawSubscriber(board.slave_uri, '/back/' + name, datatype, md5sum)
+            subscriber.connection.settimeout(None)
+            self.connections.append(subscriber.connection)
+        self.received = 0
+        self.thread = threading.Thread(target=self._read, daemon=True)
+        self.thread.start()
+
+    def _read(self):
+        selector = selectors.DefaultSelector()
+        for connection in self.connections:
+            selector.register(connection, selectors.EVENT_READ)
+        while selector.get_map():
+            for key, _ in selector.select(1.0):
+                try:
+                    data = key.fileobj.recv(65536)
+                except OSError:
+                    data = b''
+                if not data:
+                    selector.unregister(key.fileobj)
+                self.received += len(data)
+
+    def close(self):
+        for connection in self.connections:
+            try:
+                connection.shutdown(socket.SHUT_RDWR)
+            except OSError:
+                pass
+            connection.close()
+
+
+# --- the run ------------------------------------------------------------------
+
+def fuzz(program, seconds, max_inputs, seed, scratch):
+    """Returns (figures, [failure texts])."""
+    samples_by_name = samples()
+    rng = random.Random(seed)
+    failures, counts, last_inputs = [], {}, []
+    os.environ.update(SANITIZER_OPTIONS)
+    with RosGraph() as graph:
+        board = Board(graph, program, scratch, runner=[])
+        board.process.wait_for('relay ready', timeout=30)
+        drain = Drain(board, samples_by_name)
+        health = NodeHealth(board)
+        fuzzer = Fuzzer(board, samples_by_name, rng)
+        error = health.check()
+        start = time.monotonic()
+        next_check = start + HEALTH_PERIOD
+        inputs = 0
+        while error is None and time.monotonic() - start < seconds and inputs < max_inputs:
+            kind, data = fuzzer.run_one()
+            inputs += 1
+            counts[kind] = counts.get(kind, 0) + 1
+            last_inputs = (last_inputs + [(kind, data)])[-20:]
+            if SANITIZER_REPORT.search(board.process.output()[-20000:]):
+                error = 'a sanitizer report'
+            elif time.monotonic() >= next_check:
+                error = health.check()
+                next_check = time.monotonic() + HEALTH_PERIOD
+        minutes = (time.monotonic() - start) / 60
+        error = error or health.check()
+        if error:
+            failures.append('after %d inputs: %s' % (inputs, error))
+        else:
+            failures += ['%s: %s' % item for item in relayed_byte_exact(graph, board,
+                                                                         samples_by_name)]
+            bound = health.bounded()
+            failures += [bound] if bound else []
+        drain.close()
+        board.process.stop()
+        output = board.process.output()
+    reports = [line for line in output.splitlines() if SANITIZER_REPORT.search(line)]
+    if reports and not any('sanitizer' in failure for failure in failures):
+        failures.append('a sanitizer report')
+    if failures:
+        with open(os.path.join(scratch, 'last_inputs.json'), 'w') as stream:
+            json.dump([(kind, base64.b64encode(data).decode()) for kind, data in last_inputs],
+                      stream, indent=1)
+        with open(os.path.join(scratch, 'node.log'), 'w') as stream:
+            stream.write(output)
+    readings = health.readings
+    figures = {
+        'seed': seed, 'inputs': inputs, 'minutes': minutes, 'counts': counts,
+        'reports': len(reports), 'report_lines': reports[:5],
+        'threads': (readings[0][1], max(r[1] for r in readings)) if readings else None,
+        'resident_kib': [r[2] // 1024 for r in (readings[0], readings[len(readings) // 4],
+                                                 readings[-1])] if readings else None,
+        'relayed_bytes': drain.received,
+    }
+    return figures, failures
+
+
+def print_table(figures, failures, hardened):
+    counts = figures['counts']
+    print('\nNetwork fuzzing of the mROS v1 library %s (PC target, native, ASan+UBSan), seed %d'
+          % ('hardened' if hardened else 'as it is', figures['seed']))
+    print('| inputs | minutes | slave calls | subscriber headers | hostile publishers | '
+          'reports | threads (start/max) | resident KiB (start/quarter/end) | relayed bytes |')
+    print('|---:|---:|---:|---:|---:|---:|---|---|---:|')
+    threads = figures['threads'] or (0, 0)
+    resident = figures['resident_kib'] or (0, 0, 0)
+    print('| %d | %.1f | %d | %d | %d | %d | %d/%d | %d/%d/%d | %d |' % (
+        figures['inputs'], figures['minutes'], counts.get('slave', 0),
+        counts.get('subscriber header', 0), counts.get('hostile publisher', 0),
+        figures['reports'], threads[0], threads[1], resident[0], resident[1], resident[2],
+        figures['relayed_bytes']))
+    for line in figures['report_lines']:
+        print('report: ' + line)
+    for failure in failures:
+        print('FAIL: ' + failure)
+    print('every type relayed byte-exact afterwards' if not failures else '')
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    parser.add_argument('--seconds', type=float, default=600, help='how long to fuzz')
+    parser.add_argument('--inputs', type=int, default=10 ** 9, help='at most this many inputs')
+    parser.add_argument('--seed', type=int, default=None, help='repeat a run (default: random)')
+    parser.add_argument('--as-it-is', action='store_true',
+                        help='fuzz the library unpatched (it fails within a few hundred inputs)')
+    parser.add_argument('--build-dir', help='keep the build and a failure\'s record here')
+    args = parser.parse_args()
+    mros_root = os.environ.get('MROS_V1_ROOT', '')
+    if not os.path.isfile(os.path.join(mros_root, 'mros-lib', 'Makefile.m')):
+        print("no mROS v1 checkout at '%s': set MROS_V1_ROOT" % mros_root, file=sys.stderr)
+        return 2
+    seed = args.seed if args.seed is not None else random.randrange(2 ** 31)
+    build_root = os.path.abspath(args.build_dir or tempfile.mkdtemp(prefix='network_fuzz_'))
+    os.makedirs(build_root, exist_ok=True)
+    program = build(mros_root, build_root, not args.as_it_is)
+    figures, failures = fuzz(program, args.seconds, args.inputs, seed, build_root)
+    print_table(figures, failures, not args.as_it_is)
+    if failures:
+        print('the node\'s log and the last inputs: %s' % build_root)
+        return 1
+    if not args.build_dir:
+        shutil.rmtree(build_root)
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
