@@ -53,12 +53,14 @@ import threading
 import time
 import xmlrpc.client
 
-from colcon_mros.mros_v1.pc_target.ros_graph import BOARD_IP, PEER_IP, Board, RosGraph
-from colcon_mros.mros_v1.pc_target.tcpros_peer import (
-    HostilePublisher, RawSubscriber, encode_header, frame, read_header)
-
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, REPO)  # this checkout's genmros, which also builds the app
+
+from colcon_mros.mros_v1.pc_target.ros_graph import (  # noqa: E402
+    BOARD_IP, PEER_IP, Board, RosGraph)
+from colcon_mros.mros_v1.pc_target.tcpros_peer import (  # noqa: E402
+    HostilePublisher, RawSubscriber, encode_header, frame, read_header)
 RELAY_APP = os.path.join(HERE, 'relay_app')
 # The relay's types, by the name of their topics.
 TYPES = {'String': 'std_msgs/String', 'JointState': 'sensor_msgs/JointState',
@@ -174,6 +176,15 @@ class NodeHealth:
             return 'the node\'s resident memory grew by %d KiB after the first quarter' % (
                 growth // 1024)
         return None
+
+
+def thread_stacks(pid):
+    """Every thread's backtrace of a node that stopped answering, where gdb
+    is installed, for the record."""
+    if not shutil.which('gdb'):
+        return ''
+    return subprocess.run(['gdb', '-p', str(pid), '-batch', '-ex', 'thread apply all bt'],
+                          capture_output=True, text=True, timeout=120).stdout
 
 
 class _TimedTransport(xmlrpc.client.Transport):
@@ -500,7 +511,7 @@ def fuzz(program, seconds, max_inputs, seed, scratch):
     """Returns (figures, [failure texts])."""
     samples_by_name = samples()
     rng = random.Random(seed)
-    failures, counts, last_inputs = [], {}, []
+    failures, counts, last_inputs, stacks = [], {}, [], ''
     os.environ.update(SANITIZER_OPTIONS)
     with RosGraph() as graph:
         board = Board(graph, program, scratch, runner=[])
@@ -524,14 +535,20 @@ def fuzz(program, seconds, max_inputs, seed, scratch):
                 next_check = time.monotonic() + HEALTH_PERIOD
         minutes = (time.monotonic() - start) / 60
         error = error or health.check()
+        if error and board.process.alive():
+            stacks = thread_stacks(board.process.popen.pid)
+        # The drain's five subscriptions and the relay's own five fill the
+        # sample configuration's ten subscription connections.
+        drain.close()
         if error:
             failures.append('after %d inputs: %s' % (inputs, error))
         else:
             failures += ['%s: %s' % item for item in relayed_byte_exact(graph, board,
                                                                          samples_by_name)]
+            if failures:
+                stacks = subprocess.run(['ss', '-tanp'], capture_output=True, text=True).stdout
             bound = health.bounded()
             failures += [bound] if bound else []
-        drain.close()
         board.process.stop()
         output = board.process.output()
     reports = [line for line in output.splitlines() if SANITIZER_REPORT.search(line)]
@@ -542,7 +559,7 @@ def fuzz(program, seconds, max_inputs, seed, scratch):
             json.dump([(kind, base64.b64encode(data).decode()) for kind, data in last_inputs],
                       stream, indent=1)
         with open(os.path.join(scratch, 'node.log'), 'w') as stream:
-            stream.write(output)
+            stream.write(output + '\n' + stacks)
     readings = health.readings
     figures = {
         'seed': seed, 'inputs': inputs, 'minutes': minutes, 'counts': counts,

@@ -60,10 +60,22 @@ int lwip_accept(int s, struct sockaddr *addr, socklen_t *addrlen) {
 }
 
 /* The slave and publisher ports are fixed; a PC restarts the node far more
- * often than a board, and a port in TIME_WAIT must not stop it. */
+ * often than a board, and a port in TIME_WAIT must not stop it. The board has
+ * one address: a port bound to any address takes connections to the node's
+ * address only, as on the board, where 127.0.0.1 never reaches it (else a
+ * publisherUpdate naming 127.0.0.1 and its own slave port would make the
+ * slave call itself, which no board can). */
 int lwip_bind(int s, const struct sockaddr *name, socklen_t namelen) {
   int reuse = 1;
   setsockopt(s, SOL_SOCKET, SO_REUSEADDR, &reuse, sizeof reuse);
+  struct sockaddr_in node;
+  if (name->sa_family == AF_INET && namelen >= sizeof node) {
+    memcpy(&node, name, sizeof node);
+    if (node.sin_addr.s_addr == htonl(INADDR_ANY)) {
+      inet_pton(AF_INET, pc_node_address(), &node.sin_addr);
+      HOST_CALL(int, bind(s, reinterpret_cast<struct sockaddr *>(&node), sizeof node));
+    }
+  }
   HOST_CALL(int, bind(s, name, namelen));
 }
 
