@@ -450,6 +450,12 @@ def relayed_byte_exact(graph, board, samples_by_name):
                               datatype) as publisher:
             try:
                 connection, _ = publisher.accept(timeout=10)
+            except (OSError, EOFError) as error:
+                failures.append((name, 'the node did not connect to a new publisher of /src/%s: '
+                                 '%s' % (name, error)))
+                back.close()
+                continue
+            try:
                 connection.sendall(encode_header({'callerid': publisher.node_name,
                                                   'md5sum': md5sum, 'type': datatype,
                                                   'topic': publisher.topic}))
@@ -463,7 +469,7 @@ def relayed_byte_exact(graph, board, samples_by_name):
                         break
                 connection.close()
             except (OSError, EOFError) as error:
-                failures.append((name, 'not relayed: %s' % error))
+                failures.append((name, 'not relayed back: %s' % error))
         back.close()
     return failures
 
