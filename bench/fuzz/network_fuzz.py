@@ -41,6 +41,7 @@ import io
 import json
 import os
 import random
+import select
 import selectors
 import re
 import shutil
@@ -77,6 +78,15 @@ MEMORY_GROWTH_LIMIT = 16 * 1024 * 1024
 HEALTH_PERIOD = 5.0  # seconds between getPid, thread and memory readings
 ANSWER_TIMEOUT = 10.0  # for the node's slave to answer getPid
 PEER_TIMEOUT = 0.2  # how long a fuzzing peer waits for the node
+RELAY_TIMEOUT = 10  # for each sample to come back in the check afterwards
+# The library reads one frame of each publisher connection per cycle
+# (MROS_LOOP_RATE, 100 ms): a dead publisher's backlog keeps the topic's
+# one-message queue busy until it is read. A hostile publisher sends at
+# most this much, header and frames, about what a small lwIP TCP window
+# holds on a board; the check waits until the node has read it all.
+HOSTILE_STREAM_LIMIT = 4096
+SETTLE_TIMEOUT = 120
+RESEND_PERIOD = 0.3
 SANITIZER_REPORT = re.compile(r'runtime error:|ERROR: AddressSanitizer|ERROR: LeakSanitizer')
 INTERESTING_WORDS = [0, 1, 3, 4, 0x7f, 0x80, 0xff, 0x100, 0x1ff, 0x200, 0x3ff, 0x400, 0xffff,
                      0x10000, 0x7fffffff, 0x80000000, 0xfffffffe, 0xffffffff]
@@ -176,6 +186,21 @@ class NodeHealth:
             return 'the node\'s resident memory grew by %d KiB after the first quarter' % (
                 growth // 1024)
         return None
+
+
+def unread_bytes(pid):
+    """Bytes waiting in the receive queues of the process' TCP sockets."""
+    listing = subprocess.run(['ss', '-tanpH'], capture_output=True, text=True).stdout
+    return sum(int(line.split()[1]) for line in listing.splitlines()
+               if 'pid=%d,' % pid in line and not line.startswith('LISTEN'))
+
+
+def settle(pid):
+    """Waits until the node has read what its peers sent; the seconds it took."""
+    start = time.monotonic()
+    while unread_bytes(pid) and time.monotonic() - start < SETTLE_TIMEOUT:
+        time.sleep(0.5)
+    return time.monotonic() - start
 
 
 def thread_stacks(pid):
@@ -401,6 +426,7 @@ class Fuzzer:
                         frames += self.mutator.mutate(frame(body))
                     else:
                         frames += frame(body)
+                frames = frames[:HOSTILE_STREAM_LIMIT]
                 record.append(frames)
                 try:
                     connection.sendall(frames)
@@ -438,7 +464,9 @@ class Fuzzer:
 
 def relayed_byte_exact(graph, board, samples_by_name):
     """Each sample of each type through the node: [(name, error text)] of
-    those that did not come back as they went."""
+    those that did not come back as they went. A sample is sent again every
+    RESEND_PERIOD until it is back: the relay's queues hold one message and
+    drop the older one when another comes in."""
     failures = []
     for name, (datatype, md5sum, wire) in samples_by_name.items():
         try:
@@ -450,28 +478,37 @@ def relayed_byte_exact(graph, board, samples_by_name):
                               datatype) as publisher:
             try:
                 connection, _ = publisher.accept(timeout=10)
-            except (OSError, EOFError) as error:
-                failures.append((name, 'the node did not connect to a new publisher of /src/%s: '
-                                 '%s' % (name, error)))
-                back.close()
-                continue
-            try:
                 connection.sendall(encode_header({'callerid': publisher.node_name,
                                                   'md5sum': md5sum, 'type': datatype,
                                                   'topic': publisher.topic}))
-                back.connection.settimeout(10)
-                for index, sample in enumerate(wire):
-                    connection.sendall(frame(sample))
-                    body = back.next_body()
-                    if body != sample:
-                        failures.append((name, 'sample %d came back as %s, not %s' % (
-                            index, body.hex(), sample.hex())))
-                        break
+                failure = _relay_each(connection, back, wire)
                 connection.close()
             except (OSError, EOFError) as error:
-                failures.append((name, 'not relayed back: %s' % error))
+                failure = 'no connection from the node to a new publisher: %s' % error
         back.close()
+        if failure:
+            failures.append((name, failure))
     return failures
+
+
+def _relay_each(connection, back, wire):
+    """An error text, or None if every sample came back as it went."""
+    others = []
+    for index, sample in enumerate(wire):
+        deadline = time.monotonic() + RELAY_TIMEOUT
+        while True:
+            connection.sendall(frame(sample))
+            if select.select([back.connection], [], [], RESEND_PERIOD)[0]:
+                body = back.next_body()
+                if body == sample:
+                    break
+                # Else a message of the fuzzing still queued, or an earlier
+                # sample sent again.
+                others.append(body)
+            if time.monotonic() > deadline:
+                return 'sample %d did not come back within %d s; came back: %s' % (
+                    index, RELAY_TIMEOUT, ' '.join(body.hex() for body in others[-3:]))
+    return None
 
 
 class Drain:
@@ -517,7 +554,7 @@ def fuzz(program, seconds, max_inputs, seed, scratch):
     """Returns (figures, [failure texts])."""
     samples_by_name = samples()
     rng = random.Random(seed)
-    failures, counts, last_inputs, stacks = [], {}, [], ''
+    failures, counts, last_inputs, stacks, settle_seconds = [], {}, [], '', 0.0
     os.environ.update(SANITIZER_OPTIONS)
     with RosGraph() as graph:
         board = Board(graph, program, scratch, runner=[])
@@ -546,13 +583,15 @@ def fuzz(program, seconds, max_inputs, seed, scratch):
         # The drain's five subscriptions and the relay's own five fill the
         # sample configuration's ten subscription connections.
         drain.close()
+        settle_seconds = settle(board.process.popen.pid)
         if error:
             failures.append('after %d inputs: %s' % (inputs, error))
         else:
             failures += ['%s: %s' % item for item in relayed_byte_exact(graph, board,
                                                                          samples_by_name)]
             if failures:
-                stacks = subprocess.run(['ss', '-tanp'], capture_output=True, text=True).stdout
+                stacks = thread_stacks(board.process.popen.pid) + subprocess.run(
+                    ['ss', '-tanp'], capture_output=True, text=True).stdout
             bound = health.bounded()
             failures += [bound] if bound else []
         board.process.stop()
@@ -573,7 +612,7 @@ def fuzz(program, seconds, max_inputs, seed, scratch):
         'threads': (readings[0][1], max(r[1] for r in readings)) if readings else None,
         'resident_kib': [r[2] // 1024 for r in (readings[0], readings[len(readings) // 4],
                                                  readings[-1])] if readings else None,
-        'relayed_bytes': drain.received,
+        'relayed_bytes': drain.received, 'settle_seconds': settle_seconds,
     }
     return figures, failures
 
