@@ -37,13 +37,14 @@ are of a 10-minute run.
 
 import argparse
 import base64
+import collections
 import io
 import json
 import os
 import random
+import re
 import select
 import selectors
-import re
 import shutil
 import socket
 import struct
@@ -61,7 +62,8 @@ sys.path.insert(0, REPO)  # this checkout's genmros, which also builds the app
 from colcon_mros.mros_v1.pc_target.ros_graph import (  # noqa: E402
     BOARD_IP, PEER_IP, Board, RosGraph)
 from colcon_mros.mros_v1.pc_target.tcpros_peer import (  # noqa: E402
-    HostilePublisher, RawSubscriber, encode_header, frame, read_header)
+    HostilePublisher, RawSubscriber, TimedTransport, encode_header, frame, read_header)
+
 RELAY_APP = os.path.join(HERE, 'relay_app')
 # The relay's types, by the name of their topics.
 TYPES = {'String': 'std_msgs/String', 'JointState': 'sensor_msgs/JointState',
@@ -145,12 +147,16 @@ def samples():
     return result
 
 
+Reading = collections.namedtuple('Reading', 'seconds threads sockets resident')
+
+
 class NodeHealth:
-    """getPid answered, threads and resident memory of the node's process."""
+    """getPid answered; threads, sockets and resident memory of the node's
+    process, read every HEALTH_PERIOD."""
 
     def __init__(self, board):
         self.board = board
-        self.readings = []  # (seconds since start, threads, resident bytes)
+        self.readings = []
         self.start = time.monotonic()
 
     def check(self):
@@ -159,33 +165,47 @@ class NodeHealth:
         if not self.board.process.alive():
             return 'the node exited with status %s' % self.board.process.popen.returncode
         try:
-            threads = len(os.listdir('/proc/%d/task' % pid))
             with open('/proc/%d/status' % pid) as status:
                 resident = int(re.search(r'^VmRSS:\s+(\d+) kB', status.read(), re.M).group(1))
+            sockets = sum(os.readlink('/proc/%d/fd/%s' % (pid, fd)).startswith('socket:')
+                          for fd in os.listdir('/proc/%d/fd' % pid))
+            self.readings.append(Reading(time.monotonic() - self.start,
+                                         len(os.listdir('/proc/%d/task' % pid)), sockets,
+                                         resident * 1024))
         except (OSError, AttributeError):
             return 'the node exited'
-        self.readings.append((time.monotonic() - self.start, threads, resident * 1024))
+        proxy = xmlrpc.client.ServerProxy(self.board.slave_uri,
+                                          transport=TimedTransport(ANSWER_TIMEOUT))
         try:
-            code, _, _ = slave_proxy(self.board, ANSWER_TIMEOUT).getPid('/network_fuzz')
+            code, _, _ = proxy.getPid('/network_fuzz')
         except (OSError, xmlrpc.client.Error) as error:
             return 'the node did not answer getPid within %.0f s: %s' % (ANSWER_TIMEOUT, error)
         return None if code == 1 else 'getPid answered %r' % code
 
     def bounded(self):
-        """An error text if threads grew or memory grew past the limit
-        after the first quarter of the run."""
+        """An error text if the threads grew, or the memory grew past
+        MEMORY_GROWTH_LIMIT after the first quarter of the run."""
         if len(self.readings) < 2:
             return None
-        first_threads = self.readings[0][1]
-        if max(threads for _, threads, _ in self.readings) > first_threads:
-            return 'the node\'s threads grew from %d to %d' % (
-                first_threads, max(t for _, t, _ in self.readings))
-        settled = self.readings[len(self.readings) // 4][2]
-        growth = self.readings[-1][2] - settled
+        first, most = self.readings[0].threads, max(r.threads for r in self.readings)
+        if most > first:
+            return "the node's threads grew from %d to %d" % (first, most)
+        growth = self.readings[-1].resident - self.readings[len(self.readings) // 4].resident
         if growth > MEMORY_GROWTH_LIMIT:
-            return 'the node\'s resident memory grew by %d KiB after the first quarter' % (
+            return "the node's resident memory grew by %d KiB after the first quarter" % (
                 growth // 1024)
         return None
+
+    def figures(self):
+        """{threads: (start, most), sockets: (start, most, end), resident KiB: (start,
+        quarter, end)}."""
+        if not self.readings:
+            return {}
+        first, quarter, last = (self.readings[0], self.readings[len(self.readings) // 4],
+                                self.readings[-1])
+        return {'threads': (first.threads, max(r.threads for r in self.readings)),
+                'sockets': (first.sockets, max(r.sockets for r in self.readings), last.sockets),
+                'resident_kib': tuple(r.resident // 1024 for r in (first, quarter, last))}
 
 
 def unread_bytes(pid):
@@ -210,21 +230,6 @@ def thread_stacks(pid):
         return ''
     return subprocess.run(['gdb', '-p', str(pid), '-batch', '-ex', 'thread apply all bt'],
                           capture_output=True, text=True, timeout=120).stdout
-
-
-class _TimedTransport(xmlrpc.client.Transport):
-    def __init__(self, timeout):
-        super().__init__()
-        self._timeout = timeout
-
-    def make_connection(self, host):
-        connection = super().make_connection(host)
-        connection.timeout = self._timeout
-        return connection
-
-
-def slave_proxy(board, timeout):
-    return xmlrpc.client.ServerProxy(board.slave_uri, transport=_TimedTransport(timeout))
 
 
 # --- mutation ---------------------------------------------------------------
@@ -550,92 +555,105 @@ class Drain:
 
 # --- the run ------------------------------------------------------------------
 
+class Run:
+    """What one run did and found."""
+
+    def __init__(self, seed):
+        self.seed = seed
+        self.inputs = 0
+        self.counts = collections.Counter()  # inputs of each kind
+        self.last_inputs = collections.deque(maxlen=20)  # (kind, bytes)
+        self.minutes = 0.0
+        self.settle_seconds = 0.0
+        self.failures = []
+        self.reports = []  # the sanitizers' lines
+        self.relayed_bytes = 0
+        self.health = {}
+        self.record = ''  # gdb's stacks and the sockets, where the node failed
+
+
 def fuzz(program, seconds, max_inputs, seed, scratch):
-    """Returns (figures, [failure texts])."""
+    """Fuzzes the node for seconds or max_inputs inputs, then checks it;
+    returns the Run."""
     samples_by_name = samples()
-    rng = random.Random(seed)
-    failures, counts, last_inputs, stacks, settle_seconds = [], {}, [], '', 0.0
+    run = Run(seed)
     os.environ.update(SANITIZER_OPTIONS)
     with RosGraph() as graph:
         board = Board(graph, program, scratch, runner=[])
         board.process.wait_for('relay ready', timeout=30)
         drain = Drain(board, samples_by_name)
         health = NodeHealth(board)
-        fuzzer = Fuzzer(board, samples_by_name, rng)
-        error = health.check()
-        start = time.monotonic()
-        next_check = start + HEALTH_PERIOD
-        inputs = 0
-        while error is None and time.monotonic() - start < seconds and inputs < max_inputs:
-            kind, data = fuzzer.run_one()
-            inputs += 1
-            counts[kind] = counts.get(kind, 0) + 1
-            last_inputs = (last_inputs + [(kind, data)])[-20:]
-            if SANITIZER_REPORT.search(board.process.output()[-20000:]):
-                error = 'a sanitizer report'
-            elif time.monotonic() >= next_check:
-                error = health.check()
-                next_check = time.monotonic() + HEALTH_PERIOD
-        minutes = (time.monotonic() - start) / 60
-        error = error or health.check()
-        if error and board.process.alive():
-            stacks = thread_stacks(board.process.popen.pid)
+        error = _send_inputs(run, board, Fuzzer(board, samples_by_name, random.Random(seed)),
+                             health, seconds, max_inputs)
         # The drain's five subscriptions and the relay's own five fill the
         # sample configuration's ten subscription connections.
         drain.close()
-        settle_seconds = settle(board.process.popen.pid)
+        run.relayed_bytes = drain.received
         if error:
-            failures.append('after %d inputs: %s' % (inputs, error))
+            run.failures.append('after %d inputs: %s' % (run.inputs, error))
         else:
-            failures += ['%s: %s' % item for item in relayed_byte_exact(graph, board,
-                                                                         samples_by_name)]
-            if failures:
-                stacks = thread_stacks(board.process.popen.pid) + subprocess.run(
-                    ['ss', '-tanp'], capture_output=True, text=True).stdout
+            run.settle_seconds = settle(board.process.popen.pid)
+            run.failures += ['%s: %s' % item
+                             for item in relayed_byte_exact(graph, board, samples_by_name)]
             bound = health.bounded()
-            failures += [bound] if bound else []
+            run.failures += [bound] if bound else []
+        if run.failures and board.process.alive():
+            run.record = thread_stacks(board.process.popen.pid) + subprocess.run(
+                ['ss', '-tanp'], capture_output=True, text=True).stdout
         board.process.stop()
         output = board.process.output()
-    reports = [line for line in output.splitlines() if SANITIZER_REPORT.search(line)]
-    if reports and not any('sanitizer' in failure for failure in failures):
-        failures.append('a sanitizer report')
-    if failures:
+    run.health = health.figures()
+    run.reports = [line for line in output.splitlines() if SANITIZER_REPORT.search(line)]
+    if run.reports and not any('sanitizer' in failure for failure in run.failures):
+        run.failures.append('a sanitizer report')
+    if run.failures:
         with open(os.path.join(scratch, 'last_inputs.json'), 'w') as stream:
-            json.dump([(kind, base64.b64encode(data).decode()) for kind, data in last_inputs],
+            json.dump([(kind, base64.b64encode(data).decode()) for kind, data in run.last_inputs],
                       stream, indent=1)
         with open(os.path.join(scratch, 'node.log'), 'w') as stream:
-            stream.write(output + '\n' + stacks)
-    readings = health.readings
-    figures = {
-        'seed': seed, 'inputs': inputs, 'minutes': minutes, 'counts': counts,
-        'reports': len(reports), 'report_lines': reports[:5],
-        'threads': (readings[0][1], max(r[1] for r in readings)) if readings else None,
-        'resident_kib': [r[2] // 1024 for r in (readings[0], readings[len(readings) // 4],
-                                                 readings[-1])] if readings else None,
-        'relayed_bytes': drain.received, 'settle_seconds': settle_seconds,
-    }
-    return figures, failures
+            stream.write(output + '\n' + run.record)
+    return run
 
 
-def print_table(figures, failures, hardened):
-    counts = figures['counts']
+def _send_inputs(run, board, fuzzer, health, seconds, max_inputs):
+    """The fuzzing itself; an error text where the node failed, else None."""
+    error = health.check()
+    start = time.monotonic()
+    next_check = start + HEALTH_PERIOD
+    while error is None and time.monotonic() - start < seconds and run.inputs < max_inputs:
+        kind, data = fuzzer.run_one()
+        run.inputs += 1
+        run.counts[kind] += 1
+        run.last_inputs.append((kind, data))
+        if SANITIZER_REPORT.search(board.process.output()[-20000:]):
+            error = 'a sanitizer report'
+        elif time.monotonic() >= next_check:
+            error = health.check()
+            next_check = time.monotonic() + HEALTH_PERIOD
+    run.minutes = (time.monotonic() - start) / 60
+    return error or health.check()
+
+
+def print_table(run, hardened):
     print('\nNetwork fuzzing of the mROS v1 library %s (PC target, native, ASan+UBSan), seed %d'
-          % ('hardened' if hardened else 'as it is', figures['seed']))
-    print('| inputs | minutes | slave calls | subscriber headers | hostile publishers | '
-          'reports | threads (start/max) | resident KiB (start/quarter/end) | relayed bytes |')
-    print('|---:|---:|---:|---:|---:|---:|---|---|---:|')
-    threads = figures['threads'] or (0, 0)
-    resident = figures['resident_kib'] or (0, 0, 0)
-    print('| %d | %.1f | %d | %d | %d | %d | %d/%d | %d/%d/%d | %d |' % (
-        figures['inputs'], figures['minutes'], counts.get('slave', 0),
-        counts.get('subscriber header', 0), counts.get('hostile publisher', 0),
-        figures['reports'], threads[0], threads[1], resident[0], resident[1], resident[2],
-        figures['relayed_bytes']))
-    for line in figures['report_lines']:
+          % ('hardened' if hardened else 'as it is', run.seed))
+    print('| inputs | minutes | slave calls | subscriber headers | hostile publishers | reports '
+          '| threads (start/most) | sockets (start/most/end) | resident KiB (start/quarter/end) '
+          '| relayed bytes | settled in |')
+    print('|---:|---:|---:|---:|---:|---:|---|---|---|---:|---:|')
+    print('| %d | %.1f | %d | %d | %d | %d | %s | %s | %s | %d | %.1f s |' % (
+        run.inputs, run.minutes, run.counts['slave'], run.counts['subscriber header'],
+        run.counts['hostile publisher'], len(run.reports),
+        '/'.join(map(str, run.health.get('threads', ()))),
+        '/'.join(map(str, run.health.get('sockets', ()))),
+        '/'.join(map(str, run.health.get('resident_kib', ()))), run.relayed_bytes,
+        run.settle_seconds))
+    for line in run.reports[:5]:
         print('report: ' + line)
-    for failure in failures:
+    for failure in run.failures:
         print('FAIL: ' + failure)
-    print('every type relayed byte-exact afterwards' if not failures else '')
+    if not run.failures:
+        print('every type relayed byte-exact afterwards')
 
 
 def main():
@@ -655,9 +673,9 @@ def main():
     build_root = os.path.abspath(args.build_dir or tempfile.mkdtemp(prefix='network_fuzz_'))
     os.makedirs(build_root, exist_ok=True)
     program = build(mros_root, build_root, not args.as_it_is)
-    figures, failures = fuzz(program, args.seconds, args.inputs, seed, build_root)
-    print_table(figures, failures, not args.as_it_is)
-    if failures:
+    run = fuzz(program, args.seconds, args.inputs, seed, build_root)
+    print_table(run, not args.as_it_is)
+    if run.failures:
         print('the node\'s log and the last inputs: %s' % build_root)
         return 1
     if not args.build_dir:

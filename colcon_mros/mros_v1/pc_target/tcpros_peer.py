@@ -1,7 +1,8 @@
-"""A raw TCPROS peer for the robustness tests: it speaks the wire protocol
-byte by byte, so a test can send what real ROS nodes never send (truncated
-bodies, oversized lengths, broken headers, a foreign MD5 sum) to an mROS
-node and check that the node closes that connection and keeps working.
+"""A raw TCPROS peer for the robustness tests and the network fuzzer: it
+speaks the wire protocol byte by byte, so a test can send what real ROS
+nodes never send (truncated bodies, oversized lengths, broken headers, a
+foreign MD5 sum) to an mROS node and check that the node closes that
+connection and keeps working.
 HostilePublisher registers at the real master like any ROS publisher;
 RawSubscriber asks a node's slave API for a topic and keeps the bytes. Neither
 sends a message_definition (a subscriber need not, and the mROS v1 library
@@ -106,7 +107,7 @@ class HostilePublisher:
         return connection, read_header(connection)
 
 
-class _TimedTransport(xmlrpc.client.Transport):
+class TimedTransport(xmlrpc.client.Transport):
     """XML-RPC over HTTP that gives up after timeout seconds: a slave whose
     socket still accepts but whose task no longer serves must not hang a test."""
 
@@ -131,7 +132,7 @@ class RawSubscriber:
         while True:
             try:
                 slave = xmlrpc.client.ServerProxy(
-                    slave_uri, transport=_TimedTransport(max(deadline - time.monotonic(), 0.5)))
+                    slave_uri, transport=TimedTransport(max(deadline - time.monotonic(), 0.5)))
                 code, message, protocol = slave.requestTopic('/raw_subscriber', topic,
                                                              [['TCPROS']])
                 if code == 1:

@@ -466,6 +466,86 @@ def test_limit_a_connection_header_without_a_topic_crashes_the_library(ros_side,
         ('mros_topic_cimpl.c', 95, 'SEGV')}
 
 
+def test_hardened_a_header_whose_field_runs_past_it_or_that_names_no_topic_is_refused(
+        ros_side, hardened_sanitized, tmp_path):
+    # The case above and a header without a topic field, with the patch set
+    # (validate-subscriber-header-fields): each refused with its line, its
+    # socket closed, the node serving.
+    with RosGraph(ros_side) as graph:
+        board = _sanitized_string_pubsub(graph, hardened_sanitized, str(tmp_path))
+        pid = board.process.popen.pid
+        before = (_threads(pid), _open_sockets(pid))
+        _send_and_vanish(board.publisher_port, struct.pack('<I', 8) + struct.pack('<I', 100)
+                         + b'abcd')
+        board.process.wait_for("refused a subscriber's connection header: a field runs past "
+                               "its end or has no '='", timeout=DELIVERY_TIMEOUT)
+        _send_and_vanish(board.publisher_port, encode_header({'callerid': '/no_topic',
+                                                              'md5sum': '*'}))
+        board.process.wait_for("refused a subscriber's connection header without a topic",
+                               timeout=DELIVERY_TIMEOUT)
+        assert _held_until(pid, before) == before
+        RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5).close()
+        assert board.process.alive(), board.process.output()
+    assert sanitizer_reports(board.process.output()) == set()
+
+
+# A frame length that wraps when the library adds its 4-byte length field,
+# and more bytes than the library's first memory pool holds.
+WRAPPING_FRAME = struct.pack('<I', 0xfffffffe) + b'\xab' * 6000
+
+
+def _blue_then(graph, board, data):
+    """A publisher of /test_string whose good frames reach the app, then data."""
+    with HostilePublisher(graph, '/hostile', '/test_string', 'std_msgs/String') as hostile:
+        connections = serve_blue(hostile, board, {},
+                                 lambda: 'I heard [blue]' in board.process.output())
+        for connection in connections:
+            connection.sendall(data)
+        time.sleep(2)
+        for connection in connections:
+            connection.close()
+
+
+def test_limit_a_frame_length_that_wraps_overruns_a_memory_pool(ros_side, sanitized, tmp_path):
+    # mros_protocol_topic_data_receive allocates len + 4 bytes: 2, a block
+    # of the first pool, and receives the frame into it.
+    with RosGraph(ros_side) as graph:
+        board = _sanitized_string_pubsub(graph, sanitized, str(tmp_path))
+        _blue_then(graph, board, WRAPPING_FRAME)
+        assert board.process.popen.wait(timeout=DELIVERY_TIMEOUT) != 0
+    output = board.process.output()
+    assert "to the right of global variable 'ros_outer_topic_publisher_mempool1_memory'" \
+        in output, output
+    assert {(place, kind) for place, _, kind in sanitizer_reports(output)} == {
+        ('mros_usr_config.c', 'global-buffer-overflow')}
+
+
+def test_hardened_a_frame_length_that_wraps_is_refused(ros_side, hardened_sanitized, tmp_path):
+    # The pair of the test above (bounded-publisher-frames).
+    with RosGraph(ros_side) as graph:
+        board = _sanitized_string_pubsub(graph, hardened_sanitized, str(tmp_path))
+        _blue_then(graph, board, WRAPPING_FRAME)
+        board.process.wait_for(
+            r'refused a frame of 4294967294 bytes from a publisher: no memory pool block holds '
+            r'it \(raise the largest ROS_OUTER_TOPIC_PUBLISHER_MEMPOOL<n>_SIZE\)',
+            timeout=DELIVERY_TIMEOUT)
+        RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5).close()
+        assert board.process.alive(), board.process.output()
+    assert sanitizer_reports(board.process.output()) == set()
+
+
+def test_the_nodes_ports_take_connections_at_its_address_only(ros_side, programs, tmp_path):
+    # As on the board, whose one address 127.0.0.1 never reaches: a
+    # publisherUpdate naming 127.0.0.1 and the node's slave port must not
+    # make the slave call itself.
+    with RosGraph(ros_side) as graph:
+        board = Board(graph, programs['string_pubsub'], str(tmp_path))
+        RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5).close()
+        for port in (board.slave_port, board.publisher_port):
+            with pytest.raises(ConnectionRefusedError):
+                socket.create_connection((PEER_IP, port), timeout=5)
+
+
 @pytest.mark.parametrize('variable, value, problem', [
     ('ROS_MASTER_URI', 'localhost:11311', 'not http://HOST:PORT'),
     ('ROS_IP', 'not-an-address', 'not an IPv4 address or a name in /etc/hosts'),
