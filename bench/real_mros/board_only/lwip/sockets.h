@@ -17,4 +17,7 @@ typedef struct { uint32_t addr; } ip_addr_t;
 #define SOCK_RAW 3
 #define AF_UNSPEC 0
 #define AF_INET 2
+/* recv's flags, valued as in lwIP 1.4's sockets.h. */
+#define MSG_PEEK 0x01
+#define MSG_DONTWAIT 0x08
 #endif
