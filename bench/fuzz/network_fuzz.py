@@ -19,20 +19,21 @@ starts it beside a real rosmaster and sends it, in turn:
   are mutated.
 
 Subscribers on every back/<Type> drain what the node relays meanwhile. Every
-few seconds the fuzzer asks the slave getPid and counts the node's threads
-and resident memory. The peers are raw sockets: they send no
+few seconds the fuzzer asks the slave getPid and counts the node's threads,
+sockets and resident memory. The peers are raw sockets: they send no
 message_definition, so the app is built without the fit check (ROS nodes'
 headers would not fit custom_pubsub's 512-byte buffers; the hardened library
 refuses them).
 
-At the end (after --seconds, or --inputs inputs) the fuzzer relays genpy's
-serialization of samples of each type through the node and compares the
-bytes, then stops the node. It prints a table and exits non-zero if the
-node died or stopped answering, a sanitizer reported anything, the threads
-grew, the memory grew past MEMORY_GROWTH_LIMIT after the first quarter, or a
-type no longer came back byte-exact; the last inputs are kept in the build
-directory. The test suite runs it for 45 s; the figures in bench/README.md
-are of a 10-minute run.
+At the end (after --seconds, or --inputs inputs) the fuzzer waits until the
+node has read what its hostile publishers left, relays genpy's serialization
+of samples of each type through the node and compares the bytes, then stops
+the node. It prints a table and exits non-zero if the node died or stopped
+answering, a sanitizer reported anything, the threads grew, the memory grew
+past MEMORY_GROWTH_LIMIT after the first quarter, or a type no longer came
+back byte-exact; the node's log (with gdb's stacks where it hung) and the
+last inputs are kept in the build directory. The test suite runs it for
+45 s; the figures in bench/README.md are of a 10-minute run.
 """
 
 import argparse
@@ -208,17 +209,25 @@ class NodeHealth:
                 'resident_kib': tuple(r.resident // 1024 for r in (first, quarter, last))}
 
 
-def unread_bytes(pid):
-    """Bytes waiting in the receive queues of the process' TCP sockets."""
+def unread_from_publishers(board):
+    """Bytes waiting in the receive queues of the node's connections to
+    publishers (those it opened: not at its slave or publisher port; a
+    subscriber's bytes after its header are never read)."""
     listing = subprocess.run(['ss', '-tanpH'], capture_output=True, text=True).stdout
-    return sum(int(line.split()[1]) for line in listing.splitlines()
-               if 'pid=%d,' % pid in line and not line.startswith('LISTEN'))
+    own_ports = (':%d' % board.slave_port, ':%d' % board.publisher_port)
+    unread = 0
+    for line in listing.splitlines():
+        state, received, _, local = line.split()[:4]
+        if 'pid=%d,' % board.process.popen.pid in line and state != 'LISTEN' \
+                and not local.endswith(own_ports):
+            unread += int(received)
+    return unread
 
 
-def settle(pid):
-    """Waits until the node has read what its peers sent; the seconds it took."""
+def settle(board):
+    """Waits until the node has read what publishers sent it; the seconds it took."""
     start = time.monotonic()
-    while unread_bytes(pid) and time.monotonic() - start < SETTLE_TIMEOUT:
+    while unread_from_publishers(board) and time.monotonic() - start < SETTLE_TIMEOUT:
         time.sleep(0.5)
     return time.monotonic() - start
 
@@ -592,9 +601,11 @@ def fuzz(program, seconds, max_inputs, seed, scratch):
         if error:
             run.failures.append('after %d inputs: %s' % (run.inputs, error))
         else:
-            run.settle_seconds = settle(board.process.popen.pid)
+            run.settle_seconds = settle(board)
             run.failures += ['%s: %s' % item
                              for item in relayed_byte_exact(graph, board, samples_by_name)]
+            error = health.check()  # the last reading: what the node holds afterwards
+            run.failures += ['after the check: ' + error] if error else []
             bound = health.bounded()
             run.failures += [bound] if bound else []
         if run.failures and board.process.alive():

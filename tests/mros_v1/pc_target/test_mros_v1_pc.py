@@ -430,9 +430,9 @@ def test_hardened_a_request_the_library_cannot_answer_leaves_no_socket(ros_side,
                                                                        hardened_sanitized,
                                                                        tmp_path):
     # The case above with the patch set (answer-every-slave-call,
-    # close-unserved-subscriber-connections): both sockets are closed. (The
+    # close-unserved-subscriber-connections): the sockets are closed. (The
     # patched library serves the short header above; a topic it does not
-    # publish is what it cannot answer.)
+    # know, and one it only subscribes to, are what it cannot answer.)
     with RosGraph(ros_side) as graph:
         board = _sanitized_string_pubsub(graph, hardened_sanitized, str(tmp_path))
         pid = board.process.popen.pid
@@ -442,8 +442,10 @@ def test_hardened_a_request_the_library_cannot_answer_leaves_no_socket(ros_side,
                          % (len(body), body))
         board.process.wait_for(r'mros_xmlpacket_request_topic_req_decode\(\)',
                                timeout=DELIVERY_TIMEOUT)
-        _send_and_vanish(board.publisher_port, encode_header({'topic': '/not_published'}))
-        board.process.wait_for(r'mros_protocol_publish_run\(\) \d+ ret=', timeout=DELIVERY_TIMEOUT)
+        for topic in ('/not_published', '/test_string'):
+            _send_and_vanish(board.publisher_port, encode_header({'topic': topic}))
+        board.process.wait_for(r'mros_protocol_publish_run\(\) \d+ ret=', timeout=DELIVERY_TIMEOUT,
+                               count=2)
         assert _held_until(pid, before) == before
         assert board.process.alive(), board.process.output()
     assert sanitizer_reports(board.process.output()) == set()
