@@ -17,10 +17,10 @@ from colcon_mros.mros_v1.rules import (PEER_NAME_MAX, PUBLISHER_HEADER_FIXED,
                                        SUBSCRIBER_HEADER_FIXED, FirmwareNeeds)
 from colcon_mros.mros_v1.settings import read_settings
 from colcon_mros.mros_v1.pc_target.ros_graph import PYTHON, RosGraph
+from colcon_mros.mros_v1.pc_target.tcpros_peer import HostilePublisher, RawSubscriber
 from conftest import TEST_WS
 from mros_v1_checkout import MROS_V1_ROOT
 from settings_headers import define, header_paths, small_settings
-from colcon_mros.mros_v1.pc_target.tcpros_peer import HostilePublisher, RawSubscriber
 
 USR_CONFIG = os.path.join(MROS_V1_ROOT, 'mros_ws', 'custom_pubsub', 'mros_config',
                           'mros_usr_config.h')

@@ -16,11 +16,11 @@ import pytest
 
 from colcon_mros.mros_v1.pc_target.ros_graph import (DELIVERY_TIMEOUT, PEER_IP, Board,
                                                       RosGraph)
+from colcon_mros.mros_v1.pc_target.tcpros_peer import (
+    HostilePublisher, RawSubscriber, closed_by_peer, encode_header)
 from conftest import run_genmros
 from mros_v1_checkout import MROS_V1_ROOT
 from pc_target_apps import build_sample
-from colcon_mros.mros_v1.pc_target.tcpros_peer import (
-    HostilePublisher, RawSubscriber, closed_by_peer, encode_header)
 
 pytestmark = [pytest.mark.needs_mros_v1, pytest.mark.needs_qemu, pytest.mark.slow]
 
@@ -192,6 +192,37 @@ def test_subscribers_that_left_give_their_room_back_when_hardened(request, libra
         assert board.process.alive(), board.process.output()
 
 
+def _until_blue_is_heard(publisher, board):
+    """Serves the board's connection to publisher with good frames until the app hears one."""
+    connection = _subscriber_connection(publisher, board)
+    connection.sendall(_reply_header())
+    deadline = time.monotonic() + DELIVERY_TIMEOUT
+    while 'I heard [blue]' not in board.process.output():
+        assert time.monotonic() < deadline, board.process.output()
+        connection.sendall(struct.pack('<I', 8) + b'\x04\x00\x00\x00blue')
+        time.sleep(0.5)
+
+
+def test_hardened_publishers_that_fail_give_their_topic_entries_back(hardened, tmp_path):
+    # Each publisher that closes the connection before its reply header
+    # makes the subscriber task remove its connector. Unpatched, that takes
+    # the topic's entry out of the connection table without freeing it: after
+    # MROS_TOPIC_MAX_NUM (20 in string_pubsub) such publishers the app
+    # connects to no publisher again (found by the network fuzzer; with
+    # release-topic-entries taken out, this test fails that way).
+    program, _ = hardened
+    with RosGraph() as graph:
+        board = Board(graph, program, str(tmp_path))
+        graph.wait_for_graph(subscribers=[('/test_string', '/mros_node2')])
+        for index in range(22):
+            with HostilePublisher(graph, '/failing_%d' % index, '/test_string',
+                                  'std_msgs/String') as publisher:
+                _subscriber_connection(publisher, board).close()
+        with HostilePublisher(graph, '/good', '/test_string', 'std_msgs/String') as publisher:
+            _until_blue_is_heard(publisher, board)
+        assert board.process.alive(), board.process.output()
+
+
 def test_hardened_frames_cut_short_give_their_memory_pool_blocks_back(hardened, tmp_path):
     # string_pubsub's pools for frames from other nodes hold 28 blocks (16 +
     # 8 + 4). Unpatched, each frame a publisher cuts short keeps its block,
@@ -208,11 +239,5 @@ def test_hardened_frames_cut_short_give_their_memory_pool_blocks_back(hardened, 
                 connection.sendall(_reply_header() + struct.pack('<I', 100) + b'\x04\x00\x00\x00')
                 connection.close()
         with HostilePublisher(graph, '/good', '/test_string', 'std_msgs/String') as publisher:
-            connection = _subscriber_connection(publisher, board)
-            connection.sendall(_reply_header())
-            deadline = time.monotonic() + DELIVERY_TIMEOUT
-            while 'I heard [blue]' not in board.process.output():
-                assert time.monotonic() < deadline, board.process.output()
-                connection.sendall(struct.pack('<I', 8) + b'\x04\x00\x00\x00blue')
-                time.sleep(0.5)
+            _until_blue_is_heard(publisher, board)
         assert board.process.alive(), board.process.output()

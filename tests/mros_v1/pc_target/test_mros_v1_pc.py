@@ -31,13 +31,13 @@ import pytest
 
 from colcon_mros.mros_v1.pc_target.ros_graph import (
     BOARD_IP, DELIVERY_TIMEOUT, PEER_IP, Board, RosGraph, sourced_environment)
+from colcon_mros.mros_v1.pc_target.tcpros_peer import (
+    HostilePublisher, RawSubscriber, encode_header)
 from conftest import REPO
 from fixtures.build_integration.tools import run
 from mros_v1_checkout import MROS_V1_ROOT
 from pc_target_apps import build_sample
 from sanitizer_reports import LIBRARY_REPORTS, sanitizer_reports
-from colcon_mros.mros_v1.pc_target.tcpros_peer import (
-    HostilePublisher, RawSubscriber, encode_header)
 
 pytestmark = [pytest.mark.needs_mros_v1, pytest.mark.needs_qemu, pytest.mark.slow]
 
