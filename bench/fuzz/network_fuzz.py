@@ -31,7 +31,7 @@ of samples of each type through the node and compares the bytes, then stops
 the node. It prints a table and exits non-zero if the node died or stopped
 answering, a sanitizer reported anything, the threads grew, the memory grew
 past MEMORY_GROWTH_LIMIT after the first quarter, or a type no longer came
-back byte-exact; the node's log (with gdb's stacks where it hung) and the
+back byte-exact, or it held more sockets at the end than at the start; the node's log (with gdb's stacks where it hung) and the
 last inputs are kept in the build directory. The test suite runs it for
 45 s; the figures in bench/README.md are of a 10-minute run.
 """
@@ -89,6 +89,7 @@ RELAY_TIMEOUT = 10  # for each sample to come back in the check afterwards
 # holds on a board; the check waits until the node has read it all.
 HOSTILE_STREAM_LIMIT = 4096
 SETTLE_TIMEOUT = 120
+TCP_LISTEN = '0A'  # the state column of /proc/net/tcp
 RESEND_PERIOD = 0.3
 SANITIZER_REPORT = re.compile(r'runtime error:|ERROR: AddressSanitizer|ERROR: LeakSanitizer')
 INTERESTING_WORDS = [0, 1, 3, 4, 0x7f, 0x80, 0xff, 0x100, 0x1ff, 0x200, 0x3ff, 0x400, 0xffff,
@@ -184,13 +185,18 @@ class NodeHealth:
         return None if code == 1 else 'getPid answered %r' % code
 
     def bounded(self):
-        """An error text if the threads grew, or the memory grew past
-        MEMORY_GROWTH_LIMIT after the first quarter of the run."""
+        """An error text if the threads grew, the node holds more sockets
+        at the end than at the start (with the drain's five connected), or
+        the memory grew past MEMORY_GROWTH_LIMIT after the first quarter of
+        the run."""
         if len(self.readings) < 2:
             return None
         first, most = self.readings[0].threads, max(r.threads for r in self.readings)
         if most > first:
             return "the node's threads grew from %d to %d" % (first, most)
+        if self.readings[-1].sockets > self.readings[0].sockets:
+            return "the node holds %d sockets at the end, %d at the start" % (
+                self.readings[-1].sockets, self.readings[0].sockets)
         growth = self.readings[-1].resident - self.readings[len(self.readings) // 4].resident
         if growth > MEMORY_GROWTH_LIMIT:
             return "the node's resident memory grew by %d KiB after the first quarter" % (
@@ -212,15 +218,21 @@ class NodeHealth:
 def unread_from_publishers(board):
     """Bytes waiting in the receive queues of the node's connections to
     publishers (those it opened: not at its slave or publisher port; a
-    subscriber's bytes after its header are never read)."""
-    listing = subprocess.run(['ss', '-tanpH'], capture_output=True, text=True).stdout
-    own_ports = (':%d' % board.slave_port, ':%d' % board.publisher_port)
+    subscriber's bytes after its header are never read), from /proc."""
+    pid = board.process.popen.pid
+    inodes = set()
+    for fd in os.listdir('/proc/%d/fd' % pid):
+        target = os.readlink('/proc/%d/fd/%s' % (pid, fd))
+        if target.startswith('socket:['):
+            inodes.add(target[len('socket:['):-1])
     unread = 0
-    for line in listing.splitlines():
-        state, received, _, local = line.split()[:4]
-        if 'pid=%d,' % board.process.popen.pid in line and state != 'LISTEN' \
-                and not local.endswith(own_ports):
-            unread += int(received)
+    with open('/proc/%d/net/tcp' % pid) as table:
+        for row in list(table)[1:]:
+            fields = row.split()
+            local_port = int(fields[1].split(':')[1], 16)
+            if fields[9] in inodes and fields[3] != TCP_LISTEN \
+                    and local_port not in (board.slave_port, board.publisher_port):
+                unread += int(fields[4].split(':')[1], 16)
     return unread
 
 
@@ -232,13 +244,16 @@ def settle(board):
     return time.monotonic() - start
 
 
-def thread_stacks(pid):
-    """Every thread's backtrace of a node that stopped answering, where gdb
-    is installed, for the record."""
-    if not shutil.which('gdb'):
-        return ''
-    return subprocess.run(['gdb', '-p', str(pid), '-batch', '-ex', 'thread apply all bt'],
-                          capture_output=True, text=True, timeout=120).stdout
+def failure_record(pid):
+    """For the record of a failed run: every thread's backtrace and the
+    process' TCP connections, where gdb and ss are installed."""
+    record = ''
+    if shutil.which('gdb'):
+        record += subprocess.run(['gdb', '-p', str(pid), '-batch', '-ex', 'thread apply all bt'],
+                                 capture_output=True, text=True, timeout=120).stdout
+    if shutil.which('ss'):
+        record += subprocess.run(['ss', '-tanp'], capture_output=True, text=True).stdout
+    return record
 
 
 # --- mutation ---------------------------------------------------------------
@@ -398,10 +413,15 @@ class Fuzzer:
         """A publisherUpdate naming a new port of ours; the node's
         requestTopic there, its connection and the frames get mutated
         answers."""
+        record = []
+        self._publish_to_the_node(record)
+        return 'hostile publisher', b'\n'.join(record)
+
+    def _publish_to_the_node(self, record):
+        """hostile_publisher's exchanges, each answer sent added to record."""
         name = self._name()
         datatype, md5sum, wire = self.samples[name]
         topic = '/src/' + name
-        record = []
         with socket.create_server((PEER_IP, 0)) as xmlrpc_listener, \
                 socket.create_server((PEER_IP, 0)) as tcpros_listener:
             uri = 'http://%s:%d/' % (PEER_IP, xmlrpc_listener.getsockname()[1])
@@ -414,18 +434,18 @@ class Fuzzer:
                 answer = self.mutator.mutate(answer, self.xml_tokens)
             record.append(answer)
             if not self._answer_request_topic(xmlrpc_listener, answer):
-                return 'hostile publisher', b'\n'.join(record)
+                return
             tcpros_listener.settimeout(1.0)
             try:
                 connection, _ = tcpros_listener.accept()
             except OSError:
-                return 'hostile publisher', b'\n'.join(record)
+                return
             with connection:
                 connection.settimeout(1.0)
                 try:
                     read_header(connection)
                 except (OSError, EOFError, ValueError, struct.error):
-                    return 'hostile publisher', b'\n'.join(record)
+                    return
                 header = encode_header({'callerid': '/fuzz_publisher', 'md5sum': md5sum,
                                         'type': datatype, 'topic': topic})
                 if self.rng.random() < 0.3:
@@ -447,7 +467,6 @@ class Fuzzer:
                     time.sleep(self.rng.choice([0, 0.01, 0.05]))
                 except OSError:
                     pass
-        return 'hostile publisher', b'\n'.join(record)
 
     def _answer_request_topic(self, listener, answer):
         listener.settimeout(1.0)
@@ -609,8 +628,7 @@ def fuzz(program, seconds, max_inputs, seed, scratch):
             bound = health.bounded()
             run.failures += [bound] if bound else []
         if run.failures and board.process.alive():
-            run.record = thread_stacks(board.process.popen.pid) + subprocess.run(
-                ['ss', '-tanp'], capture_output=True, text=True).stdout
+            run.record = failure_record(board.process.popen.pid)
         board.process.stop()
         output = board.process.output()
     run.health = health.figures()
