@@ -29,11 +29,12 @@ At the end (after --seconds, or --inputs inputs) the fuzzer waits until the
 node has read what its hostile publishers left, relays genpy's serialization
 of samples of each type through the node and compares the bytes, then stops
 the node. It prints a table and exits non-zero if the node died or stopped
-answering, a sanitizer reported anything, the threads grew, the memory grew
-past MEMORY_GROWTH_LIMIT after the first quarter, or a type no longer came
-back byte-exact, or it held more sockets at the end than at the start; the node's log (with gdb's stacks where it hung) and the
-last inputs are kept in the build directory. The test suite runs it for
-45 s; the figures in bench/README.md are of a 10-minute run.
+answering, a sanitizer reported anything, the threads grew, the node held
+more sockets at the end than at the start, the memory grew past
+MEMORY_GROWTH_LIMIT after the first quarter, or a type no longer came back
+byte-exact; the node's log (with gdb's stacks and ss's sockets where it
+failed) and the last inputs are kept in the build directory. The test suite
+runs it for 45 s; the figures in bench/README.md are of a 10-minute run.
 """
 
 import argparse
