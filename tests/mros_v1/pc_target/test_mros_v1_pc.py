@@ -30,7 +30,7 @@ import xmlrpc.client
 import pytest
 
 from colcon_mros.mros_v1.pc_target.ros_graph import (
-    BOARD_IP, DELIVERY_TIMEOUT, PEER_IP, Board, RosGraph, sourced_environment)
+    BOARD_IP, DELIVERY_TIMEOUT, PEER_IP, Board, RosGraph, free_port, sourced_environment)
 from colcon_mros.mros_v1.pc_target.tcpros_peer import (
     HostilePublisher, RawSubscriber, encode_header)
 from conftest import REPO
@@ -449,6 +449,31 @@ def test_hardened_a_request_the_library_cannot_answer_leaves_no_socket(ros_side,
         assert _held_until(pid, before) == before
         assert board.process.alive(), board.process.output()
     assert sanitizer_reports(board.process.output()) == set()
+
+
+@pytest.mark.parametrize('library', ['sanitized', 'hardened_sanitized'])
+def test_a_publisher_nothing_answers_for_costs_a_socket_unless_hardened(ros_side, request,
+                                                                        library, tmp_path):
+    # publisherUpdate names a publisher at a port nothing listens at: the
+    # slave's connection for requestTopic fails. As it is, the library keeps
+    # that socket, and the caller's, since the slave returns from the error
+    # without closing it: two a call. Hardened (close-publisher-connections-
+    # on-errors, answer-every-slave-call), none.
+    with RosGraph(ros_side) as graph:
+        board = _sanitized_string_pubsub(graph, request.getfixturevalue(library), str(tmp_path))
+        pid = board.process.popen.pid
+        before = (_threads(pid), _open_sockets(pid))
+        body = xmlrpc.client.dumps(('/master', '/test_string',
+                                    ['http://%s:%d/' % (PEER_IP, free_port())]),
+                                   'publisherUpdate').encode()
+        for _ in range(3):
+            _send_and_vanish(board.slave_port, b'POST / HTTP/1.1\r\nContent-Length: %d\r\n\r\n%s'
+                             % (len(body), body))
+        board.process.wait_for(r'mros_proc_slave_publisher_update_do_request_topic\(\) \d+ ret=',
+                               timeout=DELIVERY_TIMEOUT, count=3)
+        expected = before if library == 'hardened_sanitized' else (before[0], before[1] + 6)
+        assert _held_until(pid, expected) == expected
+        assert board.process.alive(), board.process.output()
 
 
 def test_limit_a_connection_header_without_a_topic_crashes_the_library(ros_side, sanitized,
