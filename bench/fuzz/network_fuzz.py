@@ -19,7 +19,7 @@ starts it beside a real rosmaster and sends it, in turn:
   are mutated.
 
 Subscribers on every back/<Type> drain what the node relays meanwhile. Every
-few seconds the fuzzer asks the slave getPid and counts the node's threads,
+few seconds the fuzzer asks the slave requestTopic and counts the node's threads,
 sockets and resident memory. The peers are raw sockets: they send no
 message_definition, so the app is built without the fit check (ROS nodes'
 headers would not fit custom_pubsub's 512-byte buffers; the hardened library
@@ -79,8 +79,8 @@ SLAVE_METHODS = ['requestTopic', 'getPid', 'getBusInfo', 'getBusStats', 'getMast
 SANITIZER_OPTIONS = {'ASAN_OPTIONS': 'quarantine_size_mb=8:detect_leaks=0',
                      'UBSAN_OPTIONS': 'print_stacktrace=1'}
 MEMORY_GROWTH_LIMIT = 16 * 1024 * 1024
-HEALTH_PERIOD = 5.0  # seconds between getPid, thread and memory readings
-ANSWER_TIMEOUT = 10.0  # for the node's slave to answer getPid
+HEALTH_PERIOD = 5.0  # seconds between requestTopic, thread and memory readings
+ANSWER_TIMEOUT = 10.0  # for the node's slave to answer requestTopic
 PEER_TIMEOUT = 0.2  # how long a fuzzing peer waits for the node
 RELAY_TIMEOUT = 10  # for each sample to come back in the check afterwards
 # The library reads one frame of each publisher connection per cycle
@@ -92,6 +92,10 @@ HOSTILE_STREAM_LIMIT = 4096
 SETTLE_TIMEOUT = 120
 TCP_LISTEN = '0A'  # the state column of /proc/net/tcp
 RESEND_PERIOD = 0.3
+# The library as it is writes its reply header into the buffer the
+# subscriber's header came in, sized to that header: a raw subscriber's must
+# be as long as the reply. TCPROS ignores this field.
+REPLY_ROOM = {'padding': '.' * 200}
 SANITIZER_REPORT = re.compile(r'runtime error:|ERROR: AddressSanitizer|ERROR: LeakSanitizer')
 INTERESTING_WORDS = [0, 1, 3, 4, 0x7f, 0x80, 0xff, 0x100, 0x1ff, 0x200, 0x3ff, 0x400, 0xffff,
                      0x10000, 0x7fffffff, 0x80000000, 0xfffffffe, 0xffffffff]
@@ -154,7 +158,8 @@ Reading = collections.namedtuple('Reading', 'seconds threads sockets resident')
 
 
 class NodeHealth:
-    """getPid answered; threads, sockets and resident memory of the node's
+    """requestTopic answered (also by the library as it is, which answers no
+    getPid); threads, sockets and resident memory of the node's
     process, read every HEALTH_PERIOD."""
 
     def __init__(self, board):
@@ -180,10 +185,11 @@ class NodeHealth:
         proxy = xmlrpc.client.ServerProxy(self.board.slave_uri,
                                           transport=TimedTransport(ANSWER_TIMEOUT))
         try:
-            code, _, _ = proxy.getPid('/network_fuzz')
+            code, _, _ = proxy.requestTopic('/network_fuzz', '/back/String', [['TCPROS']])
         except (OSError, xmlrpc.client.Error) as error:
-            return 'the node did not answer getPid within %.0f s: %s' % (ANSWER_TIMEOUT, error)
-        return None if code == 1 else 'getPid answered %r' % code
+            return 'the node did not answer requestTopic within %.0f s: %s' % (ANSWER_TIMEOUT,
+                                                                             error)
+        return None if code == 1 else 'requestTopic answered %r' % code
 
     def bounded(self):
         """An error text if the threads grew, the node holds more sockets
@@ -504,7 +510,8 @@ def relayed_byte_exact(graph, board, samples_by_name):
     failures = []
     for name, (datatype, md5sum, wire) in samples_by_name.items():
         try:
-            back = RawSubscriber(board.slave_uri, '/back/' + name, datatype, md5sum, timeout=10)
+            back = RawSubscriber(board.slave_uri, '/back/' + name, datatype, md5sum, timeout=10,
+                                 extra_fields=REPLY_ROOM)
         except (AssertionError, OSError, EOFError) as error:
             failures.append((name, 'no subscription to /back/%s: %s' % (name, error)))
             continue
@@ -552,7 +559,8 @@ class Drain:
     def __init__(self, board, samples_by_name):
         self.connections = []
         for name, (datatype, md5sum, _) in samples_by_name.items():
-            subscriber = RawSubscriber(board.slave_uri, '/back/' + name, datatype, md5sum)
+            subscriber = RawSubscriber(board.slave_uri, '/back/' + name, datatype, md5sum,
+                                       extra_fields=REPLY_ROOM)
             subscriber.connection.settimeout(None)
             self.connections.append(subscriber.connection)
         self.received = 0
