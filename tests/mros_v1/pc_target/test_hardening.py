@@ -181,6 +181,7 @@ def test_subscribers_that_left_give_their_room_back_when_hardened(request, libra
         graph.wait_for_graph(publishers=[('/mros_msg', '/mros_node')])
         for _ in range(12):
             RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5).close()
+            time.sleep(0.3)  # the publisher task has added it to its tables
         last = RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5)
         board.set_inputs(P6_0=0)
         last.connection.settimeout(10)
