@@ -204,6 +204,21 @@ def _until_blue_is_heard(publisher, board):
         time.sleep(0.5)
 
 
+def _blue_is_heard_after_failing_publishers(program, directory, count, fail):
+    """count publishers of /test_string, each connection from the app ended
+    by fail(connection), and then a good publisher whose frames the app hears."""
+    with RosGraph() as graph:
+        board = Board(graph, program, directory)
+        graph.wait_for_graph(subscribers=[('/test_string', '/mros_node2')])
+        for index in range(count):
+            with HostilePublisher(graph, '/failing_%d' % index, '/test_string',
+                                  'std_msgs/String') as publisher:
+                fail(_subscriber_connection(publisher, board))
+        with HostilePublisher(graph, '/good', '/test_string', 'std_msgs/String') as publisher:
+            _until_blue_is_heard(publisher, board)
+        assert board.process.alive(), board.process.output()
+
+
 def test_hardened_publishers_that_fail_give_their_topic_entries_back(hardened, tmp_path):
     # Each publisher that closes the connection before its reply header
     # makes the subscriber task remove its connector. Unpatched, that takes
@@ -211,17 +226,13 @@ def test_hardened_publishers_that_fail_give_their_topic_entries_back(hardened, t
     # MROS_TOPIC_MAX_NUM (20 in string_pubsub) such publishers the app
     # connects to no publisher again (found by the network fuzzer; with
     # release-topic-entries taken out, this test fails that way).
-    program, _ = hardened
-    with RosGraph() as graph:
-        board = Board(graph, program, str(tmp_path))
-        graph.wait_for_graph(subscribers=[('/test_string', '/mros_node2')])
-        for index in range(22):
-            with HostilePublisher(graph, '/failing_%d' % index, '/test_string',
-                                  'std_msgs/String') as publisher:
-                _subscriber_connection(publisher, board).close()
-        with HostilePublisher(graph, '/good', '/test_string', 'std_msgs/String') as publisher:
-            _until_blue_is_heard(publisher, board)
-        assert board.process.alive(), board.process.output()
+    _blue_is_heard_after_failing_publishers(hardened[0], str(tmp_path), 22,
+                                            lambda connection: connection.close())
+
+
+def _cut_short(connection):
+    connection.sendall(_reply_header() + struct.pack('<I', 100) + b'\x04\x00\x00\x00')
+    connection.close()
 
 
 def test_hardened_frames_cut_short_give_their_memory_pool_blocks_back(hardened, tmp_path):
@@ -229,16 +240,4 @@ def test_hardened_frames_cut_short_give_their_memory_pool_blocks_back(hardened, 
     # 8 + 4). Unpatched, each frame a publisher cuts short keeps its block,
     # so after 28 no frame is received again (found by the network fuzzer;
     # with bounded-publisher-frames taken out, this test fails that way).
-    program, _ = hardened
-    with RosGraph() as graph:
-        board = Board(graph, program, str(tmp_path))
-        graph.wait_for_graph(subscribers=[('/test_string', '/mros_node2')])
-        for index in range(30):
-            with HostilePublisher(graph, '/cut_short_%d' % index, '/test_string',
-                                  'std_msgs/String') as publisher:
-                connection = _subscriber_connection(publisher, board)
-                connection.sendall(_reply_header() + struct.pack('<I', 100) + b'\x04\x00\x00\x00')
-                connection.close()
-        with HostilePublisher(graph, '/good', '/test_string', 'std_msgs/String') as publisher:
-            _until_blue_is_heard(publisher, board)
-        assert board.process.alive(), board.process.output()
+    _blue_is_heard_after_failing_publishers(hardened[0], str(tmp_path), 30, _cut_short)
