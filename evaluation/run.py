@@ -1,216 +1,207 @@
 #!/usr/bin/env python3
-"""The paper's evaluation (section 6.2) on the real mROS v1 library, run by
-the PC target as users run it (genmros mros-v1-pc), against a real rosmaster
-and real ROS nodes. The app (evaluation/app/app.cpp) is Fig. 6 and Fig. 7
-written for mROS v1: it publishes mros_test/PersonalData ("Phil", "Woods",
-83, score counting up), which a rospy and a roscpp node print and which the
-library also delivers on the board; then a rospy and a roscpp node publish
-("Charlie", "Parker", 32, ...) and the app prints it. Exits 0 only if every
-direction delivered the right values in order.
+"""The main job, end to end with real tools: a ROS build emits the mROS
+headers, a firmware's CMake build uses them, and the firmware exchanges
+messages with real ROS nodes. One line per step, then a PASS/FAIL table.
 
-  run.py [--messages N] [--build-dir DIR] [--workspace DIR]
+1. catkin_make of test_ws, genmros beside gencpp and genpy, writes the export
+   dir (MROS_EXPORT_DIR); colcon build --mros-export writes the same headers.
+2. evaluation/firmware (find_package(genmros), mros_import_messages()) is
+   built on that export dir for 32-bit ARM Linux, Cortex-M0 and Cortex-M4.
+3. The ARM Linux program runs under qemu-arm beside a real rosmaster and
+   rospy and roscpp nodes (evaluation/board.py): the paper's PersonalData in
+   both directions, and five test_ws types sent back byte for byte.
+4. With MROS_V1_ROOT naming the user's mROS v1 checkout: the paper's
+   evaluation on that library, in all five directions (evaluation/mros_v1.py).
+5. In sync by construction: a field added to a message in the workspace
+   reaches the firmware through catkin_make and the firmware's rebuild.
 
-Builds test_ws (catkin_make; --workspace: one built already) and the app
-first, in DIR or in a temporary directory, with the installed genmros
-(scripts/run-evaluation.sh installs it). The mROS v1 checkout is
-MROS_V1_ROOT (run-evaluation.sh: default ../shared/mros_v1 beside this
-repository).
+  run.py [--messages N] [--build-dir DIR]
+
+Uses the installed genmros (scripts/run-evaluation.sh installs it). Exits 0
+only if every step passed.
 """
 
 import argparse
+import filecmp
 import os
-import re
 import shutil
 import subprocess
 import sys
 import tempfile
+import time
 
-from colcon_mros.mros_v1.pc_target.ros_graph import (DELIVERY_TIMEOUT, Board, CatkinWorkspace,
-                                                      RosGraph)
+from colcon_mros.mros_v1.pc_target.ros_graph import PYTHON, CatkinWorkspace
+
+import board
+import mros_v1
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TEST_WS_SRC = os.path.join(REPO, 'test_ws', 'src')
-APP = os.path.join(REPO, 'evaluation', 'app')
 NODES_PACKAGE = 'mros_test_nodes'
-# What the app takes from a sample app, as a new app does: the library's
-# tasks and memory pools, and the declarations of the user tasks.
-SAMPLE_FILES = ('mros_config', 'app.h')
+MESSAGE_PACKAGES = ('mros_test_base', 'mros_test')
+TRANSPORT = ('frames carried between qemu-arm and the ROS graph by evaluation/board_bridge.py: '
+             "a rospy node that relays the board's bytes unread, under the type names, MD5 sums "
+             "and definition texts of the board's genmros headers")
 
 
-def build_workspace(root):
-    """test_ws's packages copied to root and built: the ROS nodes."""
-    shutil.copytree(TEST_WS_SRC, os.path.join(root, 'src'), dirs_exist_ok=True)
-    return CatkinWorkspace(root, NODES_PACKAGE).build(
+class Steps:
+    """Runs steps, prints one line each, and keeps the rows of the table."""
+
+    def __init__(self):
+        self.rows = []
+
+    def run(self, title, function, *arguments):
+        """function(*arguments) returns (its result, a detail line); a
+        Failure, RuntimeError or AssertionError fails the step. Returns the
+        result, or None if the step failed."""
+        started = time.monotonic()
+        print('%s ...' % title, flush=True)
+        try:
+            result, detail = function(*arguments)
+            problem = None
+        except (board.Failure, RuntimeError, AssertionError, subprocess.CalledProcessError) \
+                as error:
+            result, detail, problem = None, '', str(error).strip().splitlines()[0]
+        self.add(title, detail, problem, time.monotonic() - started)
+        return result
+
+    def add(self, title, detail, problem, seconds=None):
+        self.rows.append((title, problem))
+        timing = ' (%.0f s)' % seconds if seconds is not None else ''
+        print('  %s%s: %s' % ('PASS' if problem is None else 'FAIL', timing,
+                              detail if problem is None else problem), flush=True)
+
+    def skip(self, title, reason):
+        self.rows.append((title, 'not run: ' + reason))
+        print('%s: FAIL, not run: %s' % (title, reason), flush=True)
+
+    def passed(self):
+        return all(problem is None for _, problem in self.rows)
+
+    def table(self):
+        width = max(len(title) for title, _ in self.rows)
+        lines = ['%-*s  %s' % (width, title, 'PASS' if problem is None else 'FAIL: ' + problem)
+                 for title, problem in self.rows]
+        return '\n'.join(lines)
+
+
+def catkin_build(root):
+    shutil.copytree(TEST_WS_SRC, os.path.join(root, 'src'))
+    workspace = CatkinWorkspace(root, NODES_PACKAGE).build(
         os.path.join(root, 'catkin_make.log'), '-DCMAKE_BUILD_TYPE=Release', '-j2')
+    headers = _headers(workspace.mros_export)
+    if not os.path.isfile(os.path.join(workspace.mros_export, 'mros_export.cmake')) \
+            or 'mros_test/PersonalData.h' not in headers:
+        raise board.Failure('no export in %s' % workspace.mros_export)
+    return workspace, 'export dir %s: %d headers, mros_export.cmake' % (
+        workspace.mros_export, len(headers))
 
 
-def build_app(mros_root, build_root):
-    """The app in build_root/app, with custom_pubsub's mros_config/ and
-    app.h (the user tasks' declarations) linked in, built for qemu-arm;
-    returns the program."""
-    app = os.path.join(build_root, 'app')
-    shutil.copytree(APP, app, dirs_exist_ok=True)
-    for name in SAMPLE_FILES:
-        if not os.path.lexists(os.path.join(app, name)):
-            os.symlink(os.path.join(mros_root, 'mros_ws', 'custom_pubsub', name),
-                       os.path.join(app, name))
-    output = os.path.join(build_root, 'build')
-    subprocess.run(['genmros', 'mros-v1-pc', app, '--mros-root', mros_root, '--msg-path',
-                    TEST_WS_SRC, '-o', output, '--type', 'mros_test/PersonalData', '-j2'],
-                   check=True)
-    return os.path.join(output, 'personal_data')
+def _headers(export_dir):
+    include = os.path.join(export_dir, 'include')
+    return sorted(os.path.relpath(os.path.join(directory, name), include)
+                  for directory, _, names in os.walk(include) for name in names)
 
 
-ROS_HEARD = re.compile(r'I heard from mROS: (\S*) (\S*) age:(\d+) score:(-?\d+)')
-MROS_HEARD = re.compile(r'name:(.*)$')
-MROS_AGE = re.compile(r'age:(\d+)$')
-MROS_SCORE = re.compile(r'score:(-?\d+)$')
-
-
-class Direction:
-    """One sender -> receiver run and what the receiver printed."""
-
-    def __init__(self, title, expected_name, expected_age, first_score, received, count):
-        self.title = title
-        self.expected = (expected_name, expected_age)
-        self.received = received[:count]  # (name, age, score)
-        self.problem = self._problem(first_score, count)
-
-    def _problem(self, first_score, count):
-        if len(self.received) < count:
-            return 'received %d of %d messages' % (len(self.received), count)
-        for name, age, score in self.received:
-            if (name, age) != self.expected or score < first_score:
-                return 'wrong values: %s age:%d score:%d' % (name, age, score)
-        scores = [score for _, _, score in self.received]
-        if any(later != earlier + 1 for earlier, later in zip(scores, scores[1:])):
-            return 'scores not counting up by one: %s' % scores
-        return None
-
-    def summary(self):
-        name, age = self.expected
-        scores = [score for _, _, score in self.received]
-        values = '%s, age %d, score %s..%s' % (name, age, scores[0] if scores else '-',
-                                               scores[-1] if scores else '-')
-        return '%-26s %2d messages  %-40s %s' % (
-            self.title, len(self.received), values,
-            'PASS' if self.problem is None else 'FAIL: ' + self.problem)
-
-
-def parse_mros_listener(lines):
-    """(name, age, score) of every complete name/age/score group the app logged."""
-    received = []
-    name = age = None
-    for line in lines:
-        for regex, kind in ((MROS_HEARD, 'name'), (MROS_AGE, 'age'), (MROS_SCORE, 'score')):
-            match = regex.search(line)
-            if not match:
-                continue
-            if kind == 'name':
-                name, age = match.group(1), None
-            elif kind == 'age':
-                age = int(match.group(1))
-            elif name is not None and age is not None:
-                received.append((name, age, int(match.group(1))))
-                name = age = None
-    return received
-
-
-def _waited(process, pattern, count, start=0):
-    """The matches of pattern once count are there, or what came in time."""
-    try:
-        return process.wait_for(pattern, timeout=DELIVERY_TIMEOUT, start=start, count=count)
-    except AssertionError:
-        return [m for m in map(re.compile(pattern).search, process.lines()[start:]) if m]
-
-
-def run(workspace, program, count, scratch):
-    """Every direction of the evaluation: a list of Direction, and the
-    boards that ran them."""
-    environment = workspace.environment()
-    directions = []
-    boards = []
-    with RosGraph(environment) as graph:
-        listeners = [
-            ('mROS -> rospy listener', graph.start('rospy personal_data_listener.py',
-                                                   workspace.rospy('personal_data_listener.py'))),
-            ('mROS -> roscpp listener', graph.start('roscpp personal_data_listener',
-                                                    workspace.roscpp('personal_data_listener'))),
-        ]
-        graph.wait_for_graph(subscribers=[('/mros_str', '/rospy_personal_listener'),
-                                          ('/mros_str', '/ros_personal_listener')])
-        board = Board(graph, program, scratch)
-        boards.append(board)
-        for title, listener in listeners:
-            heard = [('%s %s' % (m.group(1), m.group(2)), int(m.group(3)), int(m.group(4)))
-                     for m in _waited(listener, ROS_HEARD.pattern, count)]
-            directions.append(Direction(title, 'Phil Woods', 83, 100000, heard, count))
-        matches = _waited(board.process, r'on board: (\S+ \S+) (\d+) (-?\d+)', count)
-        directions.append(Direction('mROS -> mROS on board', 'Phil Woods', 83, 100000,
-                                    [(m.group(1), int(m.group(2)), int(m.group(3)))
-                                     for m in matches], count))
-    # One talker per graph: the library reads one publisher per topic.
-    for talker, argv in (('rospy', workspace.rospy('personal_data_talker.py')),
-                         ('roscpp', workspace.roscpp('personal_data_talker'))):
-        with RosGraph(environment) as graph:
-            board = Board(graph, program, scratch)
-            boards.append(board)
-            graph.wait_for_graph(subscribers=[('/test_msg', '/mros_node2')])
-            start = len(board.process.lines())
-            graph.start('%s talker' % talker, argv)
-            _waited(board.process, r'\] score:', count, start)
-            directions.append(Direction('%s talker -> mROS' % talker, 'Charlie Parker', 32, 100100,
-                                        parse_mros_listener(board.process.lines()[start:]),
-                                        count))
-    return directions, boards
-
-
-def stack_peaks(boards):
-    """{task: (the largest peak of its stack over the boards' last reports,
-    its size)}: the reports each board prints when it is stopped."""
-    peaks = {}
-    for board in boards:
-        reports = board.stack_reports()
-        for task, (peak, size) in (reports[-1] if reports else {}).items():
-            known = peaks.get(task, (None, size))[0]
-            peaks[task] = (max(p for p in (known, peak, 0) if p is not None), size)
-    return peaks
+def colcon_export(root, catkin_export):
+    """colcon build --mros-export of test_ws's message packages; its headers
+    must equal catkin's."""
+    shutil.copytree(TEST_WS_SRC, os.path.join(root, 'src'))
+    export_dir = os.path.join(root, 'mros_export')
+    environment = dict(os.environ, PATH='/usr/bin:' + os.environ.get('PATH', ''))
+    board.run_logged(['colcon', 'build', '--packages-up-to', *MESSAGE_PACKAGES,
+                      '--mros-export', export_dir,
+                      '--cmake-args', '-DPYTHON_EXECUTABLE=' + PYTHON],
+                     os.path.join(root, 'colcon_build.log'), cwd=root, env=environment)
+    catkin_headers, colcon_headers = _headers(catkin_export), _headers(export_dir)
+    ours = [path for path in colcon_headers if path.split('/')[0] in MESSAGE_PACKAGES]
+    missing = sorted(set(catkin_headers) - set(colcon_headers)) + sorted(
+        set(ours) - set(catkin_headers))
+    if missing:
+        raise board.Failure('in one export only: %s' % ', '.join(missing[:5]))
+    _, differing, errors = filecmp.cmpfiles(os.path.join(catkin_export, 'include'),
+                                            os.path.join(export_dir, 'include'), catkin_headers,
+                                            shallow=False)
+    if differing or errors:
+        raise board.Failure('headers differ from catkin\'s: %s' % ', '.join(differing + errors))
+    return export_dir, ("%d headers, every one of catkin's export byte for byte (colcon also "
+                        'exports %d more headers, of the installed packages they depend on)'
+                        % (len(catkin_headers), len(colcon_headers) - len(catkin_headers)))
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split('\n')[1])
+    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     parser.add_argument('--messages', type=int, default=5,
-                        help='messages each receiver must print (default 5)')
-    parser.add_argument('--build-dir', help='keep the builds here (default: a temporary dir)')
-    parser.add_argument('--workspace', metavar='DIR',
-                        help='a copy of test_ws built already with catkin_make (default: build one)')
+                        help='messages each receiver of the paper\'s directions must get '
+                             '(default 5)')
+    parser.add_argument('--build-dir', help='keep the builds here, in a new or empty directory '
+                        '(default: a temporary one)')
     args = parser.parse_args()
     mros_root = os.environ.get('MROS_V1_ROOT', '')
-    if not os.path.isfile(os.path.join(mros_root, 'mros-lib', 'Makefile.m')):
-        print("evaluation: no mROS v1 checkout at '%s' (mros-lib/Makefile.m): set "
-              'MROS_V1_ROOT=<checkout of mROS-base/mROS>' % mros_root, file=sys.stderr)
-        return 1
-    with tempfile.TemporaryDirectory(prefix='mros_evaluation_') as scratch:
+    steps = Steps()
+    with tempfile.TemporaryDirectory(prefix='mros_main_job_') as scratch:
         build_root = os.path.abspath(args.build_dir or scratch)
-        if args.workspace:
-            workspace = CatkinWorkspace(os.path.abspath(args.workspace), NODES_PACKAGE)
+        os.makedirs(build_root, exist_ok=True)
+        if os.listdir(build_root):
+            parser.error('--build-dir %s is not empty' % build_root)
+        workspace = steps.run('catkin_make of test_ws (genmros beside gencpp and genpy)',
+                              catkin_build, os.path.join(build_root, 'catkin_ws'))
+        if workspace is None:
+            return finish(steps)
+        steps.run('colcon build --mros-export of the same packages', colcon_export,
+                  os.path.join(build_root, 'colcon_ws'), workspace.mros_export)
+        programs = {}
+        for target in board.TARGETS:
+            programs[target.name] = steps.run(
+                'firmware (CMake, mros_import_messages) for %s' % target.title,
+                board.build_firmware, workspace.mros_export,
+                os.path.join(build_root, 'firmware', target.name), target)
+        linux = programs['arm-linux-gnueabihf']
+        if linux is None:
+            steps.skip('the board under qemu-arm with ROS nodes', 'its firmware did not build')
         else:
-            print('building test_ws with catkin_make (genmros beside gencpp and genpy) ...',
-                  flush=True)
-            workspace = build_workspace(os.path.join(build_root, 'test_ws'))
-        print('building the evaluation app with the mROS v1 library of %s (genmros mros-v1-pc) ...'
-              % mros_root, flush=True)
-        program = build_app(mros_root, os.path.join(build_root, 'app'))
-        directions, boards = run(workspace, program, args.messages, build_root)
-    print("\nthe board's task stacks, the deepest of its runs (bytes):")
-    for task, (peak, size) in stack_peaks(boards).items():
-        print('  %-14s %5d of %5d' % (task, peak, size))
-    print("\n==== the paper's evaluation on the real mROS v1 library (PC target, qemu-arm) ====")
+            print('the board under qemu-arm with a rosmaster, rospy and roscpp nodes; %s ...'
+                  % TRANSPORT, flush=True)
+            for check in board.exchange(workspace, linux, args.messages):
+                steps.add(check.title, check.detail, check.problem)
+        if mros_v1.checkout_found(mros_root):
+            run_mros_v1(steps, workspace, mros_root, os.path.join(build_root, 'mros_v1'),
+                        args.messages)
+        if linux is not None:
+            steps.run('in sync by construction: a field added, catkin_make, firmware rebuilt',
+                      lambda: (None, board.in_sync(
+                          workspace, os.path.join(build_root, 'firmware', 'arm-linux-gnueabihf'),
+                          linux, os.path.join(build_root, 'in_sync.log'))))
+    if not mros_v1.checkout_found(mros_root):
+        print("\nthe paper's evaluation on your mROS v1 library was not run: %s. Set "
+              'MROS_V1_ROOT=<your checkout of mROS-base/mROS> to run it as well.'
+              % ("MROS_V1_ROOT is not set" if not mros_root
+                 else 'no mROS v1 checkout at %s (no mros-lib/Makefile.m)' % mros_root))
+    return finish(steps)
+
+
+def run_mros_v1(steps, workspace, mros_root, build_root, count):
+    """The paper's evaluation on the user's library: one row per direction."""
+    os.makedirs(build_root, exist_ok=True)
+    program = steps.run('the evaluation app on the mROS v1 library of %s (genmros mros-v1-pc)'
+                        % mros_root,
+                        lambda: (mros_v1.build_app(mros_root, build_root), 'built for qemu-arm'))
+    if program is None:
+        return
+    print('the paper\'s evaluation on the mROS v1 library, under qemu-arm ...', flush=True)
+    directions, boards = mros_v1.run(workspace, program, count, build_root)
     for direction in directions:
-        print(direction.summary())
-    passed = all(direction.problem is None for direction in directions)
-    print('RESULT: %s' % ('PASS' if passed else 'FAIL'))
-    return 0 if passed else 1
+        steps.add(direction.title, direction.detail(), direction.problem)
+    print("  the board's task stacks, the deepest of its runs (bytes): " + ', '.join(
+        '%s %d of %d' % (task, peak, size)
+        for task, (peak, size) in mros_v1.stack_peaks(boards).items()))
+
+
+def finish(steps):
+    print('\n==== the main job ====')
+    print(steps.table())
+    print('RESULT: %s' % ('PASS' if steps.passed() else 'FAIL'))
+    return 0 if steps.passed() else 1
 
 
 if __name__ == '__main__':
