@@ -134,8 +134,9 @@ def main():
     args = parser.parse_args()
     mros_root = os.environ.get('MROS_V1_ROOT', '')
     if not os.path.isfile(os.path.join(mros_root, 'mros-lib', 'Makefile.m')):
-        print("no mROS v1 checkout at '%s': set MROS_V1_ROOT" % mros_root, file=sys.stderr)
-        return 1
+        print("%s: needs an mROS v1 checkout: set MROS_V1_ROOT (no mros-lib/Makefile.m at '%s')"
+              % (os.path.basename(sys.argv[0]), mros_root), file=sys.stderr)
+        return 2
     samples = {'mros_v1': [], 'mros_v1_hardened': [], 'roscpp': []}
     with tempfile.TemporaryDirectory(prefix='mros_v1_pc_bench_') as scratch:
         workspace, programs = build(mros_root, os.path.abspath(args.build_dir or scratch))

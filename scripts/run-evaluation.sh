@@ -1,18 +1,18 @@
 #!/usr/bin/env bash
-# The main job: on a fresh Debian 12 machine, install what is needed
-# (scripts/setup.sh), build test_ws with catkin_make (genmros runs beside
-# gencpp/genpy), build the paper's evaluation app with the real mROS v1
-# library on the PC target (genmros mros-v1-pc, run under qemu-arm), start a
-# real rosmaster on a free loopback port and run the mROS paper's evaluation
-# in every direction against real rospy and roscpp nodes, on-board delivery
-# included. The mROS v1 checkout is MROS_V1_ROOT, default ../shared/mros_v1
-# beside this repository. Stops everything it started; exits 0 only if every
-# direction delivered the right values.
+# The main job (evaluation/run.py), on a fresh Debian 12 machine: installs
+# what is needed (scripts/setup.sh --tests), builds test_ws with catkin_make
+# (genmros beside gencpp and genpy, writing the export dir) and with colcon
+# build --mros-export, builds a firmware's CMake project on that export for
+# 32-bit ARM Linux, Cortex-M0 and Cortex-M4, runs the ARM program under
+# qemu-arm against a real rosmaster and rospy and roscpp nodes, and shows that
+# a field added to a message reaches the firmware through the next builds.
+# With MROS_V1_ROOT naming the user's mROS v1 checkout it also runs the
+# paper's evaluation on that library. One line per step, a PASS/FAIL table
+# at the end; stops everything it started; exits 0 only if every step passed.
 #
-#   scripts/run-evaluation.sh [--messages N] [--build-dir DIR]   (evaluation/run.py)
+#   [MROS_V1_ROOT=<checkout>] scripts/run-evaluation.sh [--messages N] [--build-dir DIR]
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
 "$here/scripts/setup.sh" --tests
-export MROS_V1_ROOT="${MROS_V1_ROOT:-$(dirname "$here")/shared/mros_v1}"
 exec /usr/bin/python3 "$here/evaluation/run.py" "$@"

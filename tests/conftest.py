@@ -7,7 +7,7 @@ import sys
 import pytest
 
 import built_workspace
-from mros_v1_checkout import MROS_V1_ROOT, checkout_found
+from mros_v1_checkout import checkout_found, missing_reason
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TEST_WS = os.path.join(REPO, 'test_ws')
@@ -24,7 +24,7 @@ def pytest_collection_modifyitems(config, items):
     """Tests marked needs_mros_v1 are skipped, saying why, without a checkout."""
     if checkout_found():
         return
-    skip = pytest.mark.skip(reason='no mROS v1 checkout at %s (set MROS_V1_ROOT)' % MROS_V1_ROOT)
+    skip = pytest.mark.skip(reason=missing_reason())
     for item in items:
         if 'needs_mros_v1' in item.keywords:
             item.add_marker(skip)

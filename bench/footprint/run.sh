@@ -15,7 +15,11 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 repo="$here/../.."
-mros_src="${MROS_V1_ROOT:?set MROS_V1_ROOT to an mROS v1 checkout (its api/ros.h declares the API)}/mros-lib/mros-src"
+if [ ! -f "${MROS_V1_ROOT:-}/mros-lib/Makefile.m" ]; then
+  echo "$0: needs an mROS v1 checkout (its api/ros.h declares the API): set MROS_V1_ROOT" >&2
+  exit 2
+fi
+mros_src="$MROS_V1_ROOT/mros-lib/mros-src"
 ros_h=(-I"$mros_src/api" -I"$mros_src/os/target/os_asp" -I"$repo/colcon_mros/mros_v1/pc_target/asp")
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT

@@ -705,7 +705,8 @@ def main():
     args = parser.parse_args()
     mros_root = os.environ.get('MROS_V1_ROOT', '')
     if not os.path.isfile(os.path.join(mros_root, 'mros-lib', 'Makefile.m')):
-        print("no mROS v1 checkout at '%s': set MROS_V1_ROOT" % mros_root, file=sys.stderr)
+        print("%s: needs an mROS v1 checkout: set MROS_V1_ROOT (no mros-lib/Makefile.m at '%s')"
+              % (os.path.basename(sys.argv[0]), mros_root), file=sys.stderr)
         return 2
     seed = args.seed if args.seed is not None else random.randrange(2 ** 31)
     build_root = os.path.abspath(args.build_dir or tempfile.mkdtemp(prefix='network_fuzz_'))

@@ -1,6 +1,6 @@
 """colcon_mros.mros_v1.pc_target.asp_cfg: the PC target's TOPPERS/ASP configurator, on
 app.cfg files of its own and on the real mROS v1 kernel configuration when a
-checkout is there (MROS_V1_ROOT, default ../shared/mros_v1)."""
+checkout is given (MROS_V1_ROOT)."""
 
 import os
 

@@ -5,8 +5,8 @@ mros-lib for 32-bit ARM Linux (the board's instruction set), and they run
 under qemu-arm against a real rosmaster, the sample's own roscpp nodes
 (ros_catkin_ws, built here with catkin_make) and rospy.
 
-The checkout is MROS_V1_ROOT, default ../shared/mros_v1 beside this
-repository; without one these tests are skipped, saying so. Nothing of it is
+The checkout is the one MROS_V1_ROOT names; without one these tests are
+skipped, saying so. Nothing of it is
 copied: builds and workspaces are in temporary directories.
 
 The library needs its peers on another address than its own (it ignores a

@@ -1,6 +1,6 @@
 """genmros mros-v1-pc on bad input: one `genmros: error:` line naming the
 file (and line) and the problem, exit 1, nothing built. The cases with an
-app of the real checkout use MROS_V1_ROOT (default ../shared/mros_v1) and
+app of the real checkout use the checkout MROS_V1_ROOT names and
 write only to temporary directories."""
 
 import os
