@@ -1,23 +1,20 @@
 """The PC target's TOPPERS/ASP scheduling (colcon_mros/mros_v1/pc_target/asp/kernel.c), on its
 own: a program of ours (tests/fixtures/pc_target_kernel) configured from its
-own .cfg by colcon_mros.mros_v1.pc_target.asp_cfg, as an mROS v1 app is, runs scenarios whose
+own .cfg by colcon_mros.mros_v1.pc_target.asp_cfg, as an mROS v1 app is
+(tests/stand_in_programs.py), runs scenarios whose
 traces show ASP's rules: highest priority first and FIFO within one, a
 task whose priority is set going behind its equals, activation and wake-up
 requests queued up to 1, time-outs, delays and cyclic handlers on time, and
 one task at a time (the mROS v1 library's only mutual exclusion).
 """
 
-import os
 import re
 import subprocess
 
 import pytest
 
-from conftest import REPO
-from colcon_mros.mros_v1.pc_target.asp_cfg import read_config, write_kernel_config
+import stand_in_programs
 
-FIXTURE = os.path.join(REPO, 'tests', 'fixtures', 'pc_target_kernel')
-PC_TARGET = os.path.join(REPO, 'colcon_mros', 'mros_v1', 'pc_target')
 E_OK, E_QOVR, E_TMOUT = 0, -43, -50
 # Timing on a loaded 2-core machine: late by up to this much, never early.
 LATENESS_MS = 60
@@ -25,16 +22,8 @@ LATENESS_MS = 60
 
 @pytest.fixture(scope='module')
 def trace(tmp_path_factory):
-    build = str(tmp_path_factory.mktemp('kernel_test'))
-    config = read_config(os.path.join(FIXTURE, 'kernel_test.cfg'), [])
-    write_kernel_config(config, os.path.join(build, 'cfg'))
-    program = os.path.join(build, 'kernel_test')
-    subprocess.run(['gcc', '-O2', '-Wall', '-Wextra', '-Werror', '-pthread',
-                    '-I', os.path.join(build, 'cfg'), '-I', os.path.join(PC_TARGET, 'asp'),
-                    '-I', FIXTURE, os.path.join(PC_TARGET, 'asp', 'kernel.c'),
-                    os.path.join(PC_TARGET, 'asp', 'task_stacks.c'),
-                    os.path.join(build, 'cfg', 'kernel_cfg.c'),
-                    os.path.join(FIXTURE, 'kernel_test.c'), '-o', program], check=True)
+    program = stand_in_programs.build('pc_target_kernel', 'kernel_test.cfg', ['kernel_test.c'],
+                                      str(tmp_path_factory.mktemp('kernel_test')))
     result = subprocess.run([program], capture_output=True, text=True, timeout=60)
     assert result.returncode == 0, result.stdout + result.stderr
     assert result.stdout.rstrip().endswith('done'), result.stdout

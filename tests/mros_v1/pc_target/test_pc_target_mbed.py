@@ -3,41 +3,21 @@ own with the kernel: a program of ours (tests/fixtures/pc_target_mbed) built
 natively under AddressSanitizer, whose Ticker and Timeout share the kernel's
 timers as a board's share its hardware timer."""
 
-import os
 import subprocess
 
 import pytest
 
-from colcon_mros.mros_v1.pc_target.asp_cfg import read_config, write_kernel_config
-from conftest import REPO
+import stand_in_programs
 
-FIXTURE = os.path.join(REPO, 'tests', 'fixtures', 'pc_target_mbed')
-PC_TARGET = os.path.join(REPO, 'colcon_mros', 'mros_v1', 'pc_target')
-SANITIZE = ['-fsanitize=address,undefined', '-fno-omit-frame-pointer', '-g']
+STAND_INS = ('asp/kernel.c', 'asp/task_stacks.c', 'lwip/lwip.cpp', 'mbed/mbed.cpp')
 
 
 @pytest.fixture(scope='module')
 def ticker_output(tmp_path_factory):
-    build = str(tmp_path_factory.mktemp('ticker_test'))
-    write_kernel_config(read_config(os.path.join(FIXTURE, 'ticker_test.cfg'), []),
-                        os.path.join(build, 'cfg'))
-    includes = ['-I', os.path.join(build, 'cfg'), '-I', FIXTURE]
-    for name in ('asp', 'mbed', 'lwip', 'config'):
-        includes += ['-I', os.path.join(PC_TARGET, name)]
-    objects = []
-    for source in (os.path.join(PC_TARGET, 'asp', 'kernel.c'),
-                   os.path.join(PC_TARGET, 'asp', 'task_stacks.c'),
-                   os.path.join(PC_TARGET, 'lwip', 'lwip.cpp'),
-                   os.path.join(build, 'cfg', 'kernel_cfg.c')):
-        objects.append(os.path.join(build, os.path.basename(source) + '.o'))
-        compiler = ['g++', '-std=gnu++11'] if source.endswith('.cpp') else ['gcc']
-        subprocess.run(compiler + ['-O1', '-Wall', '-Wextra', '-Werror', '-pthread', '-c']
-                       + SANITIZE + includes + [source, '-o', objects[-1]], check=True)
-    program = os.path.join(build, 'ticker_test')
-    subprocess.run(['g++', '-O1', '-Wall', '-Wextra', '-Werror', '-pthread'] + SANITIZE + includes
-                   + [os.path.join(PC_TARGET, 'mbed', 'mbed.cpp'),
-                      os.path.join(FIXTURE, 'ticker_test.cpp')] + objects + ['-o', program],
-                   check=True)
+    program = stand_in_programs.build(
+        'pc_target_mbed', 'ticker_test.cfg', ['ticker_test.cpp'],
+        str(tmp_path_factory.mktemp('ticker_test')),
+        stand_ins=STAND_INS, flags=['-O1'] + stand_in_programs.SANITIZE)
     return subprocess.run([program], capture_output=True, text=True, timeout=60)
 
 
