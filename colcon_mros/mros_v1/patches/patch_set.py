@@ -110,6 +110,9 @@ def _patched_text(text, hunks, path):
     in one other place (where another patch moved them)."""
     lines = text.splitlines(keepends=True)
     shift = 0
+    # Lines the hunks applied so far added (or took away): a mismatch is
+    # reported at its line in text, not in the half-patched lines.
+    grown = 0
 
     def found_at(start, count):
         return [line.rstrip('\r\n') for line in lines[start:start + count]]
@@ -122,12 +125,13 @@ def _patched_text(text, hunks, path):
                 found = found_at(start, len(hunk.old))
                 mismatch = next((index for index, (have, want) in enumerate(zip(found, hunk.old))
                                  if have != want), len(found))
-                raise _Mismatch(path, start + mismatch + 1)
+                raise _Mismatch(path, start - grown + mismatch + 1)
             shift += elsewhere[0] - start
             start = elsewhere[0]
         ending = '\r\n' if lines and lines[min(start, len(lines) - 1)].endswith('\r\n') else '\n'
         lines[start:start + len(hunk.old)] = [line + ending for line in hunk.new]
         shift += len(hunk.new) - len(hunk.old)
+        grown += len(hunk.new) - len(hunk.old)
     return ''.join(lines)
 
 
