@@ -13,7 +13,7 @@ import re
 import shutil
 
 import pytest
-from mros_v1_checkout import MROS_V1_ROOT
+from settings_headers import header_paths, small_settings
 from fixtures.build_integration.tools import (
     FIRMWARE_FIXTURE, TEST_WS_SRC, genmsg_md5, new_workspace, run, search_path_of, unwrapped)
 
@@ -317,17 +317,10 @@ def test_bad_options_line_fails_the_configure_step_with_its_place(firmware, work
 
 
 def _settings_headers(tmp_path, request_buffer):
-    """Copies of the mROS v1 settings headers a firmware builds with (the
-    samples' app config, the library's packet config), with the subscriber
-    header buffer set to request_buffer bytes."""
-    usr_config = tmp_path / 'mros_usr_config.h'
-    packet_config = tmp_path / 'mros_packet_config.h'
-    shutil.copy(os.path.join(MROS_V1_ROOT, 'mros_ws', 'custom_pubsub', 'mros_config',
-                             'mros_usr_config.h'), str(usr_config))
-    shutil.copy(os.path.join(MROS_V1_ROOT, 'mros-lib', 'mros-src', 'packet', 'cimpl', 'version',
-                             'kinetic', 'mros_packet_config.h'), str(packet_config))
-    _set_request_buffer(packet_config, request_buffer)
-    return [str(usr_config), str(packet_config)]
+    """Copies of the small mROS v1 settings headers (tests/fixtures/
+    mros_v1_settings: the app's config, the library's packet config), with
+    the subscriber header buffer set to request_buffer bytes."""
+    return header_paths(small_settings(tmp_path, MROS_PACKET_MAXSIZE_REQ_TCPROS=request_buffer))
 
 
 def _set_request_buffer(packet_config, size):
@@ -337,7 +330,6 @@ def _set_request_buffer(packet_config, size):
     packet_config.write_text(text)
 
 
-@pytest.mark.needs_mros_v1
 def test_the_fit_check_stops_configure_and_build_with_the_setting_to_change(firmware, workspace,
                                                                            tmp_path):
     settings = _settings_headers(tmp_path, 200)

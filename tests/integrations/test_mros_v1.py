@@ -19,7 +19,7 @@ import pytest
 
 from compile_checks import LANGUAGE_MODES, STRICT_FLAGS, TARGETS, every_header_translation_unit
 from conftest import REPO, TEST_WS, run_genmros
-from mros_v1_checkout import MROS_V1_ROOT
+from settings_headers import define, header_paths, small_settings
 
 # cmake, colcon, catkin or make builds: more than half a minute.
 pytestmark = pytest.mark.slow
@@ -140,24 +140,17 @@ def test_make_refuses_bad_input_and_leaves_the_include_dir(app_dir):
     assert _snapshot(str(app_dir / 'include')) == before
 
 
-@pytest.mark.needs_mros_v1
 def test_the_make_fragment_stops_where_the_settings_are_too_small(app_dir, tmp_path):
     # The settings the app builds with, given to genmros in MROS_MSG_FLAGS:
-    # the samples' app config and a packet config whose subscriber header
-    # buffer is too small for PersonalData's even with the shortest names
-    # (NestedTypes, with its 3.7 KB definition text, needs both buffers larger).
+    # the small settings with a subscriber header buffer too small for
+    # PersonalData's even with the shortest names (NestedTypes, with its
+    # 3.7 KB definition text, needs both buffers larger).
     made = _make(app_dir)
     assert made.returncode == 0, made.stderr[-3000:]
     before = _snapshot(str(app_dir / 'include'))
-    usr_config = os.path.join(MROS_V1_ROOT, 'mros_ws', 'custom_pubsub', 'mros_config',
-                              'mros_usr_config.h')
-    packet_config = tmp_path / 'mros_packet_config.h'
-    with open(os.path.join(MROS_V1_ROOT, 'mros-lib', 'mros-src', 'packet', 'cimpl', 'version',
-                           'kinetic', 'mros_packet_config.h')) as stream:
-        packet_text = stream.read()
-    packet_config.write_text(re.sub(r'(#define MROS_PACKET_MAXSIZE_REQ_TCPROS\s+)\d+', r'\g<1>100',
-                                    packet_text))
-    lines = {setting: packet_text[:packet_text.index('#define ' + setting)].count('\n') + 1
+    usr_config, packet_config = header_paths(small_settings(
+        tmp_path, MROS_PACKET_MAXSIZE_REQ_TCPROS=100, MROS_PACKET_MAXSIZE_RES_TCPROS=512))
+    lines = {setting: define([packet_config], setting)[2]
              for setting in ('MROS_PACKET_MAXSIZE_REQ_TCPROS', 'MROS_PACKET_MAXSIZE_RES_TCPROS')}
     flags = 'MROS_MSG_FLAGS=--mros-v1-settings %s --mros-v1-settings %s' % (usr_config,
                                                                             packet_config)

@@ -145,9 +145,12 @@ def test_settings_without_a_rule_s_setting_are_named(tmp_path):
         "library's mros_packet_config.h and the app's mros_usr_config.h)")
 
 
-@pytest.mark.needs_mros_v1
-def test_a_long_definition_text_misfits_the_samples_settings_with_one_line_each():
-    settings = read_settings([USR_CONFIG, PACKET_CONFIG])
+@pytest.mark.parametrize('headers', [
+    pytest.param(lambda: header_paths(small_settings()), id='small settings'),
+    pytest.param(lambda: [USR_CONFIG, PACKET_CONFIG], id='the samples\' settings',
+                 marks=pytest.mark.needs_mros_v1)])
+def test_a_long_definition_text_misfits_with_one_line_each(headers):
+    settings = read_settings(headers())
     fit = Fit(_messages('sensor_msgs/JointState', 'std_msgs/String'), settings)
     text = len(_genpy_full_text('sensor_msgs/JointState').encode())
     topic = settings['MROS_TOPIC_NAME_MAXLEN'].value
