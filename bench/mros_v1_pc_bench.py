@@ -32,9 +32,13 @@ import subprocess
 import sys
 import tempfile
 
-from colcon_mros.mros_v1.pc_target.ros_graph import CatkinWorkspace, RosGraph, board_environment
-
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# testing/, what the tests, the benches and the main job share, is not installed:
+# it comes from this repository, after the installed genmros.
+sys.path.append(REPO)
+
+from testing.ros_graph import CatkinWorkspace, RosGraph, board_environment  # noqa: E402
+
 TEST_WS_SRC = os.path.join(REPO, 'test_ws', 'src')
 TALKER_APP = os.path.join(REPO, 'bench', 'mros_v1_pc')
 

@@ -18,8 +18,8 @@ import subprocess
 import time
 import xmlrpc.client
 
-from colcon_mros.mros_v1.pc_target.ros_graph import DELIVERY_TIMEOUT, PYTHON, RosGraph
-from colcon_mros.mros_v1.pc_target.tcpros_peer import RawSubscriber
+from testing.ros_graph import DELIVERY_TIMEOUT, PYTHON, RosGraph
+from testing.tcpros_peer import RawSubscriber
 
 from paper import BOARD, ROS, ROS_HEARD, Direction, ros_heard
 

@@ -10,7 +10,7 @@ import re
 import shutil
 import subprocess
 
-from colcon_mros.mros_v1.pc_target.ros_graph import DELIVERY_TIMEOUT, Board, RosGraph
+from testing.ros_graph import DELIVERY_TIMEOUT, Board, RosGraph
 
 from paper import BOARD, ROS, ROS_HEARD, Direction, ros_heard
 

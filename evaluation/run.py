@@ -30,12 +30,16 @@ import sys
 import tempfile
 import time
 
-from colcon_mros.mros_v1.pc_target.ros_graph import PYTHON, CatkinWorkspace
-
-import board
-import mros_v1
-
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# testing/, what the tests, the benches and the main job share, is not installed:
+# it comes from this repository, after the installed genmros.
+sys.path.append(REPO)
+
+from testing.ros_graph import PYTHON, CatkinWorkspace  # noqa: E402
+
+import board  # noqa: E402
+import mros_v1  # noqa: E402
+
 TEST_WS_SRC = os.path.join(REPO, 'test_ws', 'src')
 NODES_PACKAGE = 'mros_test_nodes'
 MESSAGE_PACKAGES = ('mros_test_base', 'mros_test')

@@ -10,7 +10,7 @@ import shutil
 import tempfile
 
 from checkout_install import checkout_install
-from colcon_mros.mros_v1.pc_target.ros_graph import CatkinWorkspace
+from testing.ros_graph import CatkinWorkspace
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TEST_WS = os.path.join(REPO, 'test_ws')

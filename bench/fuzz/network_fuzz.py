@@ -61,9 +61,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, REPO)  # this checkout's genmros, which also builds the app
 
-from colcon_mros.mros_v1.pc_target.ros_graph import (  # noqa: E402
+from testing.ros_graph import (  # noqa: E402
     BOARD_IP, PEER_IP, Board, RosGraph)
-from colcon_mros.mros_v1.pc_target.tcpros_peer import (  # noqa: E402
+from testing.tcpros_peer import (  # noqa: E402
     HostilePublisher, RawSubscriber, TimedTransport, encode_header, frame, read_header)
 
 RELAY_APP = os.path.join(HERE, 'relay_app')

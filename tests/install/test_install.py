@@ -113,3 +113,15 @@ def _readme_catkin_prefix_line():
                  if 'catkin-prefix' in line and line.lstrip().startswith('prefix=')]
     assert len(set(lines)) == 1, lines
     return lines[0]
+
+
+def test_nothing_test_only_is_installed():
+    # What the tests, the benches and the main job share stays in the
+    # repository (testing/); the package has the product alone.
+    python_files = [path for path in _package_files() if path.endswith('.py')]
+    assert any(path.endswith('/colcon_mros/cli.py') for path in python_files)
+    repository_only = [path for path in python_files
+                       if not path.startswith('/usr/lib/python3/dist-packages/colcon_mros/')]
+    assert repository_only == []
+    assert not any(os.path.basename(path) in ('ros_graph.py', 'tcpros_peer.py')
+                   for path in python_files)

@@ -16,8 +16,8 @@ from colcon_mros.mros_v1.fit import Fit
 from colcon_mros.mros_v1.rules import (PEER_NAME_MAX, PUBLISHER_HEADER_FIXED,
                                        SUBSCRIBER_HEADER_FIXED, FirmwareNeeds)
 from colcon_mros.mros_v1.settings import read_settings
-from colcon_mros.mros_v1.pc_target.ros_graph import PYTHON, RosGraph
-from colcon_mros.mros_v1.pc_target.tcpros_peer import HostilePublisher, RawSubscriber
+from testing.ros_graph import PYTHON, RosGraph
+from testing.tcpros_peer import HostilePublisher, RawSubscriber
 from conftest import TEST_WS
 from mros_v1_checkout import MROS_V1_ROOT
 from settings_headers import define, header_paths, small_settings

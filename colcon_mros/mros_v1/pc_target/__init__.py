@@ -2,7 +2,5 @@
 
 ``genmros mros-v1-pc`` builds them with the stand-ins beside this package
 for the board's TOPPERS/ASP, lwIP and mbed (README.md here says what each
-stands in for and how it differs from the board); ``ros_graph`` runs a
-built app beside real ROS nodes, as the evaluation, the tests and the
-benchmarks do.
+stands in for and how it differs from the board).
 """

@@ -14,9 +14,9 @@ import xmlrpc.client
 
 import pytest
 
-from colcon_mros.mros_v1.pc_target.ros_graph import (DELIVERY_TIMEOUT, PEER_IP, Board,
+from testing.ros_graph import (DELIVERY_TIMEOUT, PEER_IP, Board,
                                                       RosGraph)
-from colcon_mros.mros_v1.pc_target.tcpros_peer import (
+from testing.tcpros_peer import (
     HostilePublisher, RawSubscriber, closed_by_peer, encode_header)
 from conftest import run_genmros
 from mros_v1_checkout import MROS_V1_ROOT

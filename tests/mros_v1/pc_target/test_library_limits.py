@@ -16,9 +16,9 @@ import time
 
 import pytest
 
-from colcon_mros.mros_v1.pc_target.ros_graph import (
+from testing.ros_graph import (
     DELIVERY_TIMEOUT, PEER_IP, Board, RosGraph)
-from colcon_mros.mros_v1.pc_target.tcpros_peer import (
+from testing.tcpros_peer import (
     HostilePublisher, closed_by_peer, encode_header, frame)
 from mros_v1_checkout import MROS_V1_ROOT
 from pc_target_apps import build_app, library_copy

@@ -29,9 +29,9 @@ import xmlrpc.client
 
 import pytest
 
-from colcon_mros.mros_v1.pc_target.ros_graph import (
+from testing.ros_graph import (
     BOARD_IP, DELIVERY_TIMEOUT, PEER_IP, Board, RosGraph, free_port, sourced_environment)
-from colcon_mros.mros_v1.pc_target.tcpros_peer import (
+from testing.tcpros_peer import (
     HostilePublisher, RawSubscriber, encode_header)
 from conftest import REPO
 from fixtures.build_integration.tools import run

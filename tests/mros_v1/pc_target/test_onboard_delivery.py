@@ -7,7 +7,7 @@ as the library's publishing pools hold (it remembered the last 4 notes)."""
 
 import pytest
 
-from colcon_mros.mros_v1.pc_target.ros_graph import DELIVERY_TIMEOUT, Board, RosGraph
+from testing.ros_graph import DELIVERY_TIMEOUT, Board, RosGraph
 from mros_v1_checkout import MROS_V1_ROOT
 from pc_target_apps import build_app
 

@@ -11,7 +11,7 @@ import subprocess
 import pytest
 
 import stand_in_programs
-from colcon_mros.mros_v1.pc_target.ros_graph import Process
+from testing.ros_graph import Process
 
 STAND_INS = ('asp/kernel.c', 'asp/task_stacks.c', 'lwip/lwip.cpp', 'mbed/mbed.cpp')
 

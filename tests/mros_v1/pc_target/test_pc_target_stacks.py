@@ -13,7 +13,7 @@ import signal
 import pytest
 
 import stand_in_programs
-from colcon_mros.mros_v1.pc_target.ros_graph import Process
+from testing.ros_graph import Process
 
 pytestmark = [pytest.mark.needs_qemu, pytest.mark.slow]
 

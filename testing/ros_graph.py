@@ -22,6 +22,7 @@ import re
 import signal
 import socket
 import subprocess
+import sys
 import tempfile
 import threading
 import time
@@ -36,7 +37,9 @@ PEER_IP = '127.0.0.1'
 # How long a message may take through qemu, the library's 100 ms polling
 # and a loaded machine.
 DELIVERY_TIMEOUT = 30
-PYTHON = '/usr/bin/python3'  # Debian's, the one that has rospy
+# The Python of the ROS environment: the one running the tests, the bench or
+# the main job (their scripts run them with the Python that has rospy).
+PYTHON = sys.executable
 
 
 def _let_nodes_stop_on_sigint():
