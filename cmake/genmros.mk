@@ -10,7 +10,8 @@
 #
 # Before make builds anything, it writes the headers of those types and of
 # every type they contain, and the aggregates the mROS library includes
-# (message_headers.h, message_class_specialization.h, msg_max_size.h), into
+# (message_headers.h, message_class_specialization.h, msg_max_size.h, and
+# mros_v1_delivery.h and mros_v1_fit_check.h, which they include), into
 # the app's include directory; it writes them again whenever one of the
 # .msg/.srv files they come from, or a setting below, changes.
 #

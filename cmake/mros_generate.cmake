@@ -26,7 +26,8 @@
 #
 # Both write the per-firmware aggregates for exactly the listed types
 # (message_headers.h, message_class_specialization.h, msg_max_size.h, so
-# PUB_MSG_MAX_SIZE fits the firmware's types) and give t the include
+# PUB_MSG_MAX_SIZE fits the firmware's types, and mros_v1_delivery.h and
+# mros_v1_fit_check.h, which they include) and give t the include
 # directories. STORAGE bounded holds strings and variable arrays in the
 # message, with the maxima of the OPTIONS files and of each package's
 # msg/genmros.options (genmros export --storage bounded --options); editing

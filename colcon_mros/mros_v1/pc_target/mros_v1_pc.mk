@@ -40,13 +40,13 @@ MROS_MSG_INCLUDE_DIR := $(BUILD)/include
 include $(GENMROS_MK)
 
 # On arm, tasks run on the board's stack sizes (asp/task_stacks.c) and the
-# host C library on the host stack: the link wraps what newlib/newlib.c
+# host C library on the host stack: the link wraps what host_libc/host_libc.c
 # defines as __wrap_NAME.
 ifeq ($(TARGET),arm)
 CROSS := arm-linux-gnueabihf-
 CPU_FLAGS := -mcpu=cortex-a9 -marm -mfpu=vfpv3 -mfloat-abi=hard -mno-unaligned-access
 LINK_FLAGS := -static
-HOST_LIBC_OBJS := newlib.o
+HOST_LIBC_OBJS := host_libc.o
 else ifeq ($(TARGET),native)
 CROSS :=
 CPU_FLAGS :=
@@ -61,10 +61,10 @@ NM := $(CROSS)nm
 
 OBJ_DIR := $(BUILD)/obj
 ifneq ($(HOST_LIBC_OBJS),)
-HOST_LIBC_WRAP := $(OBJ_DIR)/newlib.wrap
+HOST_LIBC_WRAP := $(OBJ_DIR)/host_libc.wrap
 LINK_FLAGS += -Wl,@$(HOST_LIBC_WRAP)
 endif
-PC_SOURCE_DIRS := $(PC_TARGET)/asp $(PC_TARGET)/lwip $(PC_TARGET)/mbed $(PC_TARGET)/newlib \
+PC_SOURCE_DIRS := $(PC_TARGET)/asp $(PC_TARGET)/lwip $(PC_TARGET)/mbed $(PC_TARGET)/host_libc \
                   $(PC_TARGET)/config
 # The app's sources first: its mros_config/ replaces the library's config/.
 VPATH := $(APP_DIRS) $(BUILD)/cfg $(VPATH) $(PC_SOURCE_DIRS)
@@ -97,8 +97,8 @@ app: $(APP_ONLY_OBJS)
 $(BUILD)/$(APP_NAME): $(LIBRARY_OBJS) $(APP_ONLY_OBJS) $(HOST_LIBC_WRAP)
 	$(CXX) $(CPU_FLAGS) -pthread $(SANITIZER_FLAGS) $(LINK_FLAGS) -o $@ $(LIBRARY_OBJS) $(APP_ONLY_OBJS)
 
-# --wrap=NAME for each __wrap_NAME newlib.o defines.
-$(HOST_LIBC_WRAP): $(OBJ_DIR)/newlib.o
+# --wrap=NAME for each __wrap_NAME host_libc.o defines.
+$(HOST_LIBC_WRAP): $(OBJ_DIR)/host_libc.o
 	$(NM) --defined-only $< | sed -n 's/^.* T __wrap_\(.*\)$$/--wrap=\1/p' > $@
 
 $(OBJ_DIR)/%.o: %.c | $(OBJ_DIR)

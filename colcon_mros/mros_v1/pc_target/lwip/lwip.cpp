@@ -38,25 +38,26 @@ void on_host_stack(Work work) {
   pc_on_host_stack(do_work<Work>, &work);
 }
 
+// A host call: the task gives up the CPU while call() runs on its thread's
+// host stack, and the host's errno comes back with the result.
+template <typename Call>
+int host_call(Call call) {
+  int result = 0;
+  int host_errno = 0;
+  on_host_stack([&] {
+    pc_host_call_begin();
+    result = call();
+    host_errno = errno;
+    pc_host_call_end();
+  });
+  errno = host_errno;
+  return result;
+}
+
 }  // namespace
 
-/* A host call that keeps the host's errno for the caller. */
-#define HOST_CALL(type, call)      \
-  do {                             \
-    type result_;                  \
-    int errno_;                    \
-    on_host_stack([&] {            \
-      pc_host_call_begin();        \
-      result_ = (call);            \
-      errno_ = errno;              \
-      pc_host_call_end();          \
-    });                            \
-    errno = errno_;                \
-    return result_;                \
-  } while (0)
-
 int lwip_accept(int s, struct sockaddr *addr, socklen_t *addrlen) {
-  HOST_CALL(int, accept(s, addr, addrlen));
+  return host_call([&] { return accept(s, addr, addrlen); });
 }
 
 /* The slave and publisher ports are fixed; a PC restarts the node far more
@@ -73,75 +74,81 @@ int lwip_bind(int s, const struct sockaddr *name, socklen_t namelen) {
     memcpy(&node, name, sizeof node);
     if (node.sin_addr.s_addr == htonl(INADDR_ANY)) {
       inet_pton(AF_INET, pc_node_address(), &node.sin_addr);
-      HOST_CALL(int, bind(s, reinterpret_cast<struct sockaddr *>(&node), sizeof node));
+      return host_call(
+          [&] { return bind(s, reinterpret_cast<struct sockaddr *>(&node), sizeof node); });
     }
   }
-  HOST_CALL(int, bind(s, name, namelen));
+  return host_call([&] { return bind(s, name, namelen); });
 }
 
-int lwip_shutdown(int s, int how) { HOST_CALL(int, shutdown(s, how)); }
+int lwip_shutdown(int s, int how) { return host_call([&] { return shutdown(s, how); }); }
 
 int lwip_getpeername(int s, struct sockaddr *name, socklen_t *namelen) {
-  HOST_CALL(int, getpeername(s, name, namelen));
+  return host_call([&] { return getpeername(s, name, namelen); });
 }
 
 int lwip_getsockname(int s, struct sockaddr *name, socklen_t *namelen) {
-  HOST_CALL(int, getsockname(s, name, namelen));
+  return host_call([&] { return getsockname(s, name, namelen); });
 }
 
 int lwip_getsockopt(int s, int level, int optname, void *optval, socklen_t *optlen) {
-  HOST_CALL(int, getsockopt(s, level, optname, optval, optlen));
+  return host_call([&] { return getsockopt(s, level, optname, optval, optlen); });
 }
 
 int lwip_setsockopt(int s, int level, int optname, const void *optval, socklen_t optlen) {
-  HOST_CALL(int, setsockopt(s, level, optname, optval, optlen));
+  return host_call([&] { return setsockopt(s, level, optname, optval, optlen); });
 }
 
-int lwip_close(int s) { HOST_CALL(int, close(s)); }
+int lwip_close(int s) { return host_call([&] { return close(s); }); }
 
 int lwip_connect(int s, const struct sockaddr *name, socklen_t namelen) {
-  HOST_CALL(int, connect(s, name, namelen));
+  return host_call([&] { return connect(s, name, namelen); });
 }
 
-int lwip_listen(int s, int backlog) { HOST_CALL(int, listen(s, backlog)); }
+int lwip_listen(int s, int backlog) { return host_call([&] { return listen(s, backlog); }); }
 
 int lwip_recv(int s, void *mem, size_t len, int flags) {
-  HOST_CALL(int, (int)recv(s, mem, len, flags));
+  return host_call([&] { return (int)recv(s, mem, len, flags); });
 }
 
-int lwip_read(int s, void *mem, size_t len) { HOST_CALL(int, (int)read(s, mem, len)); }
+int lwip_read(int s, void *mem, size_t len) {
+  return host_call([&] { return (int)read(s, mem, len); });
+}
 
 int lwip_recvfrom(int s, void *mem, size_t len, int flags, struct sockaddr *from,
                   socklen_t *fromlen) {
-  HOST_CALL(int, (int)recvfrom(s, mem, len, flags, from, fromlen));
+  return host_call([&] { return (int)recvfrom(s, mem, len, flags, from, fromlen); });
 }
 
 /* A peer that has gone away gives an error, not SIGPIPE. */
 int lwip_send(int s, const void *dataptr, size_t size, int flags) {
-  HOST_CALL(int, (int)send(s, dataptr, size, flags | MSG_NOSIGNAL));
+  return host_call([&] { return (int)send(s, dataptr, size, flags | MSG_NOSIGNAL); });
 }
 
 int lwip_sendto(int s, const void *dataptr, size_t size, int flags, const struct sockaddr *to,
                 socklen_t tolen) {
-  HOST_CALL(int, (int)sendto(s, dataptr, size, flags | MSG_NOSIGNAL, to, tolen));
+  return host_call(
+      [&] { return (int)sendto(s, dataptr, size, flags | MSG_NOSIGNAL, to, tolen); });
 }
 
 int lwip_socket(int domain, int type, int protocol) {
-  HOST_CALL(int, socket(domain, type, protocol));
+  return host_call([&] { return socket(domain, type, protocol); });
 }
 
 int lwip_write(int s, const void *dataptr, size_t size) {
-  HOST_CALL(int, (int)send(s, dataptr, size, MSG_NOSIGNAL));
+  return host_call([&] { return (int)send(s, dataptr, size, MSG_NOSIGNAL); });
 }
 
 int lwip_select(int maxfdp1, fd_set *readset, fd_set *writeset, fd_set *exceptset,
                 struct timeval *timeout) {
-  HOST_CALL(int, select(maxfdp1, readset, writeset, exceptset, timeout));
+  return host_call([&] { return select(maxfdp1, readset, writeset, exceptset, timeout); });
 }
 
-int lwip_ioctl(int s, long cmd, void *argp) { HOST_CALL(int, ioctl(s, (unsigned long)cmd, argp)); }
+int lwip_ioctl(int s, long cmd, void *argp) {
+  return host_call([&] { return ioctl(s, (unsigned long)cmd, argp); });
+}
 
-int lwip_fcntl(int s, int cmd, int val) { HOST_CALL(int, fcntl(s, cmd, val)); }
+int lwip_fcntl(int s, int cmd, int val) { return host_call([&] { return fcntl(s, cmd, val); }); }
 
 void lwip_init(void) {}
 

@@ -1,8 +1,8 @@
 /*
- * newlib on a PC: the C library calls the library and the app make, on the
- * arm target run on the calling task thread's host stack (pc_target.h), as
- * the host's C library is not the board's newlib and its stack use tells
- * nothing of the board's. The link wraps every function defined here as
+ * The host's C library in place of the board's newlib: the C library calls
+ * the library and the app make run, on the arm target, on the calling task
+ * thread's host stack (pc_target.h), as the host's C library is not the
+ * board's newlib and its stack use tells nothing of the board's. The link wraps every function defined here as
  * __wrap_NAME (ld --wrap=NAME, listed from this object by mros_v1_pc.mk):
  * calls by name reach __wrap_NAME, which calls the host's __real_NAME.
  * String and memory functions stay where they are called: they are leaves
@@ -154,15 +154,6 @@ static int formatted(void (*function)(void *), struct formatted_call *call) {
   return call->result;
 }
 
-/* The body of a variadic wrapper: function does the call on the host
- * stack, with the arguments that follow last. */
-#define FORMATTED_CALL(function, call, last) \
-  int result;                                \
-  va_start((call).arguments, last);          \
-  result = formatted(function, &(call));     \
-  va_end((call).arguments);                  \
-  return result
-
 int __wrap_vsnprintf(char *buffer, size_t size, const char *format, va_list arguments) {
   struct formatted_call call = {.buffer = buffer, .size = size, .format = format};
   int result;
@@ -174,26 +165,46 @@ int __wrap_vsnprintf(char *buffer, size_t size, const char *format, va_list argu
 
 int __wrap_snprintf(char *buffer, size_t size, const char *format, ...) {
   struct formatted_call call = {.buffer = buffer, .size = size, .format = format};
-  FORMATTED_CALL(call_vsnprintf, call, format);
+  int result;
+  va_start(call.arguments, format);
+  result = formatted(call_vsnprintf, &call);
+  va_end(call.arguments);
+  return result;
 }
 
 int __wrap_sprintf(char *buffer, const char *format, ...) {
   struct formatted_call call = {.buffer = buffer, .format = format};
-  FORMATTED_CALL(call_vsprintf, call, format);
+  int result;
+  va_start(call.arguments, format);
+  result = formatted(call_vsprintf, &call);
+  va_end(call.arguments);
+  return result;
 }
 
 int __wrap_fprintf(FILE *stream, const char *format, ...) {
   struct formatted_call call = {.stream = stream, .format = format};
-  FORMATTED_CALL(call_vfprintf, call, format);
+  int result;
+  va_start(call.arguments, format);
+  result = formatted(call_vfprintf, &call);
+  va_end(call.arguments);
+  return result;
 }
 
 int __wrap_printf(const char *format, ...) {
   struct formatted_call call = {.stream = stdout, .format = format};
-  FORMATTED_CALL(call_vfprintf, call, format);
+  int result;
+  va_start(call.arguments, format);
+  result = formatted(call_vfprintf, &call);
+  va_end(call.arguments);
+  return result;
 }
 
 /* sscanf as C99 headers name it. */
 int __wrap___isoc99_sscanf(const char *input, const char *format, ...) {
   struct formatted_call call = {.input = input, .format = format};
-  FORMATTED_CALL(call_vsscanf, call, format);
+  int result;
+  va_start(call.arguments, format);
+  result = formatted(call_vsscanf, &call);
+  va_end(call.arguments);
+  return result;
 }
