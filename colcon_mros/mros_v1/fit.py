@@ -16,25 +16,27 @@ from colcon_mros.mros_v1.rules import (PEER_NAME_MAX, RULES, TABLES, TOPIC_NAME_
 
 
 class Misfit:
-    """A setting too small for a type: the build's one line. A connection
-    header's needed value counts with the longest names; certain, what it
-    needs even with the shortest."""
+    """A setting too small for a type: the build's one line. asked is the
+    value the line asks for; for a connection header, which counts with the
+    longest names the settings allow, with_shortest_names is what it needs
+    even with the shortest (None for the other rules)."""
 
-    def __init__(self, type_name, what, setting, needed, certain=None):
+    def __init__(self, type_name, what, setting, asked, with_shortest_names=None):
         self.type_name = type_name
         self.what = what
         self.setting = setting
-        self.needed = needed
-        self.certain = certain
+        self.asked = asked
+        self.with_shortest_names = with_shortest_names
 
     def line(self):
         """FILE:LINE of the setting, then the type, what needs it, the value
         it needs and the value it has."""
-        shortest = ('' if self.certain is None
-                    else '; even with the shortest topic and caller id it needs %d' % self.certain)
+        shortest = ('' if self.with_shortest_names is None
+                    else '; even with the shortest topic and caller id it needs %d'
+                    % self.with_shortest_names)
         return ('%s: %s: %s needs %s >= %d (it is %d%s)'
                 % (self.setting.where(), self.type_name, self.what, self.setting.name,
-                   self.needed, self.setting.value, shortest))
+                   self.asked, self.setting.value, shortest))
 
 
 def _required(settings, name):
@@ -98,9 +100,10 @@ class Fit:
         self.misfits = []
         self.warnings = []
         for needed, requirements in self.type_requirements:
-            self.misfits += [Misfit(needed.full_name, r.what, r.setting, r.assumed, r.needed)
+            self.misfits += [Misfit(needed.full_name, r.what, r.setting,
+                                    asked=r.assumed, with_shortest_names=r.needed)
                              if r.assumed is not None else
-                             Misfit(needed.full_name, r.what, r.setting, r.needed)
+                             Misfit(needed.full_name, r.what, r.setting, asked=r.needed)
                              for r in requirements if r.needed is not None and not r.fits]
             self.warnings += [
                 '%s: %s needs %s >= %d; %s sets %d, which holds it only while the topic and the '
