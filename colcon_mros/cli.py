@@ -66,7 +66,7 @@ def _add_settings(parser, default):
                         default=[], metavar='FILE',
                         help="an mROS v1 settings header to check the types against: the app's "
                              "mros_usr_config.h and the library's mros_packet_config.h, the one "
-                             'the build includes first first (repeatable; %s)' % default)
+                             'the build includes first (repeatable; %s)' % default)
 
 
 def _add_fit_strict(parser):
@@ -292,14 +292,14 @@ SUBCOMMANDS = (_add_generate, _add_export, _add_printers, _add_export_dir_comman
 
 
 def build_parser():
-    """genmros' argument parser, and the names of its subcommands."""
+    """genmros' argument parser, and its subcommands' parsers by name."""
     parser = argparse.ArgumentParser(prog='genmros', description=DESCRIPTION,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument('--version', action='version', version='genmros %s' % __version__)
     subparsers = parser.add_subparsers(dest='subcommand', metavar='SUBCOMMAND')
     for add in SUBCOMMANDS:
         add(subparsers)
-    return parser, list(subparsers.choices)
+    return parser, subparsers.choices
 
 
 # What each subcommand runs.
@@ -435,7 +435,12 @@ def main(argv=None):
         print("genmros: error: unknown subcommand '%s' (the subcommands: %s)"
               % (argv[0], ', '.join(subcommands)), file=sys.stderr)
         return 2
-    options = genmros.parse_args(argv)
+    options, unknown = genmros.parse_known_args(argv)
+    if unknown and options.subcommand is not None:
+        # The subcommand's usage, not the top level's: it has the options.
+        subcommands[options.subcommand].error('unrecognized arguments: %s' % ' '.join(unknown))
+    if unknown:
+        genmros.error('unrecognized arguments: %s' % ' '.join(unknown))
     if options.subcommand is None:
         genmros.print_usage(sys.stderr)
         print('genmros: error: give a subcommand (genmros --help lists them)', file=sys.stderr)

@@ -1,5 +1,7 @@
 """The one exception type the generator reports to users."""
 
+import difflib
+
 
 class GenmrosError(Exception):
     """A problem in the user's input, reported as one line.
@@ -28,3 +30,10 @@ class GenmrosProblems(GenmrosError):
     def __init__(self, lines):
         self.lines = list(lines)
         super().__init__('\n'.join(self.lines))
+
+
+def close_match(name, candidates):
+    """'; did you mean 'X'?' for the candidate closest to a misspelt name,
+    or '' where none is close."""
+    matches = difflib.get_close_matches(name, sorted(set(candidates)), n=1, cutoff=0.75)
+    return "; did you mean '%s'?" % matches[0] if matches else ''

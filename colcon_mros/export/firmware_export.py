@@ -24,7 +24,7 @@ and genmros are those of the last one does nothing.
 import os
 import time
 
-from colcon_mros.errors import GenmrosError
+from colcon_mros.errors import GenmrosError, close_match
 from colcon_mros.export.export_dir import HEADER_FORM
 from colcon_mros.export.run_record import RunRecord, definition_directories, snapshot
 from colcon_mros.generator.model import ModelBuilder
@@ -80,7 +80,7 @@ class Selection:
     def _package(self, name, what):
         if name not in self._packages:
             raise GenmrosError("unknown package '%s'%s (not in the workspace or the installed "
-                               'ROS packages)' % (name, what))
+                               'ROS packages%s)' % (name, what, close_match(name, self._packages)))
         return self._packages[name]
 
     def _add_package(self, name):
@@ -99,8 +99,9 @@ class Selection:
             if definition.half_of(type_name):
                 self.service_halves.append((definition, full_name))
                 return
-        raise GenmrosError("unknown type '%s' (package %s has no %s.msg or %s.srv)"
-                           % (full_name, package_name, type_name, type_name))
+        raise GenmrosError("unknown type '%s' (package %s has no %s.msg or %s.srv%s)"
+                           % (full_name, package_name, type_name, type_name,
+                              close_match(type_name, package.type_names())))
 
 
 class ExportRequest:

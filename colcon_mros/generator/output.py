@@ -105,11 +105,18 @@ def check_writable(root):
     if not os.path.isdir(probe):
         raise GenmrosError('output directory is not a directory: %s' % probe, root)
     if not os.access(probe, os.W_OK | os.X_OK):
-        raise GenmrosError('cannot write to output directory (permission denied)', root)
+        raise GenmrosError('cannot write to output directory (permission denied)%s'
+                           % NOT_WRITABLE_HINT, root)
+
+
+# What to do about an output directory that cannot be written.
+NOT_WRITABLE_HINT = (': make it writable for this user, or give another (-o, MROS_EXPORT_DIR, '
+                     '--mros-export)')
 
 
 def _write_error(error, root):
-    return GenmrosError('cannot write to output directory (%s)' % (error.strerror or error),
+    hint = NOT_WRITABLE_HINT if error.errno in (errno.EACCES, errno.EPERM, errno.EROFS) else ''
+    return GenmrosError('cannot write to output directory (%s)%s' % (error.strerror or error, hint),
                         getattr(error, 'filename', None) or root)
 
 

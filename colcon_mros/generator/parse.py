@@ -17,11 +17,11 @@ import os
 
 from genmsg import InvalidMsgSpec, MsgNotFound
 from genmsg import msg_loader
-from genmsg.msgs import bare_msg_type, is_builtin, parse_type
+from genmsg.msgs import BUILTIN_TYPES, HEADER, bare_msg_type, is_builtin, parse_type
 from genmsg.names import is_legal_resource_base_name
 
 from colcon_mros.generator.definition import Definition
-from colcon_mros.errors import GenmrosError
+from colcon_mros.errors import GenmrosError, close_match
 from colcon_mros.generator.floats import FLOAT_LIMITS, round_to_type
 from colcon_mros.generator.identity import Identities
 from colcon_mros.generator.names import (check_member_name, check_service_name,
@@ -277,13 +277,20 @@ class SpecLoader:
         if package not in self.search_path:
             raise GenmrosError(
                 "unknown package '%s' for type '%s/%s' (not in the workspace or the "
-                'installed ROS packages)' % (package, package, name), path, line)
+                'installed ROS packages%s)' % (package, package, name,
+                                               close_match(package, self.search_path)),
+                path, line)
         try:
             return msg_loader.get_msg_file(package, name, self.search_path)
         except MsgNotFound:
+            # A misspelt built-in type reaches here as a message of the package.
+            known = [os.path.splitext(entry)[0] for directory in self.search_path[package]
+                     if os.path.isdir(directory) for entry in os.listdir(directory)
+                     if entry.endswith('.msg')] + list(BUILTIN_TYPES) + [HEADER]
             raise GenmrosError(
-                "unknown type '%s/%s' (no %s.msg in %s)"
-                % (package, name, name, ', '.join(self.search_path[package])), path, line)
+                "unknown type '%s/%s' (no %s.msg in %s%s)"
+                % (package, name, name, ', '.join(self.search_path[package]),
+                   close_match(name, known)), path, line)
 
     def _load_dependencies(self, root):
         """Load every type root contains, depth first, each before the type

@@ -72,9 +72,9 @@ def report(fit, settings_files):
     lines += ['| %s |' % ' | '.join(row) for row in rows]
     lines.append('')
     lines.append('Tables (each type takes a topic per topic name, each ROS peer a connector): '
-                 '%s; this firmware has %d types.'
+                 '%s; this firmware has %d type%s.'
                  % (', '.join('%s %d' % (s.name, s.value) for s in fit.table_sizes()),
-                    len(fit.needs.types)))
+                    len(fit.needs.types), '' if len(fit.needs.types) == 1 else 's'))
     problems = [misfit.line() for misfit in fit.misfits]
     lines.append('')
     lines += ['error: %s' % line for line in problems] or ['Every type fits.']

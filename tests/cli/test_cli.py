@@ -5,7 +5,7 @@ import pytest
 
 from colcon_mros.cli import build_parser, main
 
-_, SUBCOMMANDS = build_parser()
+SUBCOMMANDS = list(build_parser()[1])
 
 
 def test_the_parser_has_the_subcommands_the_docs_describe():
@@ -49,3 +49,12 @@ def test_generate_reads_its_files(tmp_path, capsys):
                  str(tmp_path / 'out')]) == 1
     assert capsys.readouterr().err.startswith('genmros: error: %s: cannot read file'
                                               % (tmp_path / 'Missing.msg'))
+
+
+def test_a_misspelt_option_is_refused_with_the_subcommand_s_usage(capsys):
+    with pytest.raises(SystemExit) as done:
+        main(['export', '--workspce', 'ws', '-o', 'out'])
+    assert done.value.code == 2
+    error = capsys.readouterr().err.splitlines()
+    assert error[0].startswith('usage: genmros export ')
+    assert error[-1] == 'genmros export: error: unrecognized arguments: --workspce ws'
