@@ -1,13 +1,16 @@
 """The opt-in patch set for a user's mROS v1 library: fixes kept as small
 unified diffs against the library's public sources (``*.patch`` beside this
-module, applied in name order), never as a copy of the library.
+module, applied in the order of the ``series`` file, as quilt keeps them),
+never as a copy of the library.
 
 ``genmros mros-v1-harden MROS_ROOT`` applies them to a checkout (only files
 below ``mros-lib/``), ``--check`` says whether they are, ``--revert`` takes
-them out; ``genmros mros-v1-pc --hardened`` applies them to a copy. A patch
-applies only where every line it expects is there as it expects it; where
-the checkout differs, nothing is written and the error names the file, the
-line and the patch. A patch already applied is left as it is.
+them out; ``genmros mros-v1-pc --hardened`` applies them to a copy. A hunk
+applies where its line numbers say, or, as GNU patch does without fuzz, at
+the nearest place where every line it expects is there (an earlier patch of
+the series may have moved it); where the checkout differs, nothing is
+written and the error names the file, the line and the patch. A patch
+already applied is left as it is.
 """
 
 import dataclasses
@@ -18,6 +21,8 @@ from colcon_mros.errors import GenmrosError
 from colcon_mros.generator.output import write_files
 
 PATCH_DIR = os.path.dirname(os.path.abspath(__file__))
+# The patches' order, one file name a line ('#' starts a comment).
+SERIES = 'series'
 # Every path a patch names lies below this directory of the checkout.
 LIBRARY_DIR = 'mros-lib'
 _HUNK = re.compile(r'^@@ -(\d+)(?:,(\d+))? \+(\d+)(?:,(\d+))? @@')
@@ -50,11 +55,18 @@ class Patch:
                       for path, hunks in self.files.items()})
 
 
+def _check_counts(hunk, counts, path, line):
+    """A hunk must have the lines its header counts."""
+    if hunk is not None and (len(hunk.old), len(hunk.new)) != counts:
+        raise GenmrosError('the hunk counts %d old and %d new lines but has %d and %d'
+                           % (counts + (len(hunk.old), len(hunk.new))), path, line)
+
+
 def read_patch(path):
     """The Patch of a unified diff (``diff -u`` or ``git diff``) at path."""
     name = os.path.splitext(os.path.basename(path))[0]
     files = {}
-    hunk = None
+    hunk = counts = header_line = None
     target = None
     with open(path, encoding='utf-8') as stream:
         lines = stream.read().splitlines()
@@ -63,38 +75,59 @@ def read_patch(path):
     description = ' '.join(' '.join(lines[:first_diff]).split())
     for number, line in enumerate(lines, 1):
         header = _HUNK.match(line)
+        in_hunk = hunk is not None and (len(hunk.old), len(hunk.new)) != counts
+        if in_hunk and line[:1] in (' ', '-', '+', ''):
+            if line[:1] != '+':
+                hunk.old.append(line[1:])
+            if line[:1] != '-':
+                hunk.new.append(line[1:])
+            continue
+        if line.startswith('\\'):  # "\ No newline at end of file"
+            continue
+        _check_counts(hunk, counts, path, header_line)
+        hunk = None
         if line.startswith('+++ '):
             target = re.sub(r'^b/', '', line[4:].split('\t')[0].strip())
             if not target.startswith(LIBRARY_DIR + '/'):
                 raise GenmrosError('patches may change %s/ only, not %s' % (LIBRARY_DIR, target),
                                    path, number)
             files[target] = []
-        elif line.startswith('--- ') or line.startswith('diff ') or line.startswith('index '):
-            hunk = None
         elif header:
             if target is None:
                 raise GenmrosError('a hunk before its file\'s +++ line', path, number)
             hunk = Hunk(int(header.group(1)), int(header.group(3)), [], [])
+            counts = tuple(1 if count is None else int(count)
+                           for count in (header.group(2), header.group(4)))
+            header_line = number
             files[target].append(hunk)
-        elif hunk is not None and line[:1] in (' ', '-', '+'):
-            if line[0] != '+':
-                hunk.old.append(line[1:])
-            if line[0] != '-':
-                hunk.new.append(line[1:])
-        elif hunk is not None and line == '':
-            hunk.old.append('')
-            hunk.new.append('')
-        elif not line.startswith('\\'):
-            hunk = None
+    _check_counts(hunk, counts, path, header_line)
     if not files:
         raise GenmrosError('no file changes in this patch', path)
     return Patch(name, description, files)
 
 
 def patch_set(directory=PATCH_DIR):
-    """Every patch of the set, in the order they apply."""
-    return [read_patch(os.path.join(directory, name))
-            for name in sorted(os.listdir(directory)) if name.endswith('.patch')]
+    """Every patch of the set, in the order of its series file."""
+    series = os.path.join(directory, SERIES)
+    try:
+        with open(series, encoding='utf-8') as stream:
+            entries = [(number, line.split('#')[0].strip())
+                       for number, line in enumerate(stream, 1)]
+    except OSError as error:
+        raise GenmrosError('cannot read the series file: %s' % error.strerror, series)
+    names = []
+    for number, name in entries:
+        if not name:
+            continue
+        if not os.path.isfile(os.path.join(directory, name)) or name in names:
+            raise GenmrosError('%s: %s' % (name, 'listed twice' if name in names
+                                           else 'no such patch'), series, number)
+        names.append(name)
+    unlisted = sorted(set(name for name in os.listdir(directory) if name.endswith('.patch'))
+                      - set(names))
+    if unlisted:
+        raise GenmrosError('patches not in the series: %s' % ', '.join(unlisted), series)
+    return [read_patch(os.path.join(directory, name)) for name in names]
 
 
 class _Mismatch(Exception):
@@ -104,33 +137,38 @@ class _Mismatch(Exception):
         self.line = line
 
 
-def _patched_text(text, hunks, path):
-    """text with hunks applied, in order; _Mismatch where a hunk's old lines
-    are neither where it expects them (after the earlier hunks' shift) nor
-    in one other place (where another patch moved them)."""
-    lines = text.splitlines(keepends=True)
-    shift = 0
-    # Lines the hunks applied so far added (or took away): a mismatch is
-    # reported at its line in text, not in the half-patched lines.
-    grown = 0
+def _nearest_match(lines, hunk, expected):
+    """The start of the place nearest to expected (0-based) where lines hold
+    every line of the hunk, as GNU patch looks for it; or None."""
+    wanted = hunk.old
+    for distance in range(len(lines) + 1):
+        for start in (expected - distance, expected + distance):
+            if 0 <= start <= len(lines) - len(wanted) and [
+                    line.rstrip('\r\n') for line in lines[start:start + len(wanted)]] == wanted:
+                return start
+    return None
 
-    def found_at(start, count):
-        return [line.rstrip('\r\n') for line in lines[start:start + count]]
+
+def _patched_text(text, hunks, path):
+    """text with hunks applied, in order, each at its line (moved by the
+    lines the hunks before it added or took away) or at the nearest place
+    its lines are; _Mismatch at the first differing line of the file where
+    a hunk's lines are nowhere."""
+    lines = text.splitlines(keepends=True)
+    # Lines the hunks applied so far added (or took away), and how far the
+    # last hunk was from its line: GNU patch looks for the next one there.
+    grown = offset = 0
     for hunk in hunks:
-        start = max(hunk.old_start - 1, 0) + shift
-        if found_at(start, len(hunk.old)) != hunk.old:
-            elsewhere = [index for index in range(len(lines))
-                         if found_at(index, len(hunk.old)) == hunk.old]
-            if len(elsewhere) != 1:
-                found = found_at(start, len(hunk.old))
-                mismatch = next((index for index, (have, want) in enumerate(zip(found, hunk.old))
-                                 if have != want), len(found))
-                raise _Mismatch(path, start - grown + mismatch + 1)
-            shift += elsewhere[0] - start
-            start = elsewhere[0]
+        expected = max(hunk.old_start - 1, 0) + grown + offset
+        start = _nearest_match(lines, hunk, expected)
+        if start is None:
+            found = [line.rstrip('\r\n') for line in lines[expected:expected + len(hunk.old)]]
+            mismatch = next((index for index, (have, want) in enumerate(zip(found, hunk.old))
+                             if have != want), len(found))
+            raise _Mismatch(path, expected - grown + mismatch + 1)
+        offset = start - (max(hunk.old_start - 1, 0) + grown)
         ending = '\r\n' if lines and lines[min(start, len(lines) - 1)].endswith('\r\n') else '\n'
         lines[start:start + len(hunk.old)] = [line + ending for line in hunk.new]
-        shift += len(hunk.new) - len(hunk.old)
         grown += len(hunk.new) - len(hunk.old)
     return ''.join(lines)
 

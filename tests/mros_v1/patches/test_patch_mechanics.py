@@ -35,20 +35,60 @@ def _listing(root):
                   for directory, _, names in os.walk(root) for name in names)
 
 
-def test_the_patches_are_read_in_name_order_with_their_descriptions():
+def test_the_patches_are_read_in_the_series_order_with_their_descriptions():
     assert [(patch.name, sorted(patch.files)) for patch in PATCHES] == [
-        ('bound-received-lengths', ['mros-lib/comm/socket.c']),
-        ('publish-without-memory', ['mros-lib/api/ros.cpp'])]
-    assert PATCHES[0].description == ('Bounds the lengths the library receives: a length word '
+        ('publish-without-memory', ['mros-lib/api/ros.cpp']),
+        ('bound-received-lengths', ['mros-lib/comm/socket.c'])]
+    assert PATCHES[1].description == ('Bounds the lengths the library receives: a length word '
                                       'beyond the buffer is refused.')
-    assert [len(hunks) for patch in PATCHES for hunks in patch.files.values()] == [2, 1]
+    assert [len(hunks) for patch in PATCHES for hunks in patch.files.values()] == [1, 2]
+
+
+def _patch_dir(tmp_path, series, **texts):
+    """A copy of the fixture's patches with another series and texts."""
+    directory = tmp_path / 'patches'
+    shutil.copytree(os.path.join(TREE, 'patches'), str(directory))
+    (directory / 'series').write_text(series)
+    for name, text in texts.items():
+        (directory / name).write_text(text)
+    return str(directory)
+
+
+def test_a_patch_outside_the_series_or_a_name_it_lacks_is_refused(tmp_path):
+    directory = _patch_dir(tmp_path, 'bound-received-lengths.patch\n')
+    with pytest.raises(GenmrosError) as refused:
+        patch_set(directory)
+    assert str(refused.value) == '%s: patches not in the series: publish-without-memory.patch' \
+        % os.path.join(directory, 'series')
+    directory = _patch_dir(tmp_path / 'again', '# comment\nbound-received-lengths.patch\n'
+                           'publish-without-memory.patch\nmissing.patch\n')
+    with pytest.raises(GenmrosError) as refused:
+        patch_set(directory)
+    assert str(refused.value) == '%s:4: missing.patch: no such patch' % os.path.join(
+        directory, 'series')
+
+
+def test_a_hunk_must_have_the_lines_its_header_counts(tmp_path):
+    with open(os.path.join(TREE, 'patches', 'publish-without-memory.patch')) as stream:
+        text = stream.read()
+    # One added line taken out: the header still counts it.
+    short = text.replace('+    return;\n', '', 1)
+    directory = _patch_dir(tmp_path, 'publish-without-memory.patch\n'
+                           'bound-received-lengths.patch\n',
+                           **{'publish-without-memory.patch': short})
+    header = short.splitlines().index('@@ -4,6 +4,9 @@') + 1
+    with pytest.raises(GenmrosError) as refused:
+        patch_set(directory)
+    assert str(refused.value) == ('%s:%d: the hunk counts 6 old and 9 new lines but has 6 and 8'
+                                  % (os.path.join(directory, 'publish-without-memory.patch'),
+                                     header))
 
 
 def test_apply_check_and_revert(library):
     assert [applied for _, applied in patch_states(library, PATCHES)] == [False, False]
     inodes = {path: os.stat(os.path.join(library, path)).st_ino for path in FILES}
     assert apply_patches(library, patches=PATCHES) == [
-        'bound-received-lengths', 'publish-without-memory']
+        'publish-without-memory', 'bound-received-lengths']
     assert _equal_to(library, 'patched')
     # Each file replaced whole, and no temporary left beside it.
     assert all(os.stat(os.path.join(library, path)).st_ino != inodes[path] for path in FILES)
@@ -60,15 +100,30 @@ def test_apply_check_and_revert(library):
     assert times == {path: os.stat(os.path.join(library, path)).st_mtime_ns for path in FILES}
 
     assert apply_patches(library, revert=True, patches=PATCHES) == [
-        'publish-without-memory', 'bound-received-lengths']
+        'bound-received-lengths', 'publish-without-memory']
     assert _equal_to(library, 'library')
 
 
 def test_one_patch_applied_the_other_not(library):
-    assert apply_patches(library, patches=PATCHES[1:]) == ['publish-without-memory']
+    assert apply_patches(library, patches=PATCHES[1:]) == ['bound-received-lengths']
     assert [applied for _, applied in patch_states(library, PATCHES)] == [False, True]
-    assert apply_patches(library, patches=PATCHES) == ['bound-received-lengths']
+    assert apply_patches(library, patches=PATCHES) == ['publish-without-memory']
     assert _equal_to(library, 'patched')
+
+
+def test_a_hunk_goes_to_the_nearest_place_its_lines_are(library):
+    # Two lines added at the top move every hunk of socket.c down by two.
+    socket_c = os.path.join(library, 'mros-lib', 'comm', 'socket.c')
+    with open(socket_c) as stream:
+        text = stream.read()
+    with open(socket_c, 'w') as stream:
+        stream.write('/* A note. */\n\n' + text)
+    assert apply_patches(library, patches=PATCHES) == [
+        'publish-without-memory', 'bound-received-lengths']
+    with open(os.path.join(TREE, 'patched', 'mros-lib', 'comm', 'socket.c')) as stream:
+        patched = stream.read()
+    with open(socket_c) as stream:
+        assert stream.read() == '/* A note. */\n\n' + patched
 
 
 def test_a_line_changed_by_hand_is_refused_and_nothing_is_written(library):
