@@ -5,6 +5,7 @@ with genmros mros-v1-harden, as a user applies it to theirs."""
 import filecmp
 import os
 import shutil
+import subprocess
 
 import pytest
 
@@ -132,3 +133,22 @@ def test_every_hunk_has_one_place_in_the_library():
                 places = [index + 1 for index in range(len(lines))
                           if lines[index:index + len(hunk.old)] == hunk.old]
                 assert places == [hunk.old_start], (patch.name, path, places)
+
+
+def test_gnu_patch_applies_the_series_as_genmros_does(checkout, tmp_path):
+    # The maintainers' tool, without fuzz, in the series' order.
+    by_gnu_patch = tmp_path / 'gnu_patch'
+    shutil.copytree(os.path.join(MROS_V1_ROOT, 'mros-lib'), str(by_gnu_patch / 'mros-lib'))
+    for patch in patch_set():
+        with open(os.path.join(PATCH_DIR, patch.name + '.patch'), 'rb') as stream:
+            subprocess.run(['patch', '-p1', '--fuzz=0', '--batch', '--silent',
+                            '--no-backup-if-mismatch'], stdin=stream, cwd=str(by_gnu_patch),
+                           check=True)
+    apply_patches(str(checkout))
+    comparison = filecmp.dircmp(str(checkout / 'mros-lib'), str(by_gnu_patch / 'mros-lib'))
+
+    def differing(node):
+        return node.diff_files + node.left_only + node.right_only + [
+            name for child in node.subdirs.values() for name in differing(child)]
+    assert differing(comparison) == []
+
