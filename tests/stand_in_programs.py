@@ -17,10 +17,12 @@ ARM = dict(prefix='arm-linux-gnueabihf-',
                   '-mno-unaligned-access'],
            link=['-static'])
 NATIVE = dict(prefix='', flags=[], link=[])
+# The ASP kernel's stand-in, below pc_target/.
+KERNEL = ('asp/kernel.c', 'asp/syslog.c', 'asp/task_stacks.c')
 SANITIZE = ['-fsanitize=address,undefined', '-fno-omit-frame-pointer', '-g']
 
 
-def build(fixture, cfg, sources, build_dir, stand_ins=('asp/kernel.c', 'asp/task_stacks.c'),
+def build(fixture, cfg, sources, build_dir, stand_ins=KERNEL,
           target=NATIVE, flags=('-O2',)):
     """tests/fixtures/<fixture>/<cfg> turned into the kernel's tables, and
     the stand-ins (paths below pc_target/) with the fixture's sources built

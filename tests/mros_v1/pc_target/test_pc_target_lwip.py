@@ -14,7 +14,7 @@ import pytest
 
 import stand_in_programs
 
-STAND_INS = ('asp/kernel.c', 'asp/task_stacks.c', 'lwip/lwip.cpp')
+STAND_INS = stand_in_programs.KERNEL + ('lwip/lwip.cpp',)
 # Timing on a loaded 2-core machine: late by up to this much, never early.
 LATENESS_MS = 200
 

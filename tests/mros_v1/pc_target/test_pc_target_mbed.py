@@ -13,7 +13,7 @@ import pytest
 import stand_in_programs
 from testing.ros_graph import Process
 
-STAND_INS = ('asp/kernel.c', 'asp/task_stacks.c', 'lwip/lwip.cpp', 'mbed/mbed.cpp')
+STAND_INS = stand_in_programs.KERNEL + ('lwip/lwip.cpp', 'mbed/mbed.cpp')
 
 
 @pytest.fixture(scope='module')

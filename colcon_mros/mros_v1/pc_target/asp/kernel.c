@@ -19,6 +19,8 @@
  * next service call. One timer thread turns time-outs and timer expiries into
  * ready tasks and pending handlers.
  *
+ * syslog, ASP's system log service, is syslog.c's.
+ *
  * A task's code runs on the board's stack size where task_stacks.c
  * provides it; the host's lock, condition variables and clock, which stand
  * for ASP's interrupt masking, run on the task thread's host stack
@@ -30,7 +32,6 @@
 #include <pthread.h>
 #include <setjmp.h>
 #include <signal.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -39,7 +40,6 @@
 
 #include "kernel.h"
 #include "pc_target.h"
-#include "t_syslog.h"
 
 /* The handler thread's place in the ready queues: above every task. */
 #define HANDLER_PRIORITY 0
@@ -343,7 +343,18 @@ static ER_UINT cancel_requests(ID tskid, int wakeups) {
 
 ER_UINT can_act(ID tskid) { return cancel_requests(tskid, 0); }
 
-/* Jumps up to task_thread's frame from the host stack, below it. */
+/* ext_tsk ends the task's code wherever it calls it, as ASP's does: the
+ * task's frames are left behind and its thread goes back to task_thread's
+ * loop, to wait for the next activation. task_thread runs on the thread's
+ * host stack and set exit_point there before it called pc_run_task, whose
+ * call is still running: the jump goes up to a live frame of the same
+ * thread, which longjmp allows. The task's code runs on its board stack
+ * (task_stacks.c, arm target) or on the same host stack (native); either
+ * way the jump is made from the host stack (pc_on_host_stack), right below
+ * task_thread's frames, so no frame on the board stack is running when it
+ * lands and the board stack is simply used afresh at the next activation.
+ * Nothing is skipped that needs undoing: ext_tsk holds no lock (it is a
+ * service call made outside enter()), and C frames have no destructors. */
 static void exit_task(void *task) { longjmp(((struct tcb *)task)->exit_point, 1); }
 
 ER ext_tsk(void) {
@@ -712,43 +723,6 @@ void pc_host_call_end(void) {
 void pc_dispatch_point(void) {
   enter();
   leave(E_OK);
-}
-
-/* ---- system log ---- */
-
-struct log_entry {
-  unsigned int priority;
-  const char *format;
-  va_list arguments;
-};
-
-static void write_log_entry(void *entry_pointer) {
-  static const char *const levels[] = {"emerg", "alert", "crit", "error",
-                                       "warning", "notice", "info", "debug"};
-  struct log_entry *entry = entry_pointer;
-  char line[1024];
-  int length;
-  length = snprintf(line, sizeof line, "[%s] ", levels[entry->priority & 7u]);
-  length += vsnprintf(line + length, sizeof line - (size_t)length - 1, entry->format,
-                      entry->arguments);
-  if (length > (int)sizeof line - 2) length = (int)sizeof line - 2;
-  while (length > 0 && (line[length - 1] == '\n' || line[length - 1] == '\r')) length--;
-  line[length++] = '\n';
-  if (write(STDERR_FILENO, line, (size_t)length) < 0) {
-    /* Nowhere left to report it. */
-  }
-}
-
-/* Formatted and written on the host stack: on the board, ASP's logtask
- * formats the line, not the calling task. */
-void syslog(unsigned int prio, const char *format, ...) {
-  struct log_entry entry;
-  entry.priority = prio;
-  entry.format = format;
-  va_start(entry.arguments, format);
-  pc_on_host_stack(write_log_entry, &entry);
-  va_end(entry.arguments);
-  pc_dispatch_point();
 }
 
 /* ---- start-up: what ASP's kernel does before the first task runs ---- */
