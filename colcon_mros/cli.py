@@ -395,15 +395,15 @@ def _mros_v1_fit(options):
     from colcon_mros.generator.ros_environment import require_ros_python
     require_ros_python()
     from colcon_mros.mros_v1 import report  # needs genmsg
-    from colcon_mros.mros_v1.pc_target.build import App, find_app
+    from colcon_mros.mros_v1.pc_target.build import App, app_fit, find_app
     form = (options.storage, options.option_files)
     if options.export_dir:
         fit, settings = report.export_dir_fit(options.export_dir, options.types,
                                               options.library_settings, *form)
     elif options.app_dir:
-        fit, settings = report.app_fit(App(*find_app(options.app_dir, options.mros_root)),
-                                       options.types, options.msg_paths,
-                                       options.library_settings, *form)
+        fit, settings = app_fit(App(*find_app(options.app_dir, options.mros_root)),
+                                options.types, options.msg_paths, options.library_settings,
+                                *form)
     else:
         raise GenmrosError('give an app directory, or --export-dir')
     text, stops = report.report(fit, settings)

@@ -15,8 +15,7 @@ import os
 
 from colcon_mros.generator.render import render_template
 from colcon_mros.mros_v1.rules import (LIBRARY_HEADER_GUARD, ONBOARD_FRAME_SLOTS, POOL_KINDS,
-                                       PUBLISHING_POOLS, RULES, SETTINGS_HEADERS,
-                                       SHORTEST_NAMES, FirmwareNeeds)
+                                       PUBLISHING_POOLS, RULES, SETTINGS_HEADERS, FirmwareNeeds)
 
 FIT_CHECK_HEADER = 'mros_v1_fit_check.h'
 TEMPLATE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'templates')
@@ -33,7 +32,8 @@ class Check:
             self.failure = '!%s(%d)' % (rule.setting.holds_macro, amount)
             needed = 'a %s >= %d' % (rule.setting_name, amount)
         elif rule.with_names:
-            self.failure = '%s < %d + %d' % (rule.setting, amount, SHORTEST_NAMES)
+            # What the header needs for certain: with the shortest names.
+            self.failure = '%s < %d' % (rule.setting, rule.certain(needs))
             needed = "%s >= %d + the topic and caller id's bytes" % (rule.setting, amount)
         else:
             self.failure = '%s < %d' % (rule.setting, amount)

@@ -2,7 +2,7 @@
 library's settings, one table row per type.
 
 For an app (``mros_ws/<app>``) the settings are those its build includes
-(:func:`.pc_target.build.library_settings`) and the types those of its app.json or
+(:func:`.pc_target.build.app_fit`) and the types those of its app.json or
 ``--type``; for an export dir, the types it holds (or ``--type``) against
 the settings headers given. Each row shows what the type needs (definition
 text, the connection headers ROS nodes send, the largest frame) and, for
@@ -14,19 +14,8 @@ from colcon_mros.errors import GenmrosError
 from colcon_mros.export.export_dir import ExportDir
 from colcon_mros.export.firmware_export import firmware_messages
 from colcon_mros.mros_v1.fit import Fit
-from colcon_mros.mros_v1.pc_target.build import library_settings
 from colcon_mros.mros_v1.rules import PEER_NAME_MAX
 from colcon_mros.mros_v1.settings import read_settings
-
-
-def app_fit(app, types, msg_paths, settings_files, storage_kind, option_files):
-    """The Fit of an App's types (those given, else its app.json's) to its
-    settings (those given, else the headers its build includes), and the
-    settings headers read."""
-    types, msg_paths = app.message_types(types, msg_paths)
-    settings_files = list(settings_files) or library_settings(app)
-    messages = firmware_messages(types, msg_paths, storage_kind, option_files)
-    return Fit(messages, read_settings(settings_files)), settings_files
 
 
 def export_dir_fit(export_dir, types, settings_files, storage_kind, option_files):

@@ -260,6 +260,21 @@ def _unresolved_task(config, linker_output):
     return None
 
 
+def app_fit(app, types, msg_paths, settings_files, storage_kind, option_files):
+    """The Fit of an App's types (those given, else its app.json's) to its
+    settings (those given, else the headers its build includes), and the
+    settings headers read: the one fit flow of genmros mros-v1-pc and
+    genmros mros-v1-fit."""
+    # genmsg: the types' models
+    from colcon_mros.export.firmware_export import firmware_messages
+    from colcon_mros.mros_v1.fit import Fit
+    from colcon_mros.mros_v1.settings import read_settings
+    types, msg_paths = app.message_types(types, msg_paths)
+    settings_files = list(settings_files) or library_settings(app)
+    messages = firmware_messages(types, msg_paths, storage_kind, option_files)
+    return Fit(messages, read_settings(settings_files)), settings_files
+
+
 def build(request):
     """Builds a PcBuild's app in steps, one line each; returns the program's path."""
     app_dir, mros_root = find_app(request.app_dir, request.mros_root)
@@ -272,12 +287,7 @@ def build(request):
     if request.fit_check:
         from colcon_mros.generator.ros_environment import require_ros_python
         require_ros_python()
-        # genmsg: the types' models
-        from colcon_mros.export.firmware_export import firmware_messages
-        from colcon_mros.mros_v1.fit import Fit
-        from colcon_mros.mros_v1.settings import read_settings
-        fit = Fit(firmware_messages(types, msg_paths, request.storage, request.option_files),
-                  read_settings(library_settings(app)))
+        fit, _ = app_fit(app, types, msg_paths, (), request.storage, request.option_files)
         fit.refuse(request.fit_strict)
         for warning in fit.warnings:
             print('genmros: warning: %s' % warning)
