@@ -33,7 +33,6 @@ from testing.ros_graph import (
     BOARD_IP, DELIVERY_TIMEOUT, PEER_IP, Board, RosGraph, free_port, sourced_environment)
 from testing.tcpros_peer import (
     HostilePublisher, RawSubscriber, encode_header)
-from conftest import REPO
 from fixtures.build_integration.tools import run
 from mros_v1_checkout import MROS_V1_ROOT
 from pc_target_apps import build_sample
@@ -587,43 +586,6 @@ def test_an_unusable_ros_environment_stops_the_node_with_one_line(programs, vari
     assert result.returncode == 2
     assert 'mROS PC target: %s=%s: %s\n' % (variable, value, problem) in result.stderr
     assert result.stderr.count('mROS PC target:') == 1
-
-
-def test_paper_evaluation_on_the_real_library(ros_workspace, tmp_path):
-    # The README's main command's driver, as it runs, on the suite's test_ws,
-    # with this checkout (the script's own directory is not the checkout's).
-    result = subprocess.run(
-        ['/usr/bin/python3', os.path.join(REPO, 'evaluation', 'run.py'), '--messages', '5',
-         '--workspace', ros_workspace.root, '--build-dir', str(tmp_path)],
-        env=dict(os.environ, MROS_V1_ROOT=MROS_V1_ROOT, PYTHONPATH=REPO), capture_output=True,
-        text=True, timeout=900)
-    summary = result.stdout.split("==== the paper's evaluation")[-1].splitlines()[1:]
-    assert [line.split('  ')[0] for line in summary] == [
-        'mROS -> rospy listener', 'mROS -> roscpp listener', 'mROS -> mROS on board',
-        'rospy talker -> mROS', 'roscpp talker -> mROS', 'RESULT: PASS'], result.stdout[-3000:]
-    for line in summary[:-1]:
-        assert line.endswith(' PASS') and ' 5 messages ' in line, line
-    assert result.returncode == 0
-    # Within the board's stacks (an overflow would have stopped the board),
-    # every task of app.cfg and the library's mros.cfg reported.
-    stacks = re.findall(r'^  (\w+) +(\d+) of +(\d+)$', result.stdout, re.M)
-    assert sorted(task for task, _, _ in stacks) == [
-        'MAIN_TASK', 'PUB_TASK', 'SUB_TASK', 'USR_TASK1', 'USR_TASK2', 'XML_MAS_TASK',
-        'XML_SLV_TASK'], result.stdout[-3000:]
-    assert all(64 <= int(peak) <= int(size) for _, peak, size in stacks), stacks
-
-
-# ---- the library's own limits, as it behaves today (see the README) ----
-
-def test_limit_a_publisher_at_the_nodes_own_address_is_ignored(ros_side, programs, tmp_path):
-    with RosGraph(ros_side) as graph:
-        board = Board(graph, programs['string_pubsub'], str(tmp_path))
-        rospy_string_talker(graph, 'rospy_talker_same', 'green', ros_ip=BOARD_IP)
-        graph.wait_for_graph(publishers=[('/test_string', '/rospy_talker_same')],
-                             subscribers=[('/test_string', '/mros_node2')])
-        board.process.wait_for(r'publisher update', timeout=DELIVERY_TIMEOUT)
-        time.sleep(8)
-        assert 'I heard' not in board.process.output()
 
 
 def test_limit_with_one_publisher_connected_no_other_is_read(ros_side, programs, tmp_path):
