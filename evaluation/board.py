@@ -21,7 +21,7 @@ import xmlrpc.client
 from testing.ros_graph import DELIVERY_TIMEOUT, PYTHON, RosGraph
 from testing.tcpros_peer import RawSubscriber
 
-from paper import BOARD, ROS, ROS_HEARD, Direction, ros_heard
+from paper import BOARD, ROS, ROS_HEARD, Direction, ros_heard, start_listeners
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 FIRMWARE = os.path.join(REPO, 'evaluation', 'firmware')
@@ -168,14 +168,7 @@ def exchange(workspace, program, count):
     identity = rospy_identity(workspace, RELAYED_TYPES)
     checks = []
     with RosGraph(workspace.environment()) as graph:
-        listeners = [
-            ('board -> rospy listener', graph.start('rospy personal_data_listener.py',
-                                                    workspace.rospy('personal_data_listener.py'))),
-            ('board -> roscpp listener', graph.start('roscpp personal_data_listener',
-                                                     workspace.roscpp('personal_data_listener'))),
-        ]
-        graph.wait_for_graph(subscribers=[('/mros_str', '/rospy_personal_listener'),
-                                          ('/mros_str', '/ros_personal_listener')])
+        listeners = start_listeners(graph, workspace, 'board')
         bridge = graph.start('board_bridge.py', [PYTHON, BRIDGE, 'qemu-arm', program])
         try:
             graph.wait_for_graph(publishers=[('/mros_str', BOARD_NODE)],

@@ -12,7 +12,7 @@ import subprocess
 
 from testing.ros_graph import DELIVERY_TIMEOUT, Board, RosGraph
 
-from paper import BOARD, ROS, ROS_HEARD, Direction, ros_heard
+from paper import BOARD, ROS, ROS_HEARD, Direction, ros_heard, start_listeners
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TEST_WS_SRC = os.path.join(REPO, 'test_ws', 'src')
@@ -85,14 +85,7 @@ def run(workspace, program, count, scratch):
     directions = []
     boards = []
     with RosGraph(environment) as graph:
-        listeners = [
-            ('mROS v1 -> rospy listener', graph.start('rospy personal_data_listener.py',
-                                                      workspace.rospy('personal_data_listener.py'))),
-            ('mROS v1 -> roscpp listener', graph.start('roscpp personal_data_listener',
-                                                       workspace.roscpp('personal_data_listener'))),
-        ]
-        graph.wait_for_graph(subscribers=[('/mros_str', '/rospy_personal_listener'),
-                                          ('/mros_str', '/ros_personal_listener')])
+        listeners = start_listeners(graph, workspace, 'mROS v1')
         board = Board(graph, program, scratch)
         boards.append(board)
         for title, listener in listeners:

@@ -43,3 +43,17 @@ def ros_heard(lines):
     """(name, age, score) of every message a personal_data_listener printed."""
     return [('%s %s' % (m.group(1), m.group(2)), int(m.group(3)), int(m.group(4)))
             for m in map(ROS_HEARD.search, lines) if m]
+
+
+def start_listeners(graph, workspace, sender):
+    """The rospy and roscpp personal_data_listeners in graph, registered at
+    its master: [(the direction's title, the node)], sender naming the board."""
+    listeners = [
+        ('%s -> rospy listener' % sender, graph.start(
+            'rospy personal_data_listener.py', workspace.rospy('personal_data_listener.py'))),
+        ('%s -> roscpp listener' % sender, graph.start(
+            'roscpp personal_data_listener', workspace.roscpp('personal_data_listener'))),
+    ]
+    graph.wait_for_graph(subscribers=[('/mros_str', '/rospy_personal_listener'),
+                                      ('/mros_str', '/ros_personal_listener')])
+    return listeners
