@@ -58,6 +58,16 @@ DEFINITION_CASES = [
     ('service-unknown-type', {'srv/Bad.srv': 'Missing a\n---\n'}, 'srv/Bad.srv:1:', "unknown type 'mros_bad/Missing'"),
     ('not-utf8', {'msg/Bad.msg': b'# caf\xe9\nint32 a\n'}, 'msg/Bad.msg:1:', 'not UTF-8 text'),
     ('illegal-type-name', {'msg/Bad-Name.msg': 'int32 a\n'}, 'msg/Bad-Name.msg:', "'Bad-Name' is not a legal ROS type name"),
+    # A close match is named: a built-in type, a type of the package, a package.
+    ('misspelt-builtin', {'msg/Bad.msg': 'flaot64 x\n'}, 'msg/Bad.msg:1:',
+     "unknown type 'mros_bad/flaot64' (no flaot64.msg in"),
+    ('misspelt-builtin-named', {'msg/Bad.msg': 'flaot64 x\n'}, 'msg/Bad.msg:1:',
+     "; did you mean 'float64'?)"),
+    ('misspelt-type', {'msg/Bad.msg': 'std_msgs/Heder h\n'}, 'msg/Bad.msg:1:',
+     "; did you mean 'Header'?)"),
+    ('misspelt-package', {'msg/Bad.msg': 'std_msg/Header h\n'}, 'msg/Bad.msg:1:',
+     "unknown package 'std_msg' for type 'std_msg/Header' (not in the workspace or the installed "
+     "ROS packages; did you mean 'std_msgs'?)"),
 ]
 
 
@@ -102,6 +112,12 @@ ARGUMENT_CASES = [
     ('unknown-selected-type', ['--type', 'mros_bad/Nope'], "unknown type 'mros_bad/Nope' (package mros_bad has no"),
     ('malformed-selected-type', ['--type', 'Nope'], "bad type name 'Nope' (expected PACKAGE/TYPE)"),
     ('unknown-selected-package', ['--package', 'no_such_pkg'], "unknown package 'no_such_pkg'"),
+    ('misspelt-selected-type', ['--type', 'mros_bad/Goood'],
+     "unknown type 'mros_bad/Goood' (package mros_bad has no Goood.msg or Goood.srv; did you mean "
+     "'Good'?)"),
+    ('misspelt-selected-package', ['--package', 'mros_bda'],
+     "unknown package 'mros_bda' (not in the workspace or the installed ROS packages; did you "
+     "mean 'mros_bad'?)"),
 ]
 
 
@@ -133,13 +149,16 @@ def test_unwritable_output_directory(workspace, tmp_path):
     try:
         if os.access(str(locked), os.W_OK):
             # root ignores permissions; a read-only bind is not available here,
-            # so check the same path through a directory that cannot be created.
-            target = '/proc/genmros-cannot-create/include'
+            # so check the same path through a directory even root may not
+            # create (EPERM in sysfs).
+            target = '/sys/genmros-cannot-create/include'
         else:
             target = str(locked / 'include')
         result = run_genmros('export', '--workspace', workspace_dir, '-o', target, '--underlay', '/usr',
                              check=False)
-        assert_one_line_error(result, os.path.dirname(target), 'cannot write to output directory')
+        assert_one_line_error(result, os.path.dirname(target), 'cannot write to output directory',
+                              ': make it writable for this user, or give another (-o, '
+                              'MROS_EXPORT_DIR, --mros-export)')
     finally:
         locked.chmod(0o755)
 
