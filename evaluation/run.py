@@ -48,6 +48,10 @@ TRANSPORT = ('frames carried between qemu-arm and the ROS graph by evaluation/bo
              "and definition texts of the board's genmros headers")
 
 
+def _first_line(error):
+    return (str(error).strip() or type(error).__name__).splitlines()[0]
+
+
 class Steps:
     """Runs steps, prints one line each, and keeps the rows of the table."""
 
@@ -65,7 +69,7 @@ class Steps:
             problem = None
         except (board.Failure, RuntimeError, AssertionError, subprocess.CalledProcessError) \
                 as error:
-            result, detail, problem = None, '', str(error).strip().splitlines()[0]
+            result, detail, problem = None, '', _first_line(error)
         self.add(title, detail, problem, time.monotonic() - started)
         return result
 
@@ -166,8 +170,11 @@ def main():
         else:
             print('the board under qemu-arm with a rosmaster, rospy and roscpp nodes; %s ...'
                   % TRANSPORT, flush=True)
-            for check in board.exchange(workspace, linux, args.messages):
-                steps.add(check.title, check.detail, check.problem)
+            try:
+                for check in board.exchange(workspace, linux, args.messages):
+                    steps.add(check.title, check.detail, check.problem)
+            except (AssertionError, RuntimeError, OSError) as error:
+                steps.add('the board under qemu-arm with ROS nodes', '', _first_line(error))
         if mros_v1.checkout_found(mros_root):
             run_mros_v1(steps, workspace, mros_root, os.path.join(build_root, 'mros_v1'),
                         args.messages)
