@@ -193,15 +193,25 @@ def test_subscribers_that_left_give_their_room_back_when_hardened(request, libra
         assert board.process.alive(), board.process.output()
 
 
+def _string_frame(text):
+    """A std_msgs/String frame on the wire."""
+    body = struct.pack('<I', len(text)) + text
+    return struct.pack('<I', len(body)) + body
+
+
+def _send_blue_until_heard(connection, board):
+    deadline = time.monotonic() + DELIVERY_TIMEOUT
+    while 'I heard [blue]' not in board.process.output():
+        assert time.monotonic() < deadline, board.process.output()
+        connection.sendall(_string_frame(b'blue'))
+        time.sleep(0.5)
+
+
 def _until_blue_is_heard(publisher, board):
     """Serves the board's connection to publisher with good frames until the app hears one."""
     connection = _subscriber_connection(publisher, board)
     connection.sendall(_reply_header())
-    deadline = time.monotonic() + DELIVERY_TIMEOUT
-    while 'I heard [blue]' not in board.process.output():
-        assert time.monotonic() < deadline, board.process.output()
-        connection.sendall(struct.pack('<I', 8) + b'\x04\x00\x00\x00blue')
-        time.sleep(0.5)
+    _send_blue_until_heard(connection, board)
 
 
 def _blue_is_heard_after_failing_publishers(program, directory, count, fail):
@@ -241,3 +251,44 @@ def test_hardened_frames_cut_short_give_their_memory_pool_blocks_back(hardened, 
     # so after 28 no frame is received again (found by the network fuzzer;
     # with bounded-publisher-frames taken out, this test fails that way).
     _blue_is_heard_after_failing_publishers(hardened[0], str(tmp_path), 30, _cut_short)
+
+
+def test_hardened_a_frame_no_block_holds_is_skipped_and_the_topic_goes_on(hardened, tmp_path):
+    # string_pubsub's largest block for frames from other nodes is 1024 bytes.
+    # Unpatched, and with bounded-publisher-frames before it skipped the
+    # frame, the library closes the connection after such a frame and never
+    # connects to that publisher again: one large message ends the topic,
+    # where roscpp goes on.
+    program, _ = hardened
+    with RosGraph() as graph:
+        board = Board(graph, program, str(tmp_path))
+        graph.wait_for_graph(subscribers=[('/test_string', '/mros_node2')])
+        with HostilePublisher(graph, '/large', '/test_string', 'std_msgs/String') as publisher:
+            connection = _subscriber_connection(publisher, board)
+            connection.sendall(_reply_header() + _string_frame(b'x' * 2000))
+            board.process.wait_for(
+                r'refused a frame of 2004 bytes from a publisher: no memory pool block holds it '
+                r'\(raise the largest ROS_OUTER_TOPIC_PUBLISHER_MEMPOOL<n>_SIZE\); its bytes are '
+                r'skipped', timeout=DELIVERY_TIMEOUT)
+            _send_blue_until_heard(connection, board)
+        assert board.process.alive(), board.process.output()
+
+
+def test_hardened_a_publisher_that_never_answers_does_not_stop_the_node(hardened, tmp_path):
+    # A publisher that accepts the app's connection and never sends its
+    # connection header. Unpatched (receive-time-out taken out), the
+    # subscriber task waits for it for good, holding the library's lock, and
+    # no publisher is heard again; patched, the receive gives up after
+    # MROS_COMM_RECEIVE_TIMEOUT_MSEC (3 s) and the connection is closed.
+    program, _ = hardened
+    with RosGraph() as graph:
+        board = Board(graph, program, str(tmp_path))
+        graph.wait_for_graph(subscribers=[('/test_string', '/mros_node2')])
+        with HostilePublisher(graph, '/silent', '/test_string', 'std_msgs/String') as silent:
+            connection = _subscriber_connection(silent, board)
+            started = time.monotonic()
+            assert closed_by_peer(connection, timeout=DELIVERY_TIMEOUT), board.process.output()
+            assert time.monotonic() - started >= 2.5
+        with HostilePublisher(graph, '/good', '/test_string', 'std_msgs/String') as publisher:
+            _until_blue_is_heard(publisher, board)
+        assert board.process.alive(), board.process.output()

@@ -4,7 +4,8 @@ written against lwIP's socket API as mROS v1's network layer is and built
 natively under AddressSanitizer and UndefinedBehaviorSanitizer. A task that
 waits in a socket call gives up the CPU, as an ASP task does while lwIP's
 tcpip thread serves it: the tasks below it run, connect and exchange bytes;
-lwip_select keeps its time-out; lwIP's FD_ZERO compiles where a variable is
+lwip_select keeps its time-out, SO_RCVTIMEO is an int of milliseconds as in
+lwIP 1.4; lwIP's FD_ZERO compiles where a variable is
 named fd_set, as in mROS v1."""
 
 import re
@@ -51,3 +52,10 @@ def test_select_keeps_its_time_out_and_reports_a_ready_socket(lines):
 
 def test_the_lowest_task_runs_while_the_others_wait_in_socket_calls(lines):
     assert _value(lines, 'watcher: ran') >= 50
+
+
+def test_a_receive_time_out_is_taken_in_milliseconds_as_lwip_1_4_takes_it(lines):
+    # mbed 2's lwIP takes SO_RCVTIMEO as an int of milliseconds (genmros'
+    # receive-time-out patch sets it so); the host takes a timeval.
+    assert _value(lines, 'client: recv with SO_RCVTIMEO timed out') == 1
+    assert 150 <= _value(lines, 'client: recv returned after') <= 150 + LATENESS_MS

@@ -95,7 +95,19 @@ int lwip_getsockopt(int s, int level, int optname, void *optval, socklen_t *optl
   return host_call([&] { return getsockopt(s, level, optname, optval, optlen); });
 }
 
+/* lwIP 1.4, the one mbed 2 ships, takes SO_RCVTIMEO and SO_SNDTIMEO as an int
+ * of milliseconds; the host takes a struct timeval. */
 int lwip_setsockopt(int s, int level, int optname, const void *optval, socklen_t optlen) {
+  struct timeval host_timeout;
+  if (level == SOL_SOCKET && (optname == SO_RCVTIMEO || optname == SO_SNDTIMEO) &&
+      optlen == sizeof(int)) {
+    int milliseconds;
+    memcpy(&milliseconds, optval, sizeof milliseconds);
+    host_timeout.tv_sec = milliseconds / 1000;
+    host_timeout.tv_usec = (milliseconds % 1000) * 1000;
+    optval = &host_timeout;
+    optlen = sizeof host_timeout;
+  }
   return host_call([&] { return setsockopt(s, level, optname, optval, optlen); });
 }
 
