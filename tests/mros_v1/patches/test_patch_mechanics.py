@@ -1,7 +1,7 @@
 """The patch set's mechanics (colcon_mros.mros_v1.patches.patch_set) on a small
-tree of the tests' own (tests/fixtures/patch_tree): its library/ with two
-patches of its own, and patched/, the same tree with the fixes written by
-hand. Apply, check, revert, refusal of a tree changed by hand, and whole-file
+tree of the tests' own (tests/fixtures/patch_tree): library/, copied to a
+checkout's mros-lib/ for each test, two patches of its own, and patched/,
+the same files with the fixes written by hand. Apply, check, revert, refusal of a tree changed by hand, and whole-file
 writes; the real patch set on a real checkout is test_patch_set.py's."""
 
 import filecmp
@@ -21,12 +21,18 @@ FILES = ('mros-lib/api/ros.cpp', 'mros-lib/comm/socket.c')
 
 @pytest.fixture
 def library(tmp_path):
-    shutil.copytree(os.path.join(TREE, 'library'), str(tmp_path / 'library'))
-    return str(tmp_path / 'library')
+    """A checkout whose mros-lib/ holds the fixture's library files."""
+    shutil.copytree(os.path.join(TREE, 'library'), str(tmp_path / 'checkout' / 'mros-lib'))
+    return str(tmp_path / 'checkout')
+
+
+def _fixture_file(tree, path):
+    """path (below a checkout) in the fixture's tree ('library' or 'patched')."""
+    return os.path.join(TREE, tree, os.path.relpath(path, 'mros-lib'))
 
 
 def _equal_to(root, tree):
-    return all(filecmp.cmp(os.path.join(root, path), os.path.join(TREE, tree, path), shallow=False)
+    return all(filecmp.cmp(os.path.join(root, path), _fixture_file(tree, path), shallow=False)
                for path in FILES)
 
 
@@ -120,7 +126,7 @@ def test_a_hunk_goes_to_the_nearest_place_its_lines_are(library):
         stream.write('/* A note. */\n\n' + text)
     assert apply_patches(library, patches=PATCHES) == [
         'publish-without-memory', 'bound-received-lengths']
-    with open(os.path.join(TREE, 'patched', 'mros-lib', 'comm', 'socket.c')) as stream:
+    with open(_fixture_file('patched', 'mros-lib/comm/socket.c')) as stream:
         patched = stream.read()
     with open(socket_c) as stream:
         assert stream.read() == '/* A note. */\n\n' + patched
@@ -152,4 +158,4 @@ def test_a_missing_file_is_named(library):
     assert str(refused.value) == '%s: cannot read: No such file or directory' % os.path.join(
         library, 'mros-lib/api/ros.cpp')
     assert filecmp.cmp(os.path.join(library, 'mros-lib/comm/socket.c'),
-                       os.path.join(TREE, 'library', 'mros-lib/comm/socket.c'), shallow=False)
+                       _fixture_file('library', 'mros-lib/comm/socket.c'), shallow=False)

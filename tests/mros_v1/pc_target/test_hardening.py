@@ -62,6 +62,13 @@ def test_the_hardened_build_leaves_the_checkout_as_it_is_and_declares_strtol(har
     assert all(line.startswith('not applied') for line in check.stdout.splitlines())
 
 
+def _listening_board(graph, program, directory):
+    """string_pubsub in graph, once it subscribes to /test_string."""
+    board = Board(graph, program, directory)
+    graph.wait_for_graph(subscribers=[('/test_string', '/mros_node2')])
+    return board
+
+
 def _subscriber_connection(hostile, board):
     try:
         connection, header = hostile.accept(timeout=DELIVERY_TIMEOUT)
@@ -102,8 +109,7 @@ def test_hardened_a_long_header_from_a_publisher_is_refused_and_the_node_stays_u
     # crashes (test_mros_v1_pc.py, test_limit_a_long_header_from_a_publisher_...).
     program, _ = hardened
     with RosGraph() as graph:
-        board = Board(graph, program, str(tmp_path))
-        graph.wait_for_graph(subscribers=[('/test_string', '/mros_node2')])
+        board = _listening_board(graph, program, str(tmp_path))
         with HostilePublisher(graph, '/hostile', '/test_string', 'std_msgs/String') as hostile:
             connection = _subscriber_connection(hostile, board)
             connection.sendall(_reply_header({'message_definition': 'x' * 5000}))
@@ -218,8 +224,7 @@ def _blue_is_heard_after_failing_publishers(program, directory, count, fail):
     """count publishers of /test_string, each connection from the app ended
     by fail(connection), and then a good publisher whose frames the app hears."""
     with RosGraph() as graph:
-        board = Board(graph, program, directory)
-        graph.wait_for_graph(subscribers=[('/test_string', '/mros_node2')])
+        board = _listening_board(graph, program, directory)
         for index in range(count):
             with HostilePublisher(graph, '/failing_%d' % index, '/test_string',
                                   'std_msgs/String') as publisher:
@@ -261,8 +266,7 @@ def test_hardened_a_frame_no_block_holds_is_skipped_and_the_topic_goes_on(harden
     # where roscpp goes on.
     program, _ = hardened
     with RosGraph() as graph:
-        board = Board(graph, program, str(tmp_path))
-        graph.wait_for_graph(subscribers=[('/test_string', '/mros_node2')])
+        board = _listening_board(graph, program, str(tmp_path))
         with HostilePublisher(graph, '/large', '/test_string', 'std_msgs/String') as publisher:
             connection = _subscriber_connection(publisher, board)
             connection.sendall(_reply_header() + _string_frame(b'x' * 2000))
@@ -282,8 +286,7 @@ def test_hardened_a_publisher_that_never_answers_does_not_stop_the_node(hardened
     # MROS_COMM_RECEIVE_TIMEOUT_MSEC (3 s) and the connection is closed.
     program, _ = hardened
     with RosGraph() as graph:
-        board = Board(graph, program, str(tmp_path))
-        graph.wait_for_graph(subscribers=[('/test_string', '/mros_node2')])
+        board = _listening_board(graph, program, str(tmp_path))
         with HostilePublisher(graph, '/silent', '/test_string', 'std_msgs/String') as silent:
             connection = _subscriber_connection(silent, board)
             started = time.monotonic()
