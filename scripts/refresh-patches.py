@@ -18,7 +18,7 @@ REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, REPO)  # this checkout's patch set
 
 from colcon_mros.mros_v1.patches.patch_set import (  # noqa: E402
-    PATCH_DIR, SERIES, _patched_text, patch_set, read_patch)
+    PATCH_DIR, SERIES, patched_text, patch_set, read_patch)
 
 CONVENTIONAL_CONTEXT = 3
 
@@ -59,10 +59,10 @@ def main():
         for path, hunks in patch.files.items():
             with open(os.path.join(root, path), encoding='utf-8', newline='') as stream:
                 original = stream.read()
-            changed = _patched_text(original, hunks, path)
+            changed = patched_text(original, hunks, path)
             current = series.get(path, original)
             diff_lines += least_context_diff(path, original, changed, [original, current])
-            series[path] = _patched_text(current, hunks, path)
+            series[path] = patched_text(current, hunks, path)
         with open(patch_path, 'w', encoding='utf-8') as stream:
             stream.write(description + '\n'.join(diff_lines) + '\n')
         read_patch(patch_path)  # still a patch genmros reads

@@ -149,7 +149,7 @@ def _nearest_match(lines, hunk, expected):
     return None
 
 
-def _patched_text(text, hunks, path):
+def patched_text(text, hunks, path):
     """text with hunks applied, in order, each at its line (moved by the
     lines the hunks before it added or took away) or at the nearest place
     its lines are; _Mismatch at the first differing line of the file where
@@ -159,14 +159,15 @@ def _patched_text(text, hunks, path):
     # last hunk was from its line: GNU patch looks for the next one there.
     grown = offset = 0
     for hunk in hunks:
-        expected = max(hunk.old_start - 1, 0) + grown + offset
+        at_its_line = max(hunk.old_start - 1, 0) + grown
+        expected = at_its_line + offset
         start = _nearest_match(lines, hunk, expected)
         if start is None:
             found = [line.rstrip('\r\n') for line in lines[expected:expected + len(hunk.old)]]
             mismatch = next((index for index, (have, want) in enumerate(zip(found, hunk.old))
                              if have != want), len(found))
             raise _Mismatch(path, expected - grown + mismatch + 1)
-        offset = start - (max(hunk.old_start - 1, 0) + grown)
+        offset = start - at_its_line
         ending = '\r\n' if lines and lines[min(start, len(lines) - 1)].endswith('\r\n') else '\n'
         lines[start:start + len(hunk.old)] = [line + ending for line in hunk.new]
         grown += len(hunk.new) - len(hunk.old)
@@ -189,7 +190,7 @@ def _changed_texts(root, patch, texts):
     changed = {}
     for path, hunks in patch.files.items():
         text = texts[path] if path in texts else _read(root, path)
-        changed[path] = _patched_text(text, hunks, path)
+        changed[path] = patched_text(text, hunks, path)
     return changed
 
 
