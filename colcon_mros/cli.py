@@ -14,8 +14,8 @@ import sys
 from colcon_mros import __version__
 from colcon_mros.errors import GenmrosError
 from colcon_mros.generator.defaults import (DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE,
-                                            DEFAULT_VARIABLE_SIZE_BUDGET, DEFINITION_TEXTS,
-                                            EXPORT_PARTS, PC_TARGETS, STORAGE_KINDS)
+                                            DEFINITION_TEXTS, EXPORT_PARTS, STORAGE_KINDS)
+from colcon_mros.mros_v1.defaults import DEFAULT_VARIABLE_SIZE_BUDGET, PC_TARGETS
 
 DESCRIPTION = '''\
 Generate mROS message headers from ROS 1 .msg and .srv files.
@@ -394,12 +394,13 @@ def _mros_v1_pc(options):
 def _mros_v1_fit(options):
     from colcon_mros.generator.ros_environment import require_ros_python
     require_ros_python()
-    from colcon_mros.mros_v1 import report  # needs genmsg
-    from colcon_mros.mros_v1.pc_target.build import App, app_fit, find_app
+    from colcon_mros.mros_v1 import report
+    from colcon_mros.mros_v1.app import App, find_app
+    from colcon_mros.mros_v1.firmware_fit import app_fit, export_dir_fit  # needs genmsg
     form = (options.storage, options.option_files)
     if options.export_dir:
-        fit, settings = report.export_dir_fit(options.export_dir, options.types,
-                                              options.library_settings, *form)
+        fit, settings = export_dir_fit(options.export_dir, options.types,
+                                       options.library_settings, *form)
     elif options.app_dir:
         fit, settings = app_fit(App(*find_app(options.app_dir, options.mros_root)),
                                 options.types, options.msg_paths, options.library_settings,

@@ -1,8 +1,8 @@
 """The package's layers: every module imports only its own layer and the
 layers below it, lazy imports inside functions included. The mROS v1
-library's subpackage has two: what it is (settings, rules, fit check), which
-the export uses, and what runs it (its PC target, the fit report), which
-uses the export."""
+library's subpackage has two: what it is (settings, rules, fit check, its
+apps, its aggregates), which the export uses, and what runs it (the fit
+flow, its PC target, the fit report), which uses the export."""
 
 import ast
 import os
@@ -12,8 +12,8 @@ from conftest import REPO
 PACKAGE = os.path.join(REPO, 'colcon_mros')
 # Top first; a module's layer is the longest of these its name below
 # colcon_mros starts with.
-LAYERS = ['cli', 'mros_v1.report', 'mros_v1.pc_target', 'mros_v1.patches', 'integrations',
-          'export', 'mros_v1', 'generator', '']
+LAYERS = ['cli', 'mros_v1.report', 'mros_v1.pc_target', 'mros_v1.patches',
+          'mros_v1.firmware_fit', 'integrations', 'export', 'mros_v1', 'generator', '']
 TOP_MODULES = {'cli': 'cli', '__main__': 'cli', 'errors': '', '__init__': '', '__version__': ''}
 
 

@@ -30,20 +30,16 @@ from colcon_mros.export.run_record import RunRecord, definition_directories, sna
 from colcon_mros.generator.model import ModelBuilder
 from colcon_mros.generator.output import is_generated, write_tree
 from colcon_mros.generator.parse import SpecLoader
-from colcon_mros.generator.defaults import (DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE,
-                                            DEFAULT_VARIABLE_SIZE_BUDGET, EXPORT_PARTS)
-from colcon_mros.generator.cpp import V1_DELIVERY_HEADER
-from colcon_mros.generator.render import FIRMWARE_AGGREGATES, Renderer
+from colcon_mros.generator.defaults import DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE, EXPORT_PARTS
+from colcon_mros.generator.render import Renderer
 from colcon_mros.generator.storage import storage_for
 from colcon_mros.generator.workspace import (environment_packages, installed_packages,
                                              msg_search_path, split_msg_paths,
                                              workspace_packages)
+from colcon_mros.mros_v1.aggregates import SOURCE_DIRS, firmware_files
+from colcon_mros.mros_v1.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
 from colcon_mros.mros_v1.fit import Fit
-from colcon_mros.mros_v1.fit_check_header import FIT_CHECK_HEADER, TEMPLATE_DIR, fit_check_header
 from colcon_mros.mros_v1.settings import read_settings
-
-# The files an export writes for one firmware besides the message headers.
-FIRMWARE_FILES = FIRMWARE_AGGREGATES + (V1_DELIVERY_HEADER, FIT_CHECK_HEADER)
 
 
 class ExportResult:
@@ -222,7 +218,7 @@ def export(request):
     output_dir = request.output_dir
     renderer = Renderer(request.template_dir)
     if request.record:
-        run = renderer.fingerprint(request.run_arguments(), [TEMPLATE_DIR])
+        run = renderer.fingerprint(request.run_arguments(), SOURCE_DIRS)
         last = RunRecord.read(request.record)
         if last and last.is_current(run):
             return ExportResult([], [], [], [], up_to_date=True)
@@ -246,9 +242,7 @@ def export(request):
         for service in services:
             files.update(renderer.service(service))
     if parts != 'headers':
-        files.update(renderer.aggregates(firmware_messages, request.variable_budget,
-                                         [FIT_CHECK_HEADER]))
-        files.update(fit_check_header(firmware_messages))
+        files.update(firmware_files(firmware_messages, request.variable_budget))
 
     # Headers left over from types that no longer exist in an exported package.
     keep = {}

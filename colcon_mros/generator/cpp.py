@@ -33,8 +33,6 @@ def _version_number(version):
 
 # The support version header defines it; every message header checks it.
 SUPPORT_VERSION = _version_number(__version__)
-# Included by message_headers.h, the mROS v1 aggregate: memCopy() and delivery.
-V1_DELIVERY_HEADER = 'mros_v1_delivery.h'
 # Header guards of message headers start with this; a header includes those
 # of the types it contains and checks their guards.
 MESSAGE_GUARD_PREFIX = 'MROS_MSG'

@@ -8,9 +8,6 @@ missing genmsg need nothing of ROS.
 # dir shared by many firmwares takes the headers, each firmware its aggregates).
 EXPORT_PARTS = ('all', 'headers', 'aggregates')
 
-# PUB_MSG_MAX_SIZE share of a type without a maximum wire size.
-DEFAULT_VARIABLE_SIZE_BUDGET = 1024
-
 # How strings and variable arrays are stored (colcon_mros.generator.storage);
 # the first is the default.
 STORAGE_KINDS = ('heap', 'bounded')
@@ -21,5 +18,3 @@ DEFAULT_STORAGE = STORAGE_KINDS[0]
 # first is the default.
 DEFINITION_TEXTS = ('full', 'compact')
 DEFAULT_DEFINITION_TEXT = DEFINITION_TEXTS[0]
-# genmros mros-v1-pc: 32-bit ARM Linux (the board's instruction set) or this PC.
-PC_TARGETS = ('arm', 'native')

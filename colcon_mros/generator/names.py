@@ -52,7 +52,8 @@ SUPPORT_NAMESPACES = frozenset('''
     MD5Sum DataType DataTypeId Definition CallCallbackFuncs
 '''.split())
 
-# What the support header and the mROS v1 delivery header declare in
+# What the support header, and the static header an export of mROS v1
+# aggregates puts beside it (colcon_mros.mros_v1.aggregates), declare in
 # namespaces mros and mros::wire (types, templates, namespaces): message
 # headers name packages from inside those namespaces, where these would be
 # found first. tests/generator/test_names.py holds this list equal to the headers'.

@@ -14,18 +14,12 @@ import sys
 import em
 
 from colcon_mros import __version__
-from colcon_mros.generator.aggregates import MaxSize
 from colcon_mros.generator.cpp import (SUPPORT_HEADER, SUPPORT_HEADERS, SUPPORT_VERSION,
-                                       SUPPORT_VERSION_HEADER, V1_DELIVERY_HEADER, CppMessage,
-                                       CppService, CppType)
-from colcon_mros.generator.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
+                                       SUPPORT_VERSION_HEADER, CppMessage, CppService)
 
 TEMPLATE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'templates')
 # The static headers every export holds besides what is rendered.
 SUPPORT_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'support')
-# The per-firmware aggregates the mROS v1 library includes, each rendered
-# from <name>.em.
-FIRMWARE_AGGREGATES = ('message_headers.h', 'message_class_specialization.h', 'msg_max_size.h')
 
 
 @functools.lru_cache(maxsize=None)
@@ -100,19 +94,6 @@ class Renderer:
             self.template_dir, 'srv.h.em', srv=CppService(service))}
         files.update(self.message(service.request))
         files.update(self.message(service.response))
-        return files
-
-    def aggregates(self, messages, variable_budget=DEFAULT_VARIABLE_SIZE_BUDGET,
-                   library_headers=()):
-        """The per-firmware files the mROS v1 communication library includes
-        (and the v1 delivery header, which message_headers.h includes, as it
-        includes library_headers: what the library adds to an export)."""
-        context = {'messages': [CppType(message.full_name) for message in messages],
-                   'sizes': MaxSize(messages, variable_budget),
-                   'library_headers': list(library_headers)}
-        files = {name: render_template(self.template_dir, name + '.em', **context)
-                 for name in FIRMWARE_AGGREGATES}
-        files[V1_DELIVERY_HEADER] = _static(V1_DELIVERY_HEADER)
         return files
 
 

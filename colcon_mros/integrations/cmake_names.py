@@ -7,7 +7,7 @@ generator (genmros-extras.cmake) include it instead of spelling the names
 again.
 """
 
-from colcon_mros.export.firmware_export import FIRMWARE_FILES
+from colcon_mros.mros_v1.aggregates import FIRMWARE_FILES
 from colcon_mros.generator.cpp import SUPPORT_HEADER, SUPPORT_HEADERS
 from colcon_mros.generator.definition import SERVICE_HALVES
 

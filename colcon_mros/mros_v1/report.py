@@ -1,34 +1,14 @@
 """``genmros mros-v1-fit``: an app's message types against its mROS v1
 library's settings, one table row per type.
 
-For an app (``mros_ws/<app>``) the settings are those its build includes
-(:func:`.pc_target.build.app_fit`) and the types those of its app.json or
-``--type``; for an export dir, the types it holds (or ``--type``) against
-the settings headers given. Each row shows what the type needs (definition
+The Fit comes from :mod:`.firmware_fit` (an app's, or an export dir's).
+Each row shows what the type needs (definition
 text, the connection headers ROS nodes send, the largest frame) and, for
 each setting, ``ok`` or the value it needs; then the library's tables beside
 the number of types, and the lines a build would stop with.
 """
 
-from colcon_mros.errors import GenmrosError
-from colcon_mros.export.export_dir import ExportDir
-from colcon_mros.export.firmware_export import firmware_messages
-from colcon_mros.mros_v1.fit import Fit
 from colcon_mros.mros_v1.rules import PEER_NAME_MAX
-from colcon_mros.mros_v1.settings import read_settings
-
-
-def export_dir_fit(export_dir, types, settings_files, storage_kind, option_files):
-    """The Fit of an export dir's types (those given, else all it holds) to
-    the settings headers given, and those headers."""
-    if not settings_files:
-        raise GenmrosError('with --export-dir, give the settings headers: --mros-v1-settings '
-                           "the app's mros_usr_config.h --mros-v1-settings the library's "
-                           'mros_packet_config.h')
-    exports = ExportDir(export_dir)
-    messages = firmware_messages(list(types) or exports.types(), [exports.path], storage_kind,
-                                 option_files)
-    return Fit(messages, read_settings(settings_files)), list(settings_files)
 
 
 def _cell(requirement):

@@ -8,9 +8,11 @@ from colcon_mros.generator.names import SUPPORT_HEADER_NAMES, SUPPORT_MACROS, me
 from conftest import REPO
 
 GENERATOR = os.path.join(REPO, 'colcon_mros', 'generator')
-# The static support headers, and the template of their version header.
-SUPPORT_FILES = [os.path.join(GENERATOR, 'support', name)
-                 for name in sorted(os.listdir(os.path.join(GENERATOR, 'support')))] + [
+# The static support headers, the template of their version header, and the
+# static header the mROS v1 aggregates put beside them.
+SUPPORT_DIRS = [os.path.join(GENERATOR, 'support'), os.path.join(REPO, 'colcon_mros', 'mros_v1', 'support')]
+SUPPORT_FILES = [os.path.join(directory, name) for directory in SUPPORT_DIRS
+                 for name in sorted(os.listdir(directory))] + [
     os.path.join(GENERATOR, 'templates', 'mros_message_support_version.h.em')]
 # A template's parameter list, nested template arguments included.
 _TEMPLATE_HEAD = re.compile(r'template\s*<(?:[^<>]|<[^<>]*>)*>')

@@ -12,7 +12,7 @@ import shutil
 
 import pytest
 
-from colcon_mros.export.firmware_export import FIRMWARE_FILES
+from colcon_mros.mros_v1.aggregates import FIRMWARE_FILES
 from colcon_mros.generator.cpp import SUPPORT_HEADERS
 from fixtures.build_integration.tools import (
     MESSAGE_PACKAGES, TEST_WS_SRC,

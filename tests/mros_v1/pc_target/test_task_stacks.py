@@ -11,7 +11,7 @@ import signal
 
 import pytest
 
-from colcon_mros.mros_v1.pc_target.build import App
+from colcon_mros.mros_v1.app import App
 from testing.ros_graph import DELIVERY_TIMEOUT, Board, RosGraph
 from mros_v1_checkout import MROS_V1_ROOT
 from pc_target_apps import APP_FIXTURE, build_app
