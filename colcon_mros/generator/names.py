@@ -60,7 +60,7 @@ SUPPORT_NAMESPACES = frozenset('''
 SUPPORT_HEADER_NAMES = frozenset('''
     CallCallbackFuncs Codec DataType DataTypeId Definition DeliveryStorage Duration ElementRun
     Fields FloatCodec IntegerCodec LengthCounter MD5Sum Message OnBoardFrames Reader
-    SequenceCodec Slots StampCodec Storage TextCodec Time UnsignedWord Writer array
+    RawStorage SequenceCodec Slots StampCodec TextCodec Time UnsignedWord Writer array
     bounded_string bounded_vector
     message_traits mros service_traits subtask_methods wire
 '''.split())
@@ -70,7 +70,7 @@ SUPPORT_HEADER_NAMES = frozenset('''
 SUPPORT_MACROS = frozenset('''
     MROS_BOUNDED_OVERFLOW MROS_MESSAGE_CONTAINERS_H MROS_MESSAGE_SUPPORT_H
     MROS_MESSAGE_SUPPORT_VERSION MROS_MESSAGE_SUPPORT_VERSION_H MROS_MESSAGE_WIRE_H
-    MROS_ONBOARD_FRAME_SLOTS MROS_V1_DELIVERY_H MROS_WIRE_PORTABLE
+    MROS_LIBRARY_PASSES_FRAME_SIZE MROS_ONBOARD_FRAME_SLOTS MROS_V1_DELIVERY_H MROS_WIRE_PORTABLE
 '''.split())
 
 _ASCII_IDENTIFIER = re.compile(r'[A-Za-z][A-Za-z0-9_]*\Z')

@@ -1,6 +1,6 @@
 """The per-firmware aggregates: the files the mROS v1 library includes for
 the message types of one firmware, rendered from the templates in
-``templates/`` beside the static ``support/`` header.
+``templates/``, with the defaults of :mod:`.rules`.
 
 - ``message_headers.h``: every type's header, the frame delivery
   (``mros_v1_delivery.h``) and the switch from a type ID to a callback's
@@ -14,25 +14,22 @@ the message types of one firmware, rendered from the templates in
 - ``mros_v1_fit_check.h`` (:mod:`.fit_check_header`).
 """
 
-import functools
-import os
-
 from colcon_mros.generator.cpp import CppType
 from colcon_mros.generator.render import render_template
 from colcon_mros.mros_v1.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
-from colcon_mros.mros_v1.fit_check_header import FIT_CHECK_HEADER, fit_check_header
+from colcon_mros.mros_v1.fit_check_header import FIT_CHECK_HEADER, TEMPLATE_DIR, fit_check_header
+from colcon_mros.mros_v1.rules import DELIVERY_ON_STACK_MAX, FRAME_SLOTS, LIBRARY_PASSES_FRAME_SIZE
 
-TEMPLATE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'templates')
-SUPPORT_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'support')
 # Included by message_headers.h: memCopy() and delivery, which the support
 # header only declares.
 DELIVERY_HEADER = 'mros_v1_delivery.h'
 # Each rendered from <name>.em.
-RENDERED = ('message_headers.h', 'message_class_specialization.h', 'msg_max_size.h')
+RENDERED = ('message_headers.h', 'message_class_specialization.h', 'msg_max_size.h',
+            DELIVERY_HEADER)
 # What an export writes for one firmware besides the message headers.
-FIRMWARE_FILES = RENDERED + (DELIVERY_HEADER, FIT_CHECK_HEADER)
+FIRMWARE_FILES = RENDERED + (FIT_CHECK_HEADER,)
 # What a run's output depends on here (an export's run record fingerprints them).
-SOURCE_DIRS = (TEMPLATE_DIR, SUPPORT_DIR)
+SOURCE_DIRS = (TEMPLATE_DIR,)
 
 
 def _bytes(count):
@@ -66,19 +63,16 @@ class MaxSize:
         self.has_unbounded = any(message.max_size is None for message in messages)
 
 
-@functools.lru_cache(maxsize=None)
-def _delivery_header():
-    with open(os.path.join(SUPPORT_DIR, DELIVERY_HEADER)) as source:
-        return source.read()
-
-
 def firmware_files(messages, variable_budget=DEFAULT_VARIABLE_SIZE_BUDGET):
     """{FIRMWARE_FILES name: text} for a firmware's message types (the
     generator's models)."""
     context = {'messages': [CppType(message.full_name) for message in messages],
                'sizes': MaxSize(messages, variable_budget),
-               'library_headers': [FIT_CHECK_HEADER]}
+               'library_headers': [FIT_CHECK_HEADER],
+               'frame_size_macro': LIBRARY_PASSES_FRAME_SIZE,
+               'frame_slots_setting': FRAME_SLOTS.setting,
+               'default_frame_slots': FRAME_SLOTS.default,
+               'on_stack_max': DELIVERY_ON_STACK_MAX}
     files = {name: render_template(TEMPLATE_DIR, name + '.em', **context) for name in RENDERED}
-    files[DELIVERY_HEADER] = _delivery_header()
     files.update(fit_check_header(messages))
     return files

@@ -16,7 +16,7 @@ import subprocess
 import tempfile
 
 from colcon_mros.errors import GenmrosError
-from colcon_mros.mros_v1.rules import SETTINGS_HEADERS
+from colcon_mros.mros_v1.rules import LIBRARY_PASSES_FRAME_SIZE, SETTINGS_HEADERS
 
 # `make -p` prints each variable after the line naming where it was set.
 _ORIGIN = re.compile(r"^# makefile \(from '(.*)', line \d+\)$")
@@ -168,3 +168,16 @@ def find_app(app_dir, mros_root=None):
         raise GenmrosError('no app.cfg: not an mROS v1 app', app_dir)
     app_dir = os.path.abspath(app_dir)
     return app_dir, find_mros_root(app_dir, mros_root)
+
+
+def passes_frame_size(mros_root):
+    """Whether the library of the checkout mros_root passes delivery each
+    frame's size: its ros.cpp defines LIBRARY_PASSES_FRAME_SIZE, as genmros'
+    patch set has it."""
+    try:
+        with open(os.path.join(mros_root, 'mros-lib', 'mros-src', 'api', 'ros.cpp'),
+                  encoding='utf-8', errors='replace') as stream:
+            return re.search(r'^\s*#\s*define\s+%s\b' % LIBRARY_PASSES_FRAME_SIZE, stream.read(),
+                             re.M) is not None
+    except OSError:
+        return False

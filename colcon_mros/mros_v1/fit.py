@@ -7,12 +7,13 @@ that set it, its value and the value needed. A connection header that fits
 only while the names are short, and a type without a largest frame (a
 string or variable array in heap storage), which only might not fit a
 memory pool, are warnings; :meth:`Fit.refuse` is the one place either
-becomes an error.
+becomes an error. The firmware as a whole is checked against
+:data:`.rules.FRAME_SLOTS` where the library passes delivery no frame size.
 """
 
 from colcon_mros.errors import GenmrosError, GenmrosProblems
-from colcon_mros.mros_v1.rules import (PEER_NAME_MAX, RULES, TABLES, TOPIC_NAME_MAX,
-                                       FirmwareNeeds)
+from colcon_mros.mros_v1.rules import (FRAME_SLOTS, PEER_NAME_MAX, RULES, TABLES,
+                                       TOPIC_NAME_MAX, FirmwareNeeds)
 
 
 class Misfit:
@@ -37,6 +38,29 @@ class Misfit:
         return ('%s: %s: %s needs %s >= %d (it is %d%s)'
                 % (self.setting.where(), self.type_name, self.what, self.setting.name,
                    self.asked, self.setting.value, shortest))
+
+
+class FrameSlotsMisfit:
+    """More blocks in the publishing pools than on-board delivery has slots
+    for (:data:`.rules.FRAME_SLOTS`): the build's one line."""
+
+    def __init__(self, blocks, block_settings, slots):
+        self.blocks = blocks
+        self.block_settings = block_settings
+        self.slots = slots  # a Setting, or None: the default
+
+    def line(self):
+        """FILE:LINE of the slots' setting (else of the pools'), the blocks,
+        the value needed and the value it has."""
+        where = (self.slots or self.block_settings[-1]).where()
+        value = ('it is %d' % self.slots.value if self.slots
+                 else "it is not defined: mros_v1_delivery.h's default is %d" % FRAME_SLOTS.default)
+        return ('%s: the publishing pools hold %d blocks (%s), each of which can hold a frame '
+                'waiting for on-board delivery: %s needs >= %d in every file (%s), or the library '
+                "passes the frame's size (genmros' patch set)"
+                % (where, self.blocks, ', '.join('%s %d' % (setting.name, setting.value)
+                                                 for setting in self.block_settings[1:]),
+                   FRAME_SLOTS.setting, self.blocks, value))
 
 
 def _required(settings, name):
@@ -86,9 +110,12 @@ class Fit:
     """A firmware's message types (the generator's models) against settings
     ({name: Setting}): the misfits (errors) and the warnings, and each
     type's requirements (type_requirements: (TypeNeeds, [Requirement]) in
-    the types' order, one Requirement per rule and rule_settings' setting)."""
+    the types' order, one Requirement per rule and rule_settings' setting).
+    frame_table: whether delivery keeps its table of frames published on the
+    board (the library passes no frame size: True; it does: False; not
+    known, a misfit of the table is a warning: None)."""
 
-    def __init__(self, messages, settings):
+    def __init__(self, messages, settings, frame_table=None):
         self.needs = FirmwareNeeds(messages)
         self.settings = settings
         self.topic_name_max = _required(settings, TOPIC_NAME_MAX)
@@ -120,6 +147,16 @@ class Fit:
                     % (needed.full_name, needed.unbounded_reason,
                        ', '.join('%s: %s = %d at %s' % (use, pool.name, pool.value, pool.where())
                                  for use, pool in pools)))
+
+        blocks, block_settings = FRAME_SLOTS.blocks(settings)
+        slots = FRAME_SLOTS.slots(settings)
+        if frame_table is not False and blocks > (slots.value if slots else FRAME_SLOTS.default):
+            misfit = FrameSlotsMisfit(blocks, block_settings, slots)
+            if frame_table:
+                self.misfits.append(misfit)
+            else:
+                self.warnings.append(misfit.line() + ' (whether this library does, is not known '
+                                     'here)')
 
     def _requirements(self, needed):
         """The Requirements of one TypeNeeds, one per rule."""

@@ -7,15 +7,16 @@ include path (ros.cpp's compile): a firmware whose types the library is
 certain to overrun does not build for the board, whatever build tool made
 its headers. A connection header counts with the shortest names, as the
 Python check's errors do. It also holds on-board delivery's table of waiting
-frames (mros_v1_delivery.h) to the number of blocks the publishing pools
-have, which only the compile knows.
+frames (mros_v1_delivery.h, where the library passes no frame size) to the
+number of blocks the publishing pools have (:data:`.rules.FRAME_SLOTS`).
 """
 
 import os
 
 from colcon_mros.generator.render import render_template
-from colcon_mros.mros_v1.rules import (LIBRARY_HEADER_GUARD, ONBOARD_FRAME_SLOTS, POOL_KINDS,
-                                       PUBLISHING_POOLS, RULES, SETTINGS_HEADERS, FirmwareNeeds)
+from colcon_mros.mros_v1.rules import (FRAME_SLOTS, LIBRARY_HEADER_GUARD,
+                                       LIBRARY_PASSES_FRAME_SIZE, POOL_KINDS, RULES,
+                                       SETTINGS_HEADERS, FirmwareNeeds)
 
 FIT_CHECK_HEADER = 'mros_v1_fit_check.h'
 TEMPLATE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'templates')
@@ -59,4 +60,4 @@ def fit_check_header(messages):
         TEMPLATE_DIR, FIT_CHECK_HEADER + '.em', needs=needs, pool_kinds=POOL_KINDS,
         types=[CheckedType(needed) for needed in needs.types],
         library_guard=LIBRARY_HEADER_GUARD, settings_headers=SETTINGS_HEADERS,
-        publishing_pools=PUBLISHING_POOLS, onboard_frame_slots=ONBOARD_FRAME_SLOTS)}
+        frame_slots=FRAME_SLOTS, frame_size_macro=LIBRARY_PASSES_FRAME_SIZE)}

@@ -6,9 +6,11 @@ takes each message from memory pools of fixed sizes, and checks none of them
 against what a peer sends (docs/pc-target.md, "The library's own limits").
 Each :class:`Rule` here is one such need, counted from what the generator
 knows of a type (:class:`TypeNeeds`: its full definition text, its name, its
-largest frame). The Python fit check (:mod:`.fit`) and the compile-time
-check ``mros_v1_fit_check.h`` (:mod:`.fit_check_header`) are two renderings
-of this one table.
+largest frame); :data:`FRAME_SLOTS` is the one rule of the firmware as a
+whole. The Python fit check (:mod:`.fit`) and the compile-time check
+``mros_v1_fit_check.h`` (:mod:`.fit_check_header`) are two renderings of
+this one table, and on-board delivery (``mros_v1_delivery.h``) takes its
+defaults from here.
 
 A connection header's length depends on the *names* too, the topic and the
 peer's caller id, which the firmware's code and the ROS side choose: with
@@ -48,9 +50,13 @@ TABLES = ('MROS_TOPIC_MAX_NUM', 'MROS_NODE_MAX_NUM', 'MROS_PUB_TOPIC_CONNECTOR_M
           'MROS_SUB_TOPIC_CONNECTOR_MAX_NUM')
 # The compile-time check looks at this many pools of each kind (the samples have 3).
 MAX_POOLS = 8
-# What mros_v1_delivery.h remembers of the frames waiting for the subscriber
-# task: one slot per block of the publishing pools (its default there).
-ONBOARD_FRAME_SLOTS = 'MROS_ONBOARD_FRAME_SLOTS'
+# Defined by genmros' patch set in ros.cpp before it includes
+# message_headers.h: the library passes delivery each frame's size.
+LIBRARY_PASSES_FRAME_SIZE = 'MROS_LIBRARY_PASSES_FRAME_SIZE'
+# The largest message delivery constructs on the subscriber task's stack
+# (mros_v1_delivery.h); a larger one gets static storage of its type, so
+# delivery's stack use stays below this and the frame's bookkeeping.
+DELIVERY_ON_STACK_MAX = 128
 
 
 class PoolKind:
@@ -138,6 +144,33 @@ class Rule:
             return None
         return amount + (SHORTEST_NAMES if self.with_names else 0)
 
+
+class FrameSlotsRule:
+    """The firmware's one rule of the library as a whole: where the library
+    passes delivery no frame size (LIBRARY_PASSES_FRAME_SIZE undefined),
+    mros_v1_delivery.h remembers the size of each frame published on the
+    board, in `setting` slots (`default` unless the firmware defines it),
+    and every block of the publishing pools can hold a frame waiting for the
+    subscriber task at once."""
+
+    setting = 'MROS_ONBOARD_FRAME_SLOTS'
+    default = 32
+    pools = PUBLISHING_POOLS
+
+    def blocks(self, settings):
+        """How many blocks the publishing pools have, from {name: Setting}
+        (:mod:`.settings`), and the settings that say so."""
+        count = settings[self.pools.count]
+        lengths = [settings[name] for index, name in self.pools.queue_lengths
+                   if index <= count.value and name in settings]
+        return sum(length.value for length in lengths), [count] + lengths
+
+    def slots(self, settings):
+        """The slots: the firmware's Setting, or None (then `default`)."""
+        return settings.get(self.setting)
+
+
+FRAME_SLOTS = FrameSlotsRule()
 
 RULES = (
     Rule(REQUEST_BUFFER, PACKET_CONFIG, lambda needs: needs.subscriber_header,

@@ -5,36 +5,41 @@ import os
 import re
 
 from colcon_mros.generator.names import SUPPORT_HEADER_NAMES, SUPPORT_MACROS, member_identifier
+from colcon_mros.mros_v1.aggregates import DELIVERY_HEADER, firmware_files
 from conftest import REPO
 
 GENERATOR = os.path.join(REPO, 'colcon_mros', 'generator')
-# The static support headers, the template of their version header, and the
-# static header the mROS v1 aggregates put beside them.
-SUPPORT_DIRS = [os.path.join(GENERATOR, 'support'), os.path.join(REPO, 'colcon_mros', 'mros_v1', 'support')]
-SUPPORT_FILES = [os.path.join(directory, name) for directory in SUPPORT_DIRS
-                 for name in sorted(os.listdir(directory))] + [
+# The static support headers and the template of their version header.
+SUPPORT_FILES = [os.path.join(GENERATOR, 'support', name)
+                 for name in sorted(os.listdir(os.path.join(GENERATOR, 'support')))] + [
     os.path.join(GENERATOR, 'templates', 'mros_message_support_version.h.em')]
+
+
+def _support_texts():
+    """The texts of SUPPORT_FILES and of the delivery header the mROS v1
+    aggregates put beside them, as an export writes it."""
+    texts = []
+    for path in SUPPORT_FILES:
+        with open(path) as stream:
+            texts.append(stream.read())
+    return texts + [firmware_files([])[DELIVERY_HEADER]]
 # A template's parameter list, nested template arguments included.
 _TEMPLATE_HEAD = re.compile(r'template\s*<(?:[^<>]|<[^<>]*>)*>')
 _DECLARATION = re.compile(r'\b(?:struct|class|union|namespace|using)\s+([A-Za-z_]\w*)')
 
 
-def _declared(path):
-    with open(path) as stream:
-        text = _TEMPLATE_HEAD.sub('template <>', stream.read())
-    return set(_DECLARATION.findall(text))
+def _declared(text):
+    return set(_DECLARATION.findall(_TEMPLATE_HEAD.sub('template <>', text)))
 
 
 def test_reserved_names_are_what_the_support_headers_declare():
-    declared = set().union(*(_declared(path) for path in SUPPORT_FILES))
+    declared = set().union(*(_declared(text) for text in _support_texts()))
     assert declared == SUPPORT_HEADER_NAMES
 
 
 def test_the_macros_are_what_the_support_headers_define_and_read():
     macros = set()
-    for path in SUPPORT_FILES:
-        with open(path) as stream:
-            text = stream.read()
+    for text in _support_texts():
         macros.update(re.findall(r'#\s*(?:define|ifndef)\s+(MROS_\w+)', text))
         macros.update(re.findall(r'defined\((MROS_\w+)\)', text))
     assert macros == SUPPORT_MACROS

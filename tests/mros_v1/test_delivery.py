@@ -1,9 +1,11 @@
-"""mROS v1 delivery (mros_v1_delivery.h) keeps the message it hands a
+"""mROS v1 delivery (mros_v1_delivery.h) keeps a large message it hands a
 subscriber off the subscriber task's stack: the library's tasks have a few
 KiB (MROS_TASK_STACK_SIZE, 2048 bytes in the samples), and a bounded
 message holds its data itself. GCC's -fstack-usage of deliverFrame for a
 bounded sensor_msgs/JointState of over 1 KB stays small, for the host and
-for GR-PEACH's Cortex-A9 at mROS v1's -Os."""
+for GR-PEACH's Cortex-A9 at mROS v1's -Os; a small message stays on the
+stack, which costs no RAM of its own. The table of frames published on the
+board exists only where the library passes no frame size."""
 
 import os
 import re
@@ -11,6 +13,7 @@ import subprocess
 
 import pytest
 
+from colcon_mros.mros_v1.rules import DELIVERY_ON_STACK_MAX
 from conftest import run_genmros
 
 SOURCE = '''#include <message_headers.h>
@@ -52,6 +55,76 @@ def test_delivery_keeps_a_bounded_message_off_the_stack(bounded_joint_state, tmp
     # deliverFrame, inlined or not, and what calls it: far below the message.
     assert frames + callers, usage
     assert max(frames + callers) < 256, usage
+
+
+# Publishes and delivers a bounded JointState (over 1 KB) and a bounded
+# String (a few dozen bytes), as ros.cpp does.
+BOTH_SIZES = '''#include <message_headers.h>
+#include <sensor_msgs/JointState.h>
+#include <std_msgs/String.h>
+static void received(void*) {}
+void publish(const sensor_msgs::JointState& joints, const std_msgs::String& text, char* block) {
+  joints.memCopy(block);
+  text.memCopy(block);
+}
+void deliver(char* frame, unsigned size) {
+  callCallback(sensor_msgs::JointState::MROS_TYPE_ID, received, frame, size);
+  callCallback(std_msgs::String::MROS_TYPE_ID, received, frame, size);
+}
+'''
+
+
+def _static_symbols(include, tmp_path, *flags):
+    """{demangled name: size} of the static data of BOTH_SIZES, compiled
+    with flags."""
+    source = tmp_path / 'both.cpp'
+    source.write_text(BOTH_SIZES)
+    subprocess.run(['g++', '-std=gnu++98', '-O2', '-Wall', '-Wextra', '-pedantic', '-Werror', '-c',
+                    '-I', include] + list(flags) + [str(source), '-o', str(tmp_path / 'both.o')],
+                   check=True)
+    symbols = subprocess.run(['nm', '-C', '-S', str(tmp_path / 'both.o')], capture_output=True,
+                             text=True, check=True).stdout
+    return {match.group(3): int(match.group(1), 16)
+            for match in re.finditer(r'^\S+ (\S+) ([BbDdu]) (.*)$', symbols, re.M)}
+
+
+@pytest.fixture(scope='module')
+def both_sizes(tmp_path_factory):
+    root = tmp_path_factory.mktemp('both_sizes')
+    options = root / 'bounds.options'
+    options.write_text('* max_size:32 max_count:16\n')
+    include = str(root / 'include')
+    run_genmros('export', '--type', 'sensor_msgs/JointState', '--type', 'std_msgs/String',
+                '-o', include, '--underlay', '/usr', '--storage', 'bounded', '--options',
+                str(options))
+    return include
+
+
+def test_only_a_large_message_takes_static_storage(both_sizes, tmp_path):
+    static = _static_symbols(both_sizes, tmp_path)
+    storage = {name: size for name, size in static.items() if 'DeliveryStorage' in name}
+    assert list(storage) == [
+        'mros::wire::DeliveryStorage<sensor_msgs::JointState, true>::place()::storage'], static
+    assert list(storage.values())[0] > 1000 > DELIVERY_ON_STACK_MAX
+
+
+def test_the_frame_table_exists_only_where_the_library_passes_no_frame_size(both_sizes, tmp_path):
+    # mROS v1 as it is: memCopy notes each frame for on-board delivery.
+    table = [name for name in _static_symbols(both_sizes, tmp_path) if 'OnBoardFrames' in name]
+    assert table == ['mros::wire::OnBoardFrames::table()::slots']
+    # genmros' patch set: ros.cpp defines the macro and passes each size.
+    patched = _static_symbols(both_sizes, tmp_path, '-DMROS_LIBRARY_PASSES_FRAME_SIZE')
+    assert [name for name in patched if 'OnBoardFrames' in name] == []
+    # There the library's three-argument call, which needs the table, does not compile.
+    source = tmp_path / 'unsized.cpp'
+    source.write_text('#include <message_headers.h>\n#include <std_msgs/String.h>\n'
+                      'static void received(void*) {}\n'
+                      'void deliver(char* frame) { callCallback(std_msgs::String::MROS_TYPE_ID, '
+                      'received, frame); }\n')
+    refused = subprocess.run(['g++', '-std=gnu++98', '-fsyntax-only', '-I', both_sizes,
+                              '-DMROS_LIBRARY_PASSES_FRAME_SIZE', str(source)],
+                             capture_output=True, text=True)
+    assert refused.returncode != 0 and 'callCallback' in refused.stderr, refused.stderr
 
 
 def _message_size(compiler, include, tmp_path):

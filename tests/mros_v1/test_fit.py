@@ -105,6 +105,36 @@ def test_a_bounded_frame_needs_the_largest_pool_within_the_pool_count(tmp_path):
         'ROS_INNER_TOPIC_PUBLISHER_MEMPOOL2_SIZE', 'ROS_OUTER_TOPIC_PUBLISHER_MEMPOOL1_SIZE']
 
 
+def test_the_publishing_blocks_need_a_frame_slot_each_where_the_library_passes_no_size(tmp_path):
+    # The small settings' two publishing pools hold 16 + 8 blocks, within
+    # on-board delivery's 32 slots; with 17 + 16 there is one block too many.
+    messages = _messages('std_msgs/String')
+    assert Fit(messages, read_settings(header_paths(small_settings())), frame_table=True).misfits == []
+    settings = header_paths(small_settings(tmp_path / 'more',
+                                           ROS_INNER_TOPIC_PUBLISHER_MEMPOOL1_QUELEN=17,
+                                           ROS_INNER_TOPIC_PUBLISHER_MEMPOOL2_QUELEN=16))
+    _, path, line = define(settings, 'ROS_INNER_TOPIC_PUBLISHER_MEMPOOL2_QUELEN')
+    expected = ("%s:%d: the publishing pools hold 33 blocks (ROS_INNER_TOPIC_PUBLISHER_MEMPOOL1_QUELEN "
+                '17, ROS_INNER_TOPIC_PUBLISHER_MEMPOOL2_QUELEN 16), each of which can hold a frame '
+                'waiting for on-board delivery: MROS_ONBOARD_FRAME_SLOTS needs >= 33 in every file '
+                "(it is not defined: mros_v1_delivery.h's default is 32), or the library passes the "
+                "frame's size (genmros' patch set)" % (path, line))
+    as_is = Fit(messages, read_settings(settings), frame_table=True)
+    assert [misfit.line() for misfit in as_is.misfits] == [expected]
+    with pytest.raises(GenmrosProblems) as refused:
+        as_is.refuse()
+    assert str(refused.value) == expected
+    # The patched library keeps no table; a library not known here gets a warning.
+    assert Fit(messages, read_settings(settings), frame_table=False).misfits == []
+    unknown = Fit(messages, read_settings(settings))
+    assert (unknown.misfits, unknown.warnings[-1:]) == ([], [expected + ' (whether this library does, is '
+                                                        'not known here)'])
+    # The firmware's own MROS_ONBOARD_FRAME_SLOTS, read where it is set.
+    with open(settings[0], 'a') as stream:
+        stream.write('#define MROS_ONBOARD_FRAME_SLOTS 33\n')
+    assert Fit(messages, read_settings(settings), frame_table=True).misfits == []
+
+
 def test_a_connection_header_fits_for_certain_only_with_room_for_the_shortest_names(tmp_path):
     text = len(_genmsg_full_text('mros_test/PersonalData').encode())
     subscriber = SUBSCRIBER_HEADER_FIXED + text + len('mros_test/PersonalData') + 1

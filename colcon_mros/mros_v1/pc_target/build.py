@@ -122,7 +122,8 @@ def build(request):
         from colcon_mros.generator.ros_environment import require_ros_python
         require_ros_python()
         from colcon_mros.mros_v1.firmware_fit import app_fit  # genmsg: the types' models
-        fit, _ = app_fit(app, types, msg_paths, (), request.storage, request.option_files)
+        fit, _ = app_fit(app, types, msg_paths, (), request.storage, request.option_files,
+                         request.hardened)
         fit.refuse(request.fit_strict)
         for warning in fit.warnings:
             print('genmros: warning: %s' % warning)
