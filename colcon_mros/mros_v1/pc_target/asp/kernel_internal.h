@@ -79,7 +79,7 @@ extern struct semaphore *kernel_semaphores;
 /* kernel_timers.c: the handler thread's place among the tasks (it runs
  * interrupt-level code above them), what wakes the timer thread when a
  * deadline comes nearer, and each cyclic handler's timer handle (-1:
- * stopped). */
+ * stopped; set without kernel_lock, by start-up, sta_cyc and stp_cyc). */
 extern struct tcb kernel_handler_tcb;
 extern pthread_cond_t kernel_timer_wakeup;
 extern int *kernel_cyclic_timers;
@@ -115,7 +115,8 @@ void kernel_end_wait(struct tcb *task, ER result);
 
 /* ---- the threads and what start-up calls (kernel.c's main) ---- */
 
-/* kernel_tasks.c: the thread of the task it is given. */
+/* The threads' bodies, which main starts. kernel_tasks.c: the thread of
+ * the task it is given. */
 void *kernel_task_thread(void *argument);
 /* kernel_timers.c: the handler thread, the timer thread, and the start of
  * the clock and of a cyclic handler (both called without kernel_lock). */
