@@ -18,7 +18,8 @@ ARM = dict(prefix='arm-linux-gnueabihf-',
            link=['-static'])
 NATIVE = dict(prefix='', flags=[], link=[])
 # The ASP kernel's stand-in, below pc_target/.
-KERNEL = ('asp/kernel.c', 'asp/syslog.c', 'asp/task_stacks.c')
+KERNEL = ('asp/kernel.c', 'asp/kernel_scheduler.c', 'asp/kernel_tasks.c',
+          'asp/kernel_semaphores.c', 'asp/kernel_timers.c', 'asp/syslog.c', 'asp/task_stacks.c')
 SANITIZE = ['-fsanitize=address,undefined', '-fno-omit-frame-pointer', '-g']
 
 

@@ -3,7 +3,7 @@
 On the board, ASP's ``cfg`` tool turns the static API of an app's
 ``app.cfg`` (and the ``mros.cfg`` it includes) into ``kernel_cfg.h`` (one
 ID macro per object) and ``kernel_cfg.c`` (the kernel's tables). This does
-the same for ``asp/kernel.c``: the IDs in order of creation, as
+the same for ``asp/kernel*.c``: the IDs in order of creation, as
 ASP numbers them, and tables whose fields are the cfg's own C expressions,
 compiled with the app's headers (the cfg's ``#include`` lines). Board-only
 files the cfg includes (the timer, serial and log services, mbed's

@@ -85,7 +85,8 @@ CFLAGS = $(COMMON_FLAGS) $(C_OPTIMIZATION)
 CXXFLAGS = $(COMMON_FLAGS) $(CXX_OPTIMIZATION) -std=gnu++98 -fno-rtti -fno-exceptions \
            -fno-builtin $(APP_CXXFLAGS)
 
-PC_OBJS := kernel.o syslog.o task_stacks.o lwip.o ros_environment.o mbed.o $(HOST_LIBC_OBJS)
+PC_OBJS := kernel.o kernel_scheduler.o kernel_tasks.o kernel_semaphores.o kernel_timers.o syslog.o \
+           task_stacks.o lwip.o ros_environment.o mbed.o $(HOST_LIBC_OBJS)
 $(addprefix $(OBJ_DIR)/,$(PC_OBJS)): C_OPTIMIZATION := -O2
 $(addprefix $(OBJ_DIR)/,$(PC_OBJS)): CXX_OPTIMIZATION := -O2
 LIBRARY_OBJS := $(addprefix $(OBJ_DIR)/,$(MROS_CXX_OBJ) $(MROS_C_OBJ) $(PC_OBJS))

@@ -1,4 +1,4 @@
-"""The PC target's TOPPERS/ASP scheduling (colcon_mros/mros_v1/pc_target/asp/kernel.c), on its
+"""The PC target's TOPPERS/ASP scheduling (colcon_mros/mros_v1/pc_target/asp/kernel*.c), on its
 own: a program of ours (tests/fixtures/pc_target_kernel) configured from its
 own .cfg by colcon_mros.mros_v1.pc_target.asp_cfg, as an mROS v1 app is
 (tests/stand_in_programs.py), runs scenarios whose

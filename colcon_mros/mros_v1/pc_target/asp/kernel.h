@@ -1,6 +1,6 @@
 /*
  * TOPPERS/ASP's kernel API on a PC: the types, constants and service calls
- * that mROS v1 and its apps use, run by kernel.c with ASP's
+ * that mROS v1 and its apps use, run by kernel*.c with ASP's
  * scheduling (one task at a time, highest priority first, FIFO within a
  * priority, a switch only inside a service call).
  */
