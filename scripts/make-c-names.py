@@ -39,15 +39,13 @@ SUPPORT_DIR = os.path.join(GENERATOR, 'support')
 OUTPUT = os.path.join(GENERATOR, 'c_names.py')
 
 PARSER = 'clang++'
-# (compiler, the clang target that parses its preprocessed output, the
-# phrase the docstring uses for it). None: the host's own target.
+# (compiler, the clang target that parses its preprocessed output, the C
+# library its headers come from, for the docstring). Target None: the host.
 COMPILERS = [
-    ('g++', None, 'host g++'),
-    ('clang++', None, 'clang++'),
-    ('arm-none-eabi-g++', 'arm-none-eabi', 'arm-none-eabi-g++'),
+    ('g++', None, 'glibc'),
+    ('clang++', None, 'glibc'),
+    ('arm-none-eabi-g++', 'arm-none-eabi', 'newlib'),
 ]
-# Which C library each compiler's headers come from, for the docstring.
-C_LIBRARY = {'g++': 'glibc', 'clang++': 'glibc', 'arm-none-eabi-g++': 'newlib'}
 # mROS v1 builds with gnu++98; message headers compile in every later mode.
 MODES = ['gnu++98', 'c++98', 'gnu++11', 'c++11', 'gnu++14', 'c++14', 'gnu++17', 'c++17']
 C_HEADERS = ['assert.h', 'ctype.h', 'errno.h', 'float.h', 'limits.h', 'locale.h', 'math.h',
@@ -119,9 +117,11 @@ def global_declarations(tree):
 def parsed_names(source, mode, target, include_flags):
     """Global names of a C++ source as clang++ parses it in this mode.
 
-    g++'s headers hold a few GNU attributes clang reads differently
-    ("'__malloc__' attribute takes no arguments"); clang drops the attribute
-    and keeps the declaration, so such errors do not stop the dump.
+    g++'s headers hold a few things clang reads differently: glibc's
+    __malloc__ attribute with arguments, which clang drops while keeping
+    the declaration, and libstdc++'s __integer_pack builtin (c++14 on), in
+    std::make_integer_sequence, not at global scope. So errors do not stop
+    the dump, and none of them loses a global name.
     """
     command = [PARSER, '-std=' + mode, '-x', 'c++'] + include_flags + [
         '-fsyntax-only', '-ferror-limit=0', '-w', '-Xclang', '-ast-dump=json', source]
@@ -160,23 +160,22 @@ def collect(compilers, directory):
             with open(preprocessed, 'w') as stream:
                 stream.write(run([compiler, '-std=' + mode] + include_flags + ['-E', unit]))
             global_names |= parsed_names(preprocessed, mode, target, [])
-    macros = {name for name in words(macros) if not name.startswith(SUPPORT_MACRO_PREFIX)}
+    macros = {name for name in macros
+              if not name.startswith('_') and not name.startswith(SUPPORT_MACRO_PREFIX)}
     return macros, words(global_names)
 
 
 def compiler_phrase(compilers):
-    """'host g++ and clang++ with glibc, arm-none-eabi-g++ with newlib'."""
-    groups = []
-    for compiler, _, phrase in compilers:
-        library = C_LIBRARY[compiler]
-        if groups and groups[-1][0] == library:
-            groups[-1][1].append(phrase)
+    """'host g++ and clang++ with glibc, arm-none-eabi-g++ with newlib', or
+    less: the docstring names only the compilers that ran."""
+    groups = []  # [(target, library, [compiler, ...])], in COMPILERS' order
+    for compiler, target, library in compilers:
+        if groups and groups[-1][:2] == (target, library):
+            groups[-1][2].append(compiler)
         else:
-            groups.append((library, [phrase]))
-    parts = []
-    for library, phrases in groups:
-        parts.append('%s with %s' % (' and '.join(phrases), library))
-    return ', '.join(parts)
+            groups.append((target, library, [compiler]))
+    return ', '.join('%s%s with %s' % ('' if target else 'host ', ' and '.join(names), library)
+                     for target, library, names in groups)
 
 
 def wrapped(names):
