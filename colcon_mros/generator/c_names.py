@@ -1,13 +1,14 @@
 """Names the C and C++ standard headers claim, which ROS names can meet.
 
-Collected from the compilers this project supports (host g++ and clang++
-with glibc, arm-none-eabi-g++ with newlib) in every language mode from
-gnu++98 to c++17, preprocessing and parsing the support header, <limits>
-and every C standard header (assert.h, ctype.h, errno.h, float.h, limits.h,
-locale.h, math.h, setjmp.h, signal.h, stdarg.h, stddef.h, stdio.h,
-stdlib.h, string.h, time.h, wchar.h, wctype.h, inttypes.h, fenv.h), which
-a firmware may include before a message header. Names that start with an
-underscore are left out: ROS names cannot start with one.
+Made by scripts/make-c-names.py; do not edit by hand. Collected from the
+compilers this project supports (host g++ and clang++ with glibc,
+arm-none-eabi-g++ with newlib) in every language mode from gnu++98 to c++17,
+preprocessing and parsing the support header, <limits> and every C standard
+header (assert.h, ctype.h, errno.h, float.h, limits.h, locale.h, math.h,
+setjmp.h, signal.h, stdarg.h, stddef.h, stdio.h, stdlib.h, string.h, time.h,
+wchar.h, wctype.h, inttypes.h, fenv.h), which a firmware may include before
+a message header. Names that start with an underscore are left out: ROS
+names cannot start with one.
 """
 
 # Object- and function-like macros (EOF, errno, INT32_MAX, assert, and the
@@ -145,111 +146,122 @@ MACROS = frozenset('''
 # What those headers declare in the global namespace (functions, types,
 # variables, namespaces): a package's namespace cannot share a name with one.
 GLOBAL_NAMES = frozenset('''
-    FILE a64l abort abs access acct acos acosf acosf32 acosf32x acosf64 acosf64x acosh acoshf
-    acoshf32 acoshf32x acoshf64 acoshf64x acoshl acosl alarm aligned_alloc alloca arc4random
-    arc4random_buf arc4random_uniform asctime asctime_r asin asinf asinf32 asinf32x asinf64
-    asinf64x asinh asinhf asinhf32 asinhf32x asinhf64 asinhf64x asinhl asinl asiprintf
-    asniprintf asnprintf asprintf at_quick_exit atan atan2 atan2f atan2f32 atan2f32x atan2f64
-    atan2f64x atan2l atanf atanf32 atanf32x atanf64 atanf64x atanh atanhf atanhf32 atanhf32x
-    atanhf64 atanhf64x atanhl atanl atexit atof atoff atoi atol atoll basename bcmp bcopy
-    blkcnt64_t blkcnt_t blksize_t brk bsearch btowc bzero caddr_t calloc canonicalize
-    canonicalize_file_name canonicalizef canonicalizef32 canonicalizef32x canonicalizef64
-    canonicalizef64x canonicalizel cbrt cbrtf cbrtf32 cbrtf32x cbrtf64 cbrtf64x cbrtl ceil ceilf
-    ceilf32 ceilf32x ceilf64 ceilf64x ceill cfree chdir chown chroot clearenv clearerr
-    clearerr_unlocked clock clock_adjtime clock_getcpuclockid clock_getres clock_gettime
-    clock_nanosleep clock_settime clock_t clockid_t close close_range closefrom comparison_fn_t
-    confstr cookie_close_function_t cookie_io_functions_t cookie_read_function_t
+    FILE a64l abort abs access acct acos acosf acosf128 acosf32 acosf32x acosf64 acosf64x acosh
+    acoshf acoshf128 acoshf32 acoshf32x acoshf64 acoshf64x acoshl acosl alarm aligned_alloc
+    alloca arc4random arc4random_buf arc4random_uniform asctime asctime_r asin asinf asinf128
+    asinf32 asinf32x asinf64 asinf64x asinh asinhf asinhf128 asinhf32 asinhf32x asinhf64
+    asinhf64x asinhl asinl asiprintf asniprintf asnprintf asprintf at_quick_exit atan atan2
+    atan2f atan2f128 atan2f32 atan2f32x atan2f64 atan2f64x atan2l atanf atanf128 atanf32
+    atanf32x atanf64 atanf64x atanh atanhf atanhf128 atanhf32 atanhf32x atanhf64 atanhf64x
+    atanhl atanl atexit atof atoff atoi atol atoll basename bcmp bcopy blkcnt64_t blkcnt_t
+    blksize_t brk bsearch btowc bzero caddr_t calloc canonicalize canonicalize_file_name
+    canonicalizef canonicalizef128 canonicalizef32 canonicalizef32x canonicalizef64
+    canonicalizef64x canonicalizel cbrt cbrtf cbrtf128 cbrtf32 cbrtf32x cbrtf64 cbrtf64x cbrtl
+    ceil ceilf ceilf128 ceilf32 ceilf32x ceilf64 ceilf64x ceill cfree chdir chown chroot
+    clearenv clearerr clearerr_unlocked clock clock_adjtime clock_getcpuclockid clock_getres
+    clock_gettime clock_nanosleep clock_settime clock_t clockid_t close close_range closefrom
+    comparison_fn_t confstr cookie_close_function_t cookie_io_functions_t cookie_read_function_t
     cookie_seek_function_t cookie_write_function_t copy_file_range copysign copysignf
-    copysignf32 copysignf32x copysignf64 copysignf64x copysignl cos cosf cosf32 cosf32x cosf64
-    cosf64x cosh coshf coshf32 coshf32x coshf64 coshf64x coshl cosl crypt ctermid ctime ctime_r
-    cuserid daddl daddr_t daemon daylight ddivl delete delete[] dev_t dfmal difftime diprintf
-    div div_t dmull double_t dprintf drand48 drand48_data drand48_r drem dremf dreml dsqrtl
-    dsubl dup dup2 dup3 duplocale dysize eaccess ecvt ecvt_r endusershell environ erand48
-    erand48_r erf erfc erfcf erfcf32 erfcf32x erfcf64 erfcf64x erfcl erff erff32 erff32x erff64
-    erff64x erfl error_t euidaccess execl execle execlp execv execve execveat execvp execvpe
-    exit exp exp10 exp10f exp10f32 exp10f32x exp10f64 exp10f64x exp10l exp2 exp2f exp2f32
-    exp2f32x exp2f64 exp2f64x exp2l expf expf32 expf32x expf64 expf64x expl explicit_bzero expm1
-    expm1f expm1f32 expm1f32x expm1f64 expm1f64x expm1l f32addf32x f32addf64 f32addf64x
-    f32divf32x f32divf64 f32divf64x f32fmaf32x f32fmaf64 f32fmaf64x f32mulf32x f32mulf64
-    f32mulf64x f32sqrtf32x f32sqrtf64 f32sqrtf64x f32subf32x f32subf64 f32subf64x f32xaddf64
-    f32xaddf64x f32xdivf64 f32xdivf64x f32xfmaf64 f32xfmaf64x f32xmulf64 f32xmulf64x f32xsqrtf64
-    f32xsqrtf64x f32xsubf64 f32xsubf64x f64addf64x f64divf64x f64fmaf64x f64mulf64x f64sqrtf64x
-    f64subf64x fabs fabsf fabsf32 fabsf32x fabsf64 fabsf64x fabsl faccessat fadd faddl fchdir
-    fchown fchownat fclose fcloseall fcvt fcvt_r fd_mask fd_set fdatasync fdim fdimf fdimf32
-    fdimf32x fdimf64 fdimf64x fdiml fdiv fdivl fdopen feclearexcept fedisableexcept
-    feenableexcept fegetenv fegetexcept fegetexceptflag fegetmode fegetround feholdexcept
-    femode_t fenv_t feof feof_unlocked feraiseexcept ferror ferror_unlocked fesetenv fesetexcept
-    fesetexceptflag fesetmode fesetround fetestexcept fetestexceptflag feupdateenv fexcept_t
-    fexecve fflush fflush_unlocked ffma ffmal ffs ffsl ffsll fgetc fgetc_unlocked fgetpos
-    fgetpos64 fgets fgets_unlocked fgetwc fgetwc_unlocked fgetws fgetws_unlocked fileno
-    fileno_unlocked finite finitef finitel fiprintf fiscanf float_t flockfile floor floorf
-    floorf32 floorf32x floorf64 floorf64x floorl fls flsl flsll fma fmaf fmaf32 fmaf32x fmaf64
-    fmaf64x fmal fmax fmaxf fmaxf32 fmaxf32x fmaxf64 fmaxf64x fmaximum fmaximum_mag
-    fmaximum_mag_num fmaximum_mag_numf fmaximum_mag_numf32 fmaximum_mag_numf32x
-    fmaximum_mag_numf64 fmaximum_mag_numf64x fmaximum_mag_numl fmaximum_magf fmaximum_magf32
+    copysignf128 copysignf32 copysignf32x copysignf64 copysignf64x copysignl cos cosf cosf128
+    cosf32 cosf32x cosf64 cosf64x cosh coshf coshf128 coshf32 coshf32x coshf64 coshf64x coshl
+    cosl crypt ctermid ctime ctime_r cuserid daddl daddr_t daemon daylight ddivl delete delete[]
+    dev_t dfmal difftime diprintf div div_t dmull double_t dprintf drand48 drand48_data
+    drand48_r drem dremf dreml dsqrtl dsubl dup dup2 dup3 duplocale dysize eaccess ecvt ecvt_r
+    endusershell environ erand48 erand48_r erf erfc erfcf erfcf128 erfcf32 erfcf32x erfcf64
+    erfcf64x erfcl erff erff128 erff32 erff32x erff64 erff64x erfl error_t euidaccess execl
+    execle execlp execv execve execveat execvp execvpe exit exp exp10 exp10f exp10f128 exp10f32
+    exp10f32x exp10f64 exp10f64x exp10l exp2 exp2f exp2f128 exp2f32 exp2f32x exp2f64 exp2f64x
+    exp2l expf expf128 expf32 expf32x expf64 expf64x expl explicit_bzero expm1 expm1f expm1f128
+    expm1f32 expm1f32x expm1f64 expm1f64x expm1l f32addf128 f32addf32x f32addf64 f32addf64x
+    f32divf128 f32divf32x f32divf64 f32divf64x f32fmaf128 f32fmaf32x f32fmaf64 f32fmaf64x
+    f32mulf128 f32mulf32x f32mulf64 f32mulf64x f32sqrtf128 f32sqrtf32x f32sqrtf64 f32sqrtf64x
+    f32subf128 f32subf32x f32subf64 f32subf64x f32xaddf128 f32xaddf64 f32xaddf64x f32xdivf128
+    f32xdivf64 f32xdivf64x f32xfmaf128 f32xfmaf64 f32xfmaf64x f32xmulf128 f32xmulf64 f32xmulf64x
+    f32xsqrtf128 f32xsqrtf64 f32xsqrtf64x f32xsubf128 f32xsubf64 f32xsubf64x f64addf128
+    f64addf64x f64divf128 f64divf64x f64fmaf128 f64fmaf64x f64mulf128 f64mulf64x f64sqrtf128
+    f64sqrtf64x f64subf128 f64subf64x f64xaddf128 f64xdivf128 f64xfmaf128 f64xmulf128
+    f64xsqrtf128 f64xsubf128 fabs fabsf fabsf128 fabsf32 fabsf32x fabsf64 fabsf64x fabsl
+    faccessat fadd faddl fchdir fchown fchownat fclose fcloseall fcvt fcvt_r fd_mask fd_set
+    fdatasync fdim fdimf fdimf128 fdimf32 fdimf32x fdimf64 fdimf64x fdiml fdiv fdivl fdopen
+    feclearexcept fedisableexcept feenableexcept fegetenv fegetexcept fegetexceptflag fegetmode
+    fegetround feholdexcept femode_t fenv_t feof feof_unlocked feraiseexcept ferror
+    ferror_unlocked fesetenv fesetexcept fesetexceptflag fesetmode fesetround fetestexcept
+    fetestexceptflag feupdateenv fexcept_t fexecve fflush fflush_unlocked ffma ffmal ffs ffsl
+    ffsll fgetc fgetc_unlocked fgetpos fgetpos64 fgets fgets_unlocked fgetwc fgetwc_unlocked
+    fgetws fgetws_unlocked fileno fileno_unlocked finite finitef finitel fiprintf fiscanf
+    float_t flockfile floor floorf floorf128 floorf32 floorf32x floorf64 floorf64x floorl fls
+    flsl flsll fma fmaf fmaf128 fmaf32 fmaf32x fmaf64 fmaf64x fmal fmax fmaxf fmaxf128 fmaxf32
+    fmaxf32x fmaxf64 fmaxf64x fmaximum fmaximum_mag fmaximum_mag_num fmaximum_mag_numf
+    fmaximum_mag_numf128 fmaximum_mag_numf32 fmaximum_mag_numf32x fmaximum_mag_numf64
+    fmaximum_mag_numf64x fmaximum_mag_numl fmaximum_magf fmaximum_magf128 fmaximum_magf32
     fmaximum_magf32x fmaximum_magf64 fmaximum_magf64x fmaximum_magl fmaximum_num fmaximum_numf
-    fmaximum_numf32 fmaximum_numf32x fmaximum_numf64 fmaximum_numf64x fmaximum_numl fmaximumf
-    fmaximumf32 fmaximumf32x fmaximumf64 fmaximumf64x fmaximuml fmaxl fmaxmag fmaxmagf
-    fmaxmagf32 fmaxmagf32x fmaxmagf64 fmaxmagf64x fmaxmagl fmemopen fmin fminf fminf32 fminf32x
-    fminf64 fminf64x fminimum fminimum_mag fminimum_mag_num fminimum_mag_numf
-    fminimum_mag_numf32 fminimum_mag_numf32x fminimum_mag_numf64 fminimum_mag_numf64x
-    fminimum_mag_numl fminimum_magf fminimum_magf32 fminimum_magf32x fminimum_magf64
-    fminimum_magf64x fminimum_magl fminimum_num fminimum_numf fminimum_numf32 fminimum_numf32x
-    fminimum_numf64 fminimum_numf64x fminimum_numl fminimumf fminimumf32 fminimumf32x
-    fminimumf64 fminimumf64x fminimuml fminl fminmag fminmagf fminmagf32 fminmagf32x fminmagf64
-    fminmagf64x fminmagl fmod fmodf fmodf32 fmodf32x fmodf64 fmodf64x fmodl fmul fmull fopen
-    fopen64 fopencookie fork fpathconf fpos64_t fpos_t fpregset_t fprintf fpurge fputc
-    fputc_unlocked fputs fputs_unlocked fputwc fputwc_unlocked fputws fputws_unlocked fread
-    fread_unlocked free freelocale freopen freopen64 frexp frexpf frexpf32 frexpf32x frexpf64
-    frexpf64x frexpl fromfp fromfpf fromfpf32 fromfpf32x fromfpf64 fromfpf64x fromfpl fromfpx
-    fromfpxf fromfpxf32 fromfpxf32x fromfpxf64 fromfpxf64x fromfpxl fsblkcnt64_t fsblkcnt_t
-    fscanf fseek fseeko fseeko64 fsetpos fsetpos64 fsfilcnt64_t fsfilcnt_t fsid_t fsqrt fsqrtl
-    fsub fsubl fsync ftell ftello ftello64 ftruncate ftruncate64 ftrylockfile funlockfile
-    funopen fwide fwprintf fwrite fwrite_unlocked fwscanf gamma gamma_r gammaf gammaf_r gammal
-    gcvt get_current_dir_name getc getc_unlocked getchar getchar_unlocked getcwd getdate
-    getdate_err getdate_r getdelim getdomainname getdtablesize getegid getentropy getenv geteuid
-    getgid getgroups gethostid gethostname getline getloadavg getlogin getlogin_r getopt
-    getpagesize getpass getpayload getpayloadf getpayloadf32 getpayloadf32x getpayloadf64
+    fmaximum_numf128 fmaximum_numf32 fmaximum_numf32x fmaximum_numf64 fmaximum_numf64x
+    fmaximum_numl fmaximumf fmaximumf128 fmaximumf32 fmaximumf32x fmaximumf64 fmaximumf64x
+    fmaximuml fmaxl fmaxmag fmaxmagf fmaxmagf128 fmaxmagf32 fmaxmagf32x fmaxmagf64 fmaxmagf64x
+    fmaxmagl fmemopen fmin fminf fminf128 fminf32 fminf32x fminf64 fminf64x fminimum
+    fminimum_mag fminimum_mag_num fminimum_mag_numf fminimum_mag_numf128 fminimum_mag_numf32
+    fminimum_mag_numf32x fminimum_mag_numf64 fminimum_mag_numf64x fminimum_mag_numl
+    fminimum_magf fminimum_magf128 fminimum_magf32 fminimum_magf32x fminimum_magf64
+    fminimum_magf64x fminimum_magl fminimum_num fminimum_numf fminimum_numf128 fminimum_numf32
+    fminimum_numf32x fminimum_numf64 fminimum_numf64x fminimum_numl fminimumf fminimumf128
+    fminimumf32 fminimumf32x fminimumf64 fminimumf64x fminimuml fminl fminmag fminmagf
+    fminmagf128 fminmagf32 fminmagf32x fminmagf64 fminmagf64x fminmagl fmod fmodf fmodf128
+    fmodf32 fmodf32x fmodf64 fmodf64x fmodl fmul fmull fopen fopen64 fopencookie fork fpathconf
+    fpos64_t fpos_t fpregset_t fprintf fpurge fputc fputc_unlocked fputs fputs_unlocked fputwc
+    fputwc_unlocked fputws fputws_unlocked fread fread_unlocked free freelocale freopen
+    freopen64 frexp frexpf frexpf128 frexpf32 frexpf32x frexpf64 frexpf64x frexpl fromfp fromfpf
+    fromfpf128 fromfpf32 fromfpf32x fromfpf64 fromfpf64x fromfpl fromfpx fromfpxf fromfpxf128
+    fromfpxf32 fromfpxf32x fromfpxf64 fromfpxf64x fromfpxl fsblkcnt64_t fsblkcnt_t fscanf fseek
+    fseeko fseeko64 fsetpos fsetpos64 fsfilcnt64_t fsfilcnt_t fsid_t fsqrt fsqrtl fsub fsubl
+    fsync ftell ftello ftello64 ftruncate ftruncate64 ftrylockfile funlockfile funopen fwide
+    fwprintf fwrite fwrite_unlocked fwscanf gamma gamma_r gammaf gammaf_r gammal gcvt
+    get_current_dir_name getc getc_unlocked getchar getchar_unlocked getcwd getdate getdate_err
+    getdate_r getdelim getdomainname getdtablesize getegid getentropy getenv geteuid getgid
+    getgroups gethostid gethostname getline getloadavg getlogin getlogin_r getopt getpagesize
+    getpass getpayload getpayloadf getpayloadf128 getpayloadf32 getpayloadf32x getpayloadf64
     getpayloadf64x getpayloadl getpgid getpgrp getpid getppid getpt getresgid getresuid gets
     getsid getsubopt gettid getuid getusershell getw getwc getwc_unlocked getwchar
     getwchar_unlocked getwd gid_t gmtime gmtime_r grantpt greg_t gregset_t group_member gsignal
-    hypot hypotf hypotf32 hypotf32x hypotf64 hypotf64x hypotl id_t ilogb ilogbf ilogbf32
-    ilogbf32x ilogbf64 ilogbf64x ilogbl imaxabs imaxdiv imaxdiv_t in_addr_t in_port_t index
-    infinity infinityf initstate initstate_r ino64_t ino_t int16_t int32_t int64_t int8_t
-    int_fast16_t int_fast32_t int_fast64_t int_fast8_t int_least16_t int_least32_t int_least64_t
-    int_least8_t intmax_t intptr_t iprintf isalnum isalnum_l isalpha isalpha_l isascii isascii_l
-    isatty isblank isblank_l iscanf iscanonical iscntrl iscntrl_l isctype isdigit isdigit_l
-    iseqsig isgraph isgraph_l isinf isinff isinfl islower islower_l isnan isnanf isnanl isprint
-    isprint_l ispunct ispunct_l issignaling isspace isspace_l isupper isupper_l iswalnum
-    iswalnum_l iswalpha iswalpha_l iswblank iswblank_l iswcntrl iswcntrl_l iswctype iswctype_l
-    iswdigit iswdigit_l iswgraph iswgraph_l iswlower iswlower_l iswprint iswprint_l iswpunct
-    iswpunct_l iswspace iswspace_l iswupper iswupper_l iswxdigit iswxdigit_l isxdigit isxdigit_l
-    iszero itimerspec itoa j0 j0f j0f32 j0f32x j0f64 j0f64x j0l j1 j1f j1f32 j1f32x j1f64 j1f64x
-    j1l jmp_buf jn jnf jnf32 jnf32x jnf64 jnf64x jnl jrand48 jrand48_r key_t kill killpg l64a
-    labs lchown lcong48 lcong48_r lconv ldexp ldexpf ldexpf32 ldexpf32x ldexpf64 ldexpf64x
-    ldexpl ldiv ldiv_t lgamma lgamma_r lgammaf lgammaf32 lgammaf32_r lgammaf32x lgammaf32x_r
+    hypot hypotf hypotf128 hypotf32 hypotf32x hypotf64 hypotf64x hypotl id_t ilogb ilogbf
+    ilogbf128 ilogbf32 ilogbf32x ilogbf64 ilogbf64x ilogbl imaxabs imaxdiv imaxdiv_t in_addr_t
+    in_port_t index infinity infinityf initstate initstate_r ino64_t ino_t int16_t int32_t
+    int64_t int8_t int_fast16_t int_fast32_t int_fast64_t int_fast8_t int_least16_t
+    int_least32_t int_least64_t int_least8_t intmax_t intptr_t iprintf isalnum isalnum_l isalpha
+    isalpha_l isascii isascii_l isatty isblank isblank_l iscanf iscanonical iscntrl iscntrl_l
+    isctype isdigit isdigit_l iseqsig isgraph isgraph_l isinf isinff isinfl islower islower_l
+    isnan isnanf isnanl isprint isprint_l ispunct ispunct_l issignaling isspace isspace_l
+    isupper isupper_l iswalnum iswalnum_l iswalpha iswalpha_l iswblank iswblank_l iswcntrl
+    iswcntrl_l iswctype iswctype_l iswdigit iswdigit_l iswgraph iswgraph_l iswlower iswlower_l
+    iswprint iswprint_l iswpunct iswpunct_l iswspace iswspace_l iswupper iswupper_l iswxdigit
+    iswxdigit_l isxdigit isxdigit_l iszero itimerspec itoa j0 j0f j0f128 j0f32 j0f32x j0f64
+    j0f64x j0l j1 j1f j1f128 j1f32 j1f32x j1f64 j1f64x j1l jmp_buf jn jnf jnf128 jnf32 jnf32x
+    jnf64 jnf64x jnl jrand48 jrand48_r key_t kill killpg l64a labs lchown lcong48 lcong48_r
+    lconv ldexp ldexpf ldexpf128 ldexpf32 ldexpf32x ldexpf64 ldexpf64x ldexpl ldiv ldiv_t lgamma
+    lgamma_r lgammaf lgammaf128 lgammaf128_r lgammaf32 lgammaf32_r lgammaf32x lgammaf32x_r
     lgammaf64 lgammaf64_r lgammaf64x lgammaf64x_r lgammaf_r lgammal lgammal_r link linkat llabs
-    lldiv lldiv_t llogb llogbf llogbf32 llogbf32x llogbf64 llogbf64x llogbl llrint llrintf
-    llrintf32 llrintf32x llrintf64 llrintf64x llrintl llround llroundf llroundf32 llroundf32x
-    llroundf64 llroundf64x llroundl locale_t localeconv localtime localtime_r lockf lockf64
-    loff_t log log10 log10f log10f32 log10f32x log10f64 log10f64x log10l log1p log1pf log1pf32
-    log1pf32x log1pf64 log1pf64x log1pl log2 log2f log2f32 log2f32x log2f64 log2f64x log2l logb
-    logbf logbf32 logbf32x logbf64 logbf64x logbl logf logf32 logf32x logf64 logf64x logl
-    longjmp lrand48 lrand48_r lrint lrintf lrintf32 lrintf32x lrintf64 lrintf64x lrintl lround
-    lroundf lroundf32 lroundf32x lroundf64 lroundf64x lroundl lseek lseek64 malloc max_align_t
-    mblen mbrlen mbrtowc mbsinit mbsnrtowcs mbsrtowcs mbstate_t mbstowcs mbtowc mcontext_t
-    memccpy memchr memcmp memcpy memfrob memmem memmove mempcpy memrchr memset message_traits
-    mkdtemp mkostemp mkostemp64 mkostemps mkostemps64 mkstemp mkstemp64 mkstemps mkstemps64
-    mktemp mktime mode_t modf modff modff32 modff32x modff64 modff64x modfl mrand48 mrand48_r
-    mros nan nanf nanf32 nanf32x nanf64 nanf64x nanl nanosleep nearbyint nearbyintf nearbyintf32
-    nearbyintf32x nearbyintf64 nearbyintf64x nearbyintl new new[] newlocale nextafter nextafterf
-    nextafterf32 nextafterf32x nextafterf64 nextafterf64x nextafterl nextdown nextdownf
+    lldiv lldiv_t llogb llogbf llogbf128 llogbf32 llogbf32x llogbf64 llogbf64x llogbl llrint
+    llrintf llrintf128 llrintf32 llrintf32x llrintf64 llrintf64x llrintl llround llroundf
+    llroundf128 llroundf32 llroundf32x llroundf64 llroundf64x llroundl locale_t localeconv
+    localtime localtime_r lockf lockf64 loff_t log log10 log10f log10f128 log10f32 log10f32x
+    log10f64 log10f64x log10l log1p log1pf log1pf128 log1pf32 log1pf32x log1pf64 log1pf64x
+    log1pl log2 log2f log2f128 log2f32 log2f32x log2f64 log2f64x log2l logb logbf logbf128
+    logbf32 logbf32x logbf64 logbf64x logbl logf logf128 logf32 logf32x logf64 logf64x logl
+    longjmp lrand48 lrand48_r lrint lrintf lrintf128 lrintf32 lrintf32x lrintf64 lrintf64x
+    lrintl lround lroundf lroundf128 lroundf32 lroundf32x lroundf64 lroundf64x lroundl lseek
+    lseek64 malloc max_align_t mblen mbrlen mbrtowc mbsinit mbsnrtowcs mbsrtowcs mbstate_t
+    mbstowcs mbtowc mcontext_t memccpy memchr memcmp memcpy memfrob memmem memmove mempcpy
+    memrchr memset message_traits mkdtemp mkostemp mkostemp64 mkostemps mkostemps64 mkstemp
+    mkstemp64 mkstemps mkstemps64 mktemp mktime mode_t modf modff modff128 modff32 modff32x
+    modff64 modff64x modfl mrand48 mrand48_r mros nan nanf nanf128 nanf32 nanf32x nanf64 nanf64x
+    nanl nanosleep nearbyint nearbyintf nearbyintf128 nearbyintf32 nearbyintf32x nearbyintf64
+    nearbyintf64x nearbyintl new new[] newlocale nextafter nextafterf nextafterf128 nextafterf32
+    nextafterf32x nextafterf64 nextafterf64x nextafterl nextdown nextdownf nextdownf128
     nextdownf32 nextdownf32x nextdownf64 nextdownf64x nextdownl nexttoward nexttowardf
-    nexttowardl nextup nextupf nextupf32 nextupf32x nextupf64 nextupf64x nextupl nice nlink_t
-    nrand48 nrand48_r nullptr_t obstack obstack_printf obstack_vprintf off64_t off_t on_exit
-    open_memstream open_wmemstream operator optarg opterr optind optopt pathconf pause pclose
-    perror pid_t pipe pipe2 popen posix_memalign posix_openpt pow powf powf32 powf32x powf64
-    powf64x powl pread pread64 printf profil program_invocation_name
+    nexttowardl nextup nextupf nextupf128 nextupf32 nextupf32x nextupf64 nextupf64x nextupl nice
+    nlink_t nrand48 nrand48_r nullptr_t obstack obstack_printf obstack_vprintf off64_t off_t
+    on_exit open_memstream open_wmemstream operator optarg opterr optind optopt pathconf pause
+    pclose perror pid_t pipe pipe2 popen posix_memalign posix_openpt pow powf powf128 powf32
+    powf32x powf64 powf64x powl pread pread64 printf profil program_invocation_name
     program_invocation_short_name pselect psiginfo psignal pthread_attr_t pthread_barrier_t
     pthread_barrierattr_t pthread_cond_t pthread_condattr_t pthread_key_t pthread_kill
     pthread_mutex_t pthread_mutexattr_t pthread_once_t pthread_rwlock_t pthread_rwlockattr_t
@@ -257,79 +269,83 @@ GLOBAL_NAMES = frozenset('''
     putc putc_unlocked putchar putchar_unlocked putenv puts putw putwc putwc_unlocked putwchar
     putwchar_unlocked pwrite pwrite64 qecvt qecvt_r qfcvt qfcvt_r qgcvt qsort qsort_r quad_t
     quick_exit raise rand rand_r random random_data random_r rawmemchr read readlink readlinkat
-    realloc reallocarray reallocf realpath register_t remainder remainderf remainderf32
-    remainderf32x remainderf64 remainderf64x remainderl remove remquo remquof remquof32
-    remquof32x remquof64 remquof64x remquol rename renameat renameat2 revoke rewind rindex rint
-    rintf rintf32 rintf32x rintf64 rintf64x rintl rmdir round roundeven roundevenf roundevenf32
-    roundevenf32x roundevenf64 roundevenf64x roundevenl roundf roundf32 roundf32x roundf64
-    roundf64x roundl rpmatch sbintime_t sbrk scalb scalbf scalbl scalbln scalblnf scalblnf32
-    scalblnf32x scalblnf64 scalblnf64x scalblnl scalbn scalbnf scalbnf32 scalbnf32x scalbnf64
-    scalbnf64x scalbnl scanf sched_param secure_getenv seed48 seed48_r select service_traits
-    setbuf setbuffer setdomainname setegid setenv seteuid setgid sethostid sethostname setjmp
-    setlinebuf setlocale setlogin setpayload setpayloadf setpayloadf32 setpayloadf32x
-    setpayloadf64 setpayloadf64x setpayloadl setpayloadsig setpayloadsigf setpayloadsigf32
-    setpayloadsigf32x setpayloadsigf64 setpayloadsigf64x setpayloadsigl setpgid setpgrp setregid
-    setresgid setresuid setreuid setsid setstate setstate_r setuid setusershell setvbuf
-    sig_atomic_t sig_t sigabbrev_np sigaction sigaddset sigaltstack sigandset sigblock
-    sigcontext sigdelset sigdescr_np sigemptyset sigevent sigevent_t sigfillset siggetmask
-    sighandler_t sighold sigignore siginfo_t siginterrupt sigisemptyset sigismember sigjmp_buf
-    siglongjmp signal signgam significand significandf significandl sigorset sigpause sigpending
-    sigprocmask sigqueue sigrelse sigreturn sigset sigset_t sigsetmask sigstack sigsuspend
-    sigtimedwait sigval sigval_t sigwait sigwaitinfo sin sincos sincosf sincosf32 sincosf32x
-    sincosf64 sincosf64x sincosl sinf sinf32 sinf32x sinf64 sinf64x sinh sinhf sinhf32 sinhf32x
-    sinhf64 sinhf64x sinhl sinl siprintf siscanf size_t sleep sniprintf snprintf socklen_t
-    sprintf sqrt sqrtf sqrtf32 sqrtf32x sqrtf64 sqrtf64x sqrtl srand srand48 srand48_r srandom
-    srandom_r sscanf ssignal ssize_t stack_t std std::abort std::abs std::acos std::acosh
-    std::asin std::asinh std::at_quick_exit std::atan std::atan2 std::atanh std::atexit
-    std::atof std::atoi std::atol std::bsearch std::calloc std::cbrt std::ceil std::copysign
-    std::cos std::cosh std::div std::div_t std::erf std::erfc std::exit std::exp std::exp2
-    std::expm1 std::fabs std::fdim std::floor std::fma std::fmax std::fmin std::fmod
-    std::fpclassify std::free std::frexp std::getenv std::hypot std::ilogb std::isfinite
-    std::isgreater std::isgreaterequal std::isinf std::isless std::islessequal
-    std::islessgreater std::isnan std::isnormal std::isunordered std::labs std::ldexp std::ldiv
-    std::ldiv_t std::lgamma std::llrint std::llround std::log std::log10 std::log1p std::log2
-    std::logb std::lrint std::lround std::malloc std::mblen std::mbstowcs std::mbtowc std::modf
-    std::nearbyint std::nextafter std::nexttoward std::pow std::qsort std::quick_exit std::rand
-    std::realloc std::remainder std::remquo std::rint std::round std::scalbln std::scalbn
-    std::signbit std::sin std::sinh std::sqrt std::srand std::strtod std::strtol std::strtoul
-    std::system std::tan std::tanh std::tgamma std::trunc std::wcstombs std::wctomb stderr stdin
-    stdout stpcpy stpncpy strcasecmp strcasecmp_l strcasestr strcat strchr strchrnul strcmp
-    strcoll strcoll_l strcpy strcspn strdup strerror strerror_l strerror_r strerrordesc_np
-    strerrorname_np strfromd strfromf strfromf32 strfromf32x strfromf64 strfromf64x strfroml
-    strfry strftime strftime_l strlcat strlcpy strlen strlwr strncasecmp strncasecmp_l strncat
-    strncmp strncpy strndup strnlen strnstr strpbrk strptime strptime_l strrchr strsep strsignal
-    strspn strstr strtod strtod_l strtof strtof32 strtof32_l strtof32x strtof32x_l strtof64
-    strtof64_l strtof64x strtof64x_l strtof_l strtoimax strtoimax_l strtok strtok_r strtol
-    strtol_l strtold strtold_l strtoll strtoll_l strtoq strtoul strtoul_l strtoull strtoull_l
-    strtoumax strtoumax_l strtouq strupr strverscmp strxfrm strxfrm_l suboptarg subtask_methods
-    suseconds_t swab swprintf swscanf symlink symlinkat sync syncfs syscall sysconf system
-    sysv_signal tan tanf tanf32 tanf32x tanf64 tanf64x tanh tanhf tanhf32 tanhf32x tanhf64
-    tanhf64x tanhl tanl tcgetpgrp tcsetpgrp tempnam tgamma tgammaf tgammaf32 tgammaf32x
-    tgammaf64 tgammaf64x tgammal tgkill time time_t timegm timelocal timer_create timer_delete
-    timer_getoverrun timer_gettime timer_settime timer_t timespec timespec_get timespec_getres
-    timeval timex timezone timingsafe_bcmp timingsafe_memcmp tm tmpfile tmpfile64 tmpnam
-    tmpnam_r toascii toascii_l tolower tolower_l totalorder totalorderf totalorderf32
-    totalorderf32x totalorderf64 totalorderf64x totalorderl totalordermag totalordermagf
-    totalordermagf32 totalordermagf32x totalordermagf64 totalordermagf64x totalordermagl toupper
-    toupper_l towctrans towctrans_l towlower towlower_l towupper towupper_l trunc truncate
-    truncate64 truncf truncf32 truncf32x truncf64 truncf64x truncl ttyname ttyname_r ttyslot
+    realloc reallocarray reallocf realpath register_t remainder remainderf remainderf128
+    remainderf32 remainderf32x remainderf64 remainderf64x remainderl remove remquo remquof
+    remquof128 remquof32 remquof32x remquof64 remquof64x remquol rename renameat renameat2
+    revoke rewind rindex rint rintf rintf128 rintf32 rintf32x rintf64 rintf64x rintl rmdir round
+    roundeven roundevenf roundevenf128 roundevenf32 roundevenf32x roundevenf64 roundevenf64x
+    roundevenl roundf roundf128 roundf32 roundf32x roundf64 roundf64x roundl rpmatch sbintime_t
+    sbrk scalb scalbf scalbl scalbln scalblnf scalblnf128 scalblnf32 scalblnf32x scalblnf64
+    scalblnf64x scalblnl scalbn scalbnf scalbnf128 scalbnf32 scalbnf32x scalbnf64 scalbnf64x
+    scalbnl scanf sched_param secure_getenv seed48 seed48_r select service_traits setbuf
+    setbuffer setdomainname setegid setenv seteuid setgid sethostid sethostname setjmp
+    setlinebuf setlocale setlogin setpayload setpayloadf setpayloadf128 setpayloadf32
+    setpayloadf32x setpayloadf64 setpayloadf64x setpayloadl setpayloadsig setpayloadsigf
+    setpayloadsigf128 setpayloadsigf32 setpayloadsigf32x setpayloadsigf64 setpayloadsigf64x
+    setpayloadsigl setpgid setpgrp setregid setresgid setresuid setreuid setsid setstate
+    setstate_r setuid setusershell setvbuf sig_atomic_t sig_t sigabbrev_np sigaction sigaddset
+    sigaltstack sigandset sigblock sigcontext sigdelset sigdescr_np sigemptyset sigevent
+    sigevent_t sigfillset siggetmask sighandler_t sighold sigignore siginfo_t siginterrupt
+    sigisemptyset sigismember sigjmp_buf siglongjmp signal signgam significand significandf
+    significandl sigorset sigpause sigpending sigprocmask sigqueue sigrelse sigreturn sigset
+    sigset_t sigsetmask sigstack sigsuspend sigtimedwait sigval sigval_t sigwait sigwaitinfo sin
+    sincos sincosf sincosf128 sincosf32 sincosf32x sincosf64 sincosf64x sincosl sinf sinf128
+    sinf32 sinf32x sinf64 sinf64x sinh sinhf sinhf128 sinhf32 sinhf32x sinhf64 sinhf64x sinhl
+    sinl siprintf siscanf size_t sleep sniprintf snprintf socklen_t sprintf sqrt sqrtf sqrtf128
+    sqrtf32 sqrtf32x sqrtf64 sqrtf64x sqrtl srand srand48 srand48_r srandom srandom_r sscanf
+    ssignal ssize_t stack_t std std::abort std::abs std::acos std::acosh std::asin std::asinh
+    std::at_quick_exit std::atan std::atan2 std::atanh std::atexit std::atof std::atoi std::atol
+    std::bsearch std::calloc std::cbrt std::ceil std::copysign std::cos std::cosh std::div
+    std::div_t std::erf std::erfc std::exit std::exp std::exp2 std::expm1 std::fabs std::fdim
+    std::floor std::fma std::fmax std::fmin std::fmod std::fpclassify std::free std::frexp
+    std::getenv std::hypot std::ilogb std::isfinite std::isgreater std::isgreaterequal
+    std::isinf std::isless std::islessequal std::islessgreater std::isnan std::isnormal
+    std::isunordered std::labs std::ldexp std::ldiv std::ldiv_t std::lgamma std::llrint
+    std::llround std::log std::log10 std::log1p std::log2 std::logb std::lrint std::lround
+    std::malloc std::mblen std::mbstowcs std::mbtowc std::modf std::nearbyint std::nextafter
+    std::nexttoward std::pow std::qsort std::quick_exit std::rand std::realloc std::remainder
+    std::remquo std::rint std::round std::scalbln std::scalbn std::signbit std::sin std::sinh
+    std::sqrt std::srand std::strtod std::strtol std::strtoul std::system std::tan std::tanh
+    std::tgamma std::trunc std::wcstombs std::wctomb stderr stdin stdout stpcpy stpncpy
+    strcasecmp strcasecmp_l strcasestr strcat strchr strchrnul strcmp strcoll strcoll_l strcpy
+    strcspn strdup strerror strerror_l strerror_r strerrordesc_np strerrorname_np strfromd
+    strfromf strfromf128 strfromf32 strfromf32x strfromf64 strfromf64x strfroml strfry strftime
+    strftime_l strlcat strlcpy strlen strlwr strncasecmp strncasecmp_l strncat strncmp strncpy
+    strndup strnlen strnstr strpbrk strptime strptime_l strrchr strsep strsignal strspn strstr
+    strtod strtod_l strtof strtof128 strtof128_l strtof32 strtof32_l strtof32x strtof32x_l
+    strtof64 strtof64_l strtof64x strtof64x_l strtof_l strtoimax strtoimax_l strtok strtok_r
+    strtol strtol_l strtold strtold_l strtoll strtoll_l strtoq strtoul strtoul_l strtoull
+    strtoull_l strtoumax strtoumax_l strtouq strupr strverscmp strxfrm strxfrm_l suboptarg
+    subtask_methods suseconds_t swab swprintf swscanf symlink symlinkat sync syncfs syscall
+    sysconf system sysv_signal tan tanf tanf128 tanf32 tanf32x tanf64 tanf64x tanh tanhf
+    tanhf128 tanhf32 tanhf32x tanhf64 tanhf64x tanhl tanl tcgetpgrp tcsetpgrp tempnam tgamma
+    tgammaf tgammaf128 tgammaf32 tgammaf32x tgammaf64 tgammaf64x tgammal tgkill time time_t
+    timegm timelocal timer_create timer_delete timer_getoverrun timer_gettime timer_settime
+    timer_t timespec timespec_get timespec_getres timeval timex timezone timingsafe_bcmp
+    timingsafe_memcmp tm tmpfile tmpfile64 tmpnam tmpnam_r toascii toascii_l tolower tolower_l
+    totalorder totalorderf totalorderf128 totalorderf32 totalorderf32x totalorderf64
+    totalorderf64x totalorderl totalordermag totalordermagf totalordermagf128 totalordermagf32
+    totalordermagf32x totalordermagf64 totalordermagf64x totalordermagl toupper toupper_l
+    towctrans towctrans_l towlower towlower_l towupper towupper_l trunc truncate truncate64
+    truncf truncf128 truncf32 truncf32x truncf64 truncf64x truncl ttyname ttyname_r ttyslot
     tzname tzset u_char u_int u_int16_t u_int32_t u_int64_t u_int8_t u_long u_quad_t
-    u_register_t u_short ualarm ucontext_t ufromfp ufromfpf ufromfpf32 ufromfpf32x ufromfpf64
-    ufromfpf64x ufromfpl ufromfpx ufromfpxf ufromfpxf32 ufromfpxf32x ufromfpxf64 ufromfpxf64x
-    ufromfpxl uid_t uint uint16_t uint32_t uint64_t uint8_t uint_fast16_t uint_fast32_t
-    uint_fast64_t uint_fast8_t uint_least16_t uint_least32_t uint_least64_t uint_least8_t
-    uintmax_t uintptr_t ulong ungetc ungetwc unlink unlinkat unlockpt unsetenv useconds_t
-    uselocale ushort usleep utoa va_list valloc vasiprintf vasniprintf vasnprintf vasprintf
-    vdiprintf vdprintf vfiprintf vfiscanf vfork vfprintf vfscanf vfwprintf vfwscanf vhangup
-    viprintf viscanf vprintf vscanf vsiprintf vsiscanf vsniprintf vsnprintf vsprintf vsscanf
-    vswprintf vswscanf vwprintf vwscanf wcpcpy wcpncpy wcrtomb wcscasecmp wcscasecmp_l wcscat
-    wcschr wcschrnul wcscmp wcscoll wcscoll_l wcscpy wcscspn wcsdup wcsftime wcsftime_l wcslcat
-    wcslcpy wcslen wcsncasecmp wcsncasecmp_l wcsncat wcsncmp wcsncpy wcsnlen wcsnrtombs wcspbrk
-    wcsrchr wcsrtombs wcsspn wcsstr wcstod wcstod_l wcstof wcstof32 wcstof32_l wcstof32x
-    wcstof32x_l wcstof64 wcstof64_l wcstof64x wcstof64x_l wcstof_l wcstoimax wcstoimax_l wcstok
-    wcstol wcstol_l wcstold wcstold_l wcstoll wcstoll_l wcstombs wcstoq wcstoul wcstoul_l
-    wcstoull wcstoull_l wcstoumax wcstoumax_l wcstouq wcswcs wcswidth wcsxfrm wcsxfrm_l wctob
-    wctomb wctrans wctrans_l wctrans_t wctype wctype_l wctype_t wcwidth wint_t wmemchr wmemcmp
-    wmemcpy wmemmove wmempcpy wmemset wprintf write wscanf y0 y0f y0f32 y0f32x y0f64 y0f64x y0l
-    y1 y1f y1f32 y1f32x y1f64 y1f64x y1l yn ynf ynf32 ynf32x ynf64 ynf64x ynl
+    u_register_t u_short ualarm ucontext_t ufromfp ufromfpf ufromfpf128 ufromfpf32 ufromfpf32x
+    ufromfpf64 ufromfpf64x ufromfpl ufromfpx ufromfpxf ufromfpxf128 ufromfpxf32 ufromfpxf32x
+    ufromfpxf64 ufromfpxf64x ufromfpxl uid_t uint uint16_t uint32_t uint64_t uint8_t
+    uint_fast16_t uint_fast32_t uint_fast64_t uint_fast8_t uint_least16_t uint_least32_t
+    uint_least64_t uint_least8_t uintmax_t uintptr_t ulong ungetc ungetwc unlink unlinkat
+    unlockpt unsetenv useconds_t uselocale ushort usleep utoa va_list valloc vasiprintf
+    vasniprintf vasnprintf vasprintf vdiprintf vdprintf vfiprintf vfiscanf vfork vfprintf
+    vfscanf vfwprintf vfwscanf vhangup viprintf viscanf vprintf vscanf vsiprintf vsiscanf
+    vsniprintf vsnprintf vsprintf vsscanf vswprintf vswscanf vwprintf vwscanf wcpcpy wcpncpy
+    wcrtomb wcscasecmp wcscasecmp_l wcscat wcschr wcschrnul wcscmp wcscoll wcscoll_l wcscpy
+    wcscspn wcsdup wcsftime wcsftime_l wcslcat wcslcpy wcslen wcsncasecmp wcsncasecmp_l wcsncat
+    wcsncmp wcsncpy wcsnlen wcsnrtombs wcspbrk wcsrchr wcsrtombs wcsspn wcsstr wcstod wcstod_l
+    wcstof wcstof128 wcstof128_l wcstof32 wcstof32_l wcstof32x wcstof32x_l wcstof64 wcstof64_l
+    wcstof64x wcstof64x_l wcstof_l wcstoimax wcstoimax_l wcstok wcstol wcstol_l wcstold
+    wcstold_l wcstoll wcstoll_l wcstombs wcstoq wcstoul wcstoul_l wcstoull wcstoull_l wcstoumax
+    wcstoumax_l wcstouq wcswcs wcswidth wcsxfrm wcsxfrm_l wctob wctomb wctrans wctrans_l
+    wctrans_t wctype wctype_l wctype_t wcwidth wint_t wmemchr wmemcmp wmemcpy wmemmove wmempcpy
+    wmemset wprintf write wscanf y0 y0f y0f128 y0f32 y0f32x y0f64 y0f64x y0l y1 y1f y1f128 y1f32
+    y1f32x y1f64 y1f64x y1l yn ynf ynf128 ynf32 ynf32x ynf64 ynf64x ynl
 '''.split())
