@@ -3,7 +3,8 @@
 // subscribe() and advertise() register the topic, its type ID, definition
 // and MD5 sum and a connector, logging every failure; publish() sizes a
 // block with dataSize(), takes it from the pool and memCopy()s the body into
-// it; received frames go through callCallback() from message_headers.h; and
+// it; received frames go through callCallback() from message_headers.h, with
+// the frame's size where the library is patched to pass it; and
 // message_class_specialization.h instantiates it all at the end. The C
 // library under it is stubbed (library.c).
 #include "ros.h"
@@ -94,8 +95,16 @@ template <class T> void ros::Publisher::publish(T& data) {
   library_wake_publisher();
 }
 
-extern "C" void api_deliver(unsigned type_id, void (*callback)(void*), const char* block, unsigned) {
+// The library as it is gives delivery no frame size; with genmros' patch
+// set (-DMROS_LIBRARY_PASSES_FRAME_SIZE, as its ros.cpp defines) it does.
+extern "C" void api_deliver(unsigned type_id, void (*callback)(void*), const char* block,
+                            unsigned size) {
+#ifdef MROS_LIBRARY_PASSES_FRAME_SIZE
+  callCallback(static_cast<int>(type_id), callback, const_cast<char*>(block), size);
+#else
+  (void)size;
   callCallback(static_cast<int>(type_id), callback, const_cast<char*>(block));
+#endif
 }
 
 #include "message_class_specialization.h"

@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
-# Footprint benchmark: text+data+bss that message types cost a firmware on
-# each mROS CPU, -Os -fno-builtin -fno-exceptions -fno-rtti -std=gnu++98 (mROS v1's
+# Footprint benchmark: the flash (text+data) and RAM (data+bss) message types
+# cost a firmware on each mROS CPU, -Os -fno-builtin -fno-exceptions -fno-rtti -std=gnu++98 (mROS v1's
 # flags), --gc-sections.
 # Each row is one firmware (start-up, newlib, the API layer in the shape of
 # mROS v1's ros.cpp over the library's own api/ros.h, from MROS_V1_ROOT,
 # with the PC target's ASP headers for its kernel.h and t_syslog.h, and one
 # task that publishes and subscribes one type),
 # minus the same firmware without any message type (baseline.cpp).
-#   genmros' headers against hand-written v1-style ones (handwritten/)
+#   genmros' headers against hand-written v1-style ones (handwritten/), with
+#   the library as it is and with genmros' patch set (it passes frame sizes)
 #   heap against bounded storage, and the RAM a firmware's buffers take
 #   heap with the compact definition text against the full one, and
 #   the definition bytes of the Debian message set (definition_text.py)
@@ -48,8 +49,8 @@ elf_size() {  # elf -> "text data bss"
   arm-none-eabi-size "$1" | awk 'NR == 2 {print $1, $2, $3}'
 }
 
-build() {  # cpu output include_dir type header -> elf
-  local cpu=$1 out=$2 include=$3 type=$4 header=$5
+build() {  # cpu output include_dir type header [compile flags] -> elf
+  local cpu=$1 out=$2 include=$3 type=$4 header=$5 flags=${6:-}
   # shellcheck disable=SC2086
   arm-none-eabi-gcc ${cpus[$cpu]} "${cflags[@]}" -std=c99 -c "$here/library.c" -o "$out.library.o"
   arm-none-eabi-gcc ${cpus[$cpu]} "${cflags[@]}" -std=c99 -c "$here/sink.c" -o "$out.sink.o"
@@ -61,7 +62,7 @@ build() {  # cpu output include_dir type header -> elf
     # samples' settings, whose 512-byte header buffers the fit check would refuse
     # JointState's and Odometry's definition texts with: the bytes are what is measured here.
     arm-none-eabi-g++ ${cpus[$cpu]} "${common[@]}" -std=gnu++98 -Wno-psabi -I"$include" -I"$here" \
-      -DMROS_SKIP_FIT_CHECK -DBENCH_TYPE="$type" -DBENCH_HEADER="<$header>" "${ros_h[@]}" \
+      -DMROS_SKIP_FIT_CHECK $flags -DBENCH_TYPE="$type" -DBENCH_HEADER="<$header>" "${ros_h[@]}" \
       "$here/api_layer.cpp" "$here/task.cpp" \
       "$out.library.o" "$out.sink.o" "${link[@]}" -o "$out.elf"
   fi
@@ -85,42 +86,46 @@ for entry in "${types[@]}"; do
   include[$name.bounded]=$(export_type "$name.bounded" "$ros_type" bounded full)
 done
 
-cost() {  # elf baseline_elf -> total bytes over the baseline
+cost() {  # elf baseline_elf -> flash (text+data), RAM (data+bss), text+data+bss over the baseline
   read -r t d b <<<"$(elf_size "$1")"
   read -r bt bd bb <<<"$(elf_size "$2")"
-  echo "$((t - bt)) $((d - bd)) $((b - bb))"
+  echo "$((t + d - bt - bd)) $((d + b - bd - bb)) $((t + d + b - bt - bd - bb))"
 }
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.2fx", a / b}'; }
 
-echo "Bytes a message type adds to a firmware (text+data+bss over the baseline firmware without one);"
-echo "bss holds the static storage delivery receives the message in, off the subscriber task's stack,"
-echo "and on-board delivery's table of waiting frames (260 bytes once per firmware, for every type):"
+echo "Bytes a message type adds to a firmware over the baseline firmware without one: flash (text+data)"
+echo "and RAM (data+bss), each genmros form beside hand-written v1 headers, and the ratio of text+data+bss."
+echo "\"as is\": the library passes delivery no frame size, so on-board delivery keeps a table of the frames"
+echo "published on the board (260 bytes of RAM once per firmware); \"patched\": genmros' patch set, whose"
+echo "library passes the size (no table). A message of up to 128 bytes is delivered from the subscriber"
+echo "task's stack, a larger one from static storage (RAM)."
 echo
-echo "| CPU | type | hand-written v1 | genmros heap | genmros / hand-written | genmros bounded | heap, compact text | compact / full |"
-echo "|---|---|---:|---:|---:|---:|---:|---:|"
+echo "| CPU | type | hand-written flash | RAM | genmros as is flash | RAM | as is / hand-written | genmros patched flash | RAM | patched / hand-written | bounded, patched flash | RAM | compact text, patched flash | compact / full flash |"
+echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for cpu in cortex-m0 cortex-m4 cortex-a9; do
   base=$(build "$cpu" "$work/$cpu.baseline" "" none "")
   for entry in "${types[@]}"; do
     read -r name _ cpp_type header <<<"$entry"
-    read -r ht hd hb <<<"$(cost "$(build "$cpu" "$work/$cpu.$name.heap" "${include[$name.heap]}" "$cpp_type" "$header")" "$base")"
-    read -r bt bd bb <<<"$(cost "$(build "$cpu" "$work/$cpu.$name.bounded" "${include[$name.bounded]}" "$cpp_type" "$header")" "$base")"
-    read -r ct cd cb <<<"$(cost "$(build "$cpu" "$work/$cpu.$name.compact" "${include[$name.compact]}" "$cpp_type" "$header")" "$base")"
-    heap=$((ht + hd + hb)); bounded=$((bt + bd + bb)); compact=$((ct + cd + cb))
-    compact_ratio=$(awk -v a="$compact" -v b="$heap" 'BEGIN {printf "%.2fx", a / b}')
+    patched=-DMROS_LIBRARY_PASSES_FRAME_SIZE
+    read -r af ar at <<<"$(cost "$(build "$cpu" "$work/$cpu.$name.heap" "${include[$name.heap]}" "$cpp_type" "$header")" "$base")"
+    read -r pf pr pt <<<"$(cost "$(build "$cpu" "$work/$cpu.$name.patched" "${include[$name.heap]}" "$cpp_type" "$header" "$patched")" "$base")"
+    read -r bf br _ <<<"$(cost "$(build "$cpu" "$work/$cpu.$name.bounded" "${include[$name.bounded]}" "$cpp_type" "$header" "$patched")" "$base")"
+    read -r cf _ _ <<<"$(cost "$(build "$cpu" "$work/$cpu.$name.compact" "${include[$name.compact]}" "$cpp_type" "$header" "$patched")" "$base")"
     if [ -n "${handwritten[$name]:-}" ]; then
-      read -r wt wd wb <<<"$(cost "$(build "$cpu" "$work/$cpu.$name.hand" "${handwritten[$name]}" "$cpp_type" "$header")" "$base")"
-      hand=$((wt + wd + wb))
-      ratio=$(awk -v a="$heap" -v b="$hand" 'BEGIN {printf "%.2fx", a / b}')
+      read -r hf hr ht <<<"$(cost "$(build "$cpu" "$work/$cpu.$name.hand" "${handwritten[$name]}" "$cpp_type" "$header")" "$base")"
+      as_is_ratio=$(ratio "$at" "$ht")
+      patched_ratio=$(ratio "$pt" "$ht")
     else
-      hand="-"; ratio="-"
+      hf="-"; hr="-"; as_is_ratio="-"; patched_ratio="-"
     fi
-    echo "| $cpu | $cpp_type | $hand | $heap | $ratio | $bounded | $compact | $compact_ratio |"
+    echo "| $cpu | $cpp_type | $hf | $hr | $af | $ar | $as_is_ratio | $pf | $pr | $patched_ratio | $bf | $br | $cf | $(ratio "$cf" "$pf") |"
   done
 done
 
 echo
 echo "RAM for a firmware's buffers (bytes): the publish block (PUB_MSG_MAX_SIZE + 4) and one message object,"
-echo "which is also the static storage delivery keeps a received message in, off the subscriber task's stack"
-echo "(counted in the bss of the table above). Heap storage also takes what its strings and arrays hold"
+echo "which for a message over 128 bytes is also the static storage delivery keeps a received message in"
+echo "(counted in the RAM of the table above). Heap storage also takes what its strings and arrays hold"
 echo "from the heap, at run time."
 echo
 echo "| type | heap: PUB_MSG_MAX_SIZE | heap: sizeof message | bounded: PUB_MSG_MAX_SIZE | bounded: sizeof message |"
