@@ -68,7 +68,8 @@ def firmware_files(messages, variable_budget=DEFAULT_VARIABLE_SIZE_BUDGET):
     generator's models)."""
     context = {'messages': [CppType(message.full_name) for message in messages],
                'sizes': MaxSize(messages, variable_budget),
-               'library_headers': [FIT_CHECK_HEADER],
+               'delivery_header': DELIVERY_HEADER,
+               'fit_check_header': FIT_CHECK_HEADER,
                'frame_size_macro': LIBRARY_PASSES_FRAME_SIZE,
                'frame_slots_setting': FRAME_SLOTS.setting,
                'default_frame_slots': FRAME_SLOTS.default,
