@@ -19,6 +19,9 @@
 
 #include <string>
 #include <vector>
+#if __cplusplus >= 201103L
+#include <initializer_list>
+#endif
 
 namespace mros {
 
@@ -173,6 +176,14 @@ template <class T, size_t N> class bounded_vector {
   typedef size_t size_type;
 
   bounded_vector() : size_(0) {}
+#if __cplusplus >= 201103L
+  // A default value of mros2 messages (T[<=N] name [a, b]): the first N elements.
+  bounded_vector(std::initializer_list<T> values) : size_(0) {
+    for (typename std::initializer_list<T>::const_iterator value = values.begin();
+         value != values.end() && size_ < N; ++value)
+      elements_[size_++] = *value;
+  }
+#endif
 
   size_type size() const { return size_; }
   static size_type max_size() { return N; }

@@ -1,0 +1,65 @@
+"""Render mros2 headers from the ROS 2 type model: ``{relative path: text}``.
+
+One header per message (``pkg/msg/type_name.hpp``) and per service
+(``pkg/srv/name.hpp``, both halves), the static support headers, and a
+firmware's ``templates.hpp``. Nothing is written here.
+"""
+
+import functools
+import os
+
+from colcon_mros import __version__
+from colcon_mros.generator.render import render_template
+from colcon_mros.mros2.cpp import (SUPPORT_HEADERS, WIRE_HEADER, WIRE_VERSION, CppMessage,
+                                   CppMessageName, CppService)
+
+TEMPLATE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'templates')
+SUPPORT_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'support')
+# The support headers that live with the ROS 1 back end and serve both.
+_SHARED_SUPPORT_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
+                                   'generator', 'support')
+TEMPLATES_HEADER = 'templates.hpp'
+
+
+@functools.lru_cache(maxsize=None)
+def _support_text(name):
+    for directory in (SUPPORT_DIR, _SHARED_SUPPORT_DIR):
+        path = os.path.join(directory, name)
+        if os.path.isfile(path):
+            with open(path) as source:
+                return source.read()
+    raise FileNotFoundError(name)
+
+
+def _render(name, **context):
+    return render_template(TEMPLATE_DIR, name, genmros_version=__version__,
+                           wire_header=WIRE_HEADER, wire_version=WIRE_VERSION, **context)
+
+
+def support_headers():
+    return {name: _support_text(name) for name in SUPPORT_HEADERS}
+
+
+def message_header(message):
+    view = CppMessage(message)
+    return {view.header: _render(
+        'message.hpp.em', msg=view, class_text=_render('message_class.hpp.em', msg=view),
+        traits_text=_render('type_name.hpp.em', messages=[view]))}
+
+
+def service_header(service):
+    view = CppService(service)
+    return {view.header: _render(
+        'service.hpp.em', srv=view,
+        request_text=_render('message_class.hpp.em', msg=view.request),
+        response_text=_render('message_class.hpp.em', msg=view.response),
+        traits_text=_render('type_name.hpp.em', messages=[view.request, view.response]))}
+
+
+def templates_header(publish, subscribe):
+    """mros2's templates.hpp: the explicit instantiations of its publish and
+    subscribe calls for the message types a firmware uses."""
+    return {TEMPLATES_HEADER: _render(
+        'templates.hpp.em', headers=sorted({CppMessageName(m).header for m in publish + subscribe}),
+        publish=[CppMessageName(m) for m in publish],
+        subscribe=[CppMessageName(m) for m in subscribe])}
