@@ -287,8 +287,63 @@ def _add_mros_v1_harden(subparsers):
     parser.set_defaults(run=_mros_v1_harden)
 
 
+def _add_mros2_export(subparsers):
+    parser = subparsers.add_parser(
+        'mros2-export', help='[mros2, ROS 2] the headers one mros2 firmware needs, and its '
+                             'templates.hpp',
+        description='mros2 (ROS 2): the headers of the selected ROS 2 types and every type they '
+                    'contain, read with rosidl from a workspace and the installed ROS 2 packages; '
+                    "with --publish/--subscribe also mros2's templates.hpp for those types.")
+    parser.add_argument('--workspace', dest='workspaces', action='append', default=[], metavar='WS',
+                        help='ROS 2 workspace or source tree, searched for package.xml '
+                             '(repeatable)')
+    parser.add_argument('--prefix', dest='prefixes', action='append', metavar='PREFIX',
+                        help='installed ROS 2 prefix (share/<pkg>/msg, ament index), or an '
+                             "export dir's mros2/ (repeatable; default: AMENT_PREFIX_PATH)")
+    parser.add_argument('--package', dest='packages', action='append', default=[],
+                        metavar='PKG', help='export every type of PKG (repeatable)')
+    parser.add_argument('--type', dest='types', action='append', default=[],
+                        metavar='PKG/msg/TYPE',
+                        help='a message (PKG/msg/TYPE or PKG/TYPE), a service (PKG/srv/NAME) or '
+                             'one half of one (repeatable)')
+    for flag, what in (('--publish', 'publishes'), ('--subscribe', 'subscribes to')):
+        parser.add_argument(flag, dest=flag[2:], action='append', default=[],
+                            metavar='PKG/msg/TYPE',
+                            help='a message type the firmware %s: exported, and instantiated in '
+                                 'templates.hpp (repeatable)' % what)
+    parser.add_argument('-o', dest='output_dir', required=True, metavar='DIR',
+                        help='include root to write to')
+    parser.add_argument('--storage', choices=STORAGE_KINDS, default=DEFAULT_STORAGE,
+                        help='unbounded strings and sequences as std::string/std::vector (heap, '
+                             'default) or held in the message with maxima from options files '
+                             "(bounded: no heap); string<=N and T[<=N] are always bounded")
+    parser.add_argument('--options', dest='option_files', action='append', default=[],
+                        metavar='FILE',
+                        help="bounds for --storage bounded: lines 'pkg/Type.field max_size:N "
+                             "max_count:N' or '* ...' (repeatable)")
+    parser.set_defaults(run=_mros2_export)
+
+
+def _add_mros2_generate(subparsers):
+    parser = subparsers.add_parser(
+        'mros2-generate', help="[mros2, ROS 2] one package's headers (what colcon build runs "
+                               'through rosidl)',
+        description="mros2 (ROS 2): the headers of one ROS 2 package's interfaces, as the rosidl "
+                    'generator extension runs it for each package rosidl_generate_interfaces() '
+                    'builds.')
+    parser.add_argument('--package-dir', required=True, metavar='DIR',
+                        help="the package's source directory (with package.xml)")
+    parser.add_argument('--prefix', dest='prefixes', action='append', metavar='PREFIX',
+                        help='installed ROS 2 prefix the packages it depends on are in '
+                             '(repeatable; default: AMENT_PREFIX_PATH)')
+    parser.add_argument('-o', dest='output_dir', required=True, metavar='DIR',
+                        help='include root to write to (<DIR>/<pkg>/msg/...)')
+    parser.set_defaults(run=_mros2_generate)
+
+
 SUBCOMMANDS = (_add_generate, _add_export, _add_printers, _add_export_dir_commands,
-               _add_mros_v1_pc, _add_mros_v1_fit, _add_mros_v1_harden)
+               _add_mros_v1_pc, _add_mros_v1_fit, _add_mros_v1_harden, _add_mros2_export,
+               _add_mros2_generate)
 
 
 def build_parser():
@@ -313,6 +368,25 @@ def _generate(options):
                    parse_include_flags(options.include_paths), options.template_dir,
                    options.export_dir, options.records, options.cmake_module,
                    options.all_of_package)
+
+
+def _mros2_export(options):
+    from colcon_mros.ros2.environment import require_rosidl
+    require_rosidl()
+    from colcon_mros.mros2.export import export_firmware
+    result = export_firmware(options.output_dir, options.workspaces, options.prefixes,
+                             options.packages, options.types, options.publish, options.subscribe,
+                             options.storage, options.option_files)
+    print('genmros: %d mros2 message types, %d services in %s (%d files changed, %d removed)'
+          % (len(result.messages), len(result.services), options.output_dir,
+             len(result.changed), len(result.removed)))
+
+
+def _mros2_generate(options):
+    from colcon_mros.ros2.environment import require_rosidl
+    require_rosidl()
+    from colcon_mros.mros2.export import generate_package
+    generate_package(options.package_dir, options.output_dir, options.prefixes)
 
 
 def _export(options):

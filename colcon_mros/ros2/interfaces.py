@@ -70,6 +70,14 @@ def _package_name(package_xml):
         raise GenmrosError('bad package manifest: %s' % str(error).splitlines()[0], package_xml)
 
 
+def source_package(directory):
+    """The Package whose package.xml is in directory."""
+    manifest = os.path.join(directory, 'package.xml')
+    if not os.path.isfile(manifest):
+        raise GenmrosError('no package.xml in the package directory', directory)
+    return Package(_package_name(manifest), directory)
+
+
 def workspace_packages(workspace):
     """{name: Package} for the packages with interfaces under a workspace's
     source tree (``WS/src`` if there is one, else ``WS``)."""
