@@ -13,6 +13,8 @@ are right is the tests' job.
   block; its :meth:`Receiver.samples` waits for the samples it was started
   for and raises :class:`PeerError` (an AssertionError, with the peer's
   log) if they do not come in time.
+- :func:`echoer`: as :func:`receiver`, and each sample is written back
+  on a reply topic (a ROS 2 node that answers).
 - :func:`send`: a sending participant that writes samples once a reader
   matched, waits until they are acknowledged and exits.
 - :func:`free_domain_id`: a DDS domain for one test, so parallel runs do not
@@ -99,16 +101,19 @@ def encode(samples):
 
 
 class Receiver:
-    """A running `dds_raw_peer receive`: its samples and its log."""
+    """A running `dds_raw_peer receive` (or echo): its samples and its log."""
 
-    def __init__(self, program, topic, type_name, count, domain, timeout):
+    def __init__(self, program, topic, type_name, count, domain, timeout, reply=None):
         self.description = '%s (%s) in domain %d' % (topic, type_name, domain)
         self.count = count
         self._stdout = []
         self._stderr = []
         self._changed = threading.Condition()
-        argv = _argv(program, 'receive', topic, type_name, domain, timeout) + [
+        argv = _argv(program, 'echo' if reply else 'receive', topic, type_name, domain, timeout) + [
             '--count', str(count)]
+        if reply:
+            argv += ['--reply-topic', reply[0], '--reply-type', reply[1]]
+            self.description += ', echoing on %s (%s)' % reply
         self.popen = subprocess.Popen(argv, env=_environment(), cwd=os.path.dirname(program),
                                       stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                                       stderr=subprocess.PIPE, start_new_session=True)
@@ -167,12 +172,13 @@ class Receiver:
 
 
 class _Receiving:
-    def __init__(self, *arguments):
+    def __init__(self, *arguments, **keywords):
         self._arguments = arguments
+        self._keywords = keywords
         self.receiver = None
 
     def __enter__(self):
-        self.receiver = Receiver(*self._arguments)
+        self.receiver = Receiver(*self._arguments, **self._keywords)
         try:
             self.receiver.wait_until_ready()
         except BaseException:
@@ -190,6 +196,15 @@ def receiver(program, topic, type_name, count, domain, timeout=600):
     killed on exit. It yields the :class:`Receiver`. timeout bounds the
     process's own life; Receiver.samples takes the timeout a test waits."""
     return _Receiving(program, topic, type_name, count, domain, timeout)
+
+
+def echoer(program, topic, type_name, reply_topic, count, domain, reply_type=None, timeout=600):
+    """As :func:`receiver`, with `dds_raw_peer echo`: each sample received is
+    also written back unchanged on reply_topic (of reply_type, default
+    type_name). The process exits once a reader of the reply acknowledged
+    all `count`; Receiver.samples gives what it received."""
+    return _Receiving(program, topic, type_name, count, domain, timeout,
+                      reply=(reply_topic, reply_type or type_name))
 
 
 def send(program, topic, type_name, samples, domain, timeout=DELIVERY_TIMEOUT):

@@ -1,7 +1,8 @@
 // A Fast DDS participant that moves already-serialized ROS 2 messages: the
 // ROS 2 side of the tests (testing/dds_peer.py builds and runs it).
 //
-//   dds_raw_peer send|receive --topic NAME --type TYPE_NAME
+//   dds_raw_peer send|receive|echo --topic NAME --type TYPE_NAME
+//                [--reply-topic NAME] [--reply-type TYPE_NAME]
 //                [--domain N] [--count N] [--timeout-ms N]
 //
 // A sample is a message's serialized bytes as they go into an RTPS DATA
@@ -16,9 +17,13 @@
 //          acknowledged, prints "sent N" on stdout and exits 0.
 // receive  prints each of --count samples (default 1) as one lowercase hex
 //          line on stdout, nothing else, and exits 0.
-// Either exits 1 with a line on stderr when --timeout-ms (default 10000)
+// echo     as receive, and writes each sample as it came on --reply-topic
+//          (of type --reply-type, default --type); once all --count are
+//          written, waits until a reader of the reply matched and
+//          acknowledged them, then exits 0.
+// Each exits 1 with a line on stderr when --timeout-ms (default 10000)
 // passes first, 2 on a usage error. "ready" goes to stderr once the
-// participant and its endpoint exist; Fast DDS' own log goes to stderr too.
+// participant and its endpoints exist; Fast DDS' own log goes to stderr too.
 //
 // The participant uses UDPv4 on 127.0.0.1 only (no shared memory, no other
 // interface) and finds its peers there through the initial peers list; the
@@ -206,6 +211,8 @@ struct Options
     std::string mode;
     std::string topic;
     std::string type;
+    std::string reply_topic;
+    std::string reply_type;
     uint32_t domain = 0;
     long count = 1;
     long timeout_ms = 10000;
@@ -215,7 +222,8 @@ void usage(
         const std::string& problem)
 {
     std::cerr << "dds_raw_peer: " << problem << "\n"
-              << "usage: dds_raw_peer send|receive --topic NAME --type TYPE_NAME"
+              << "usage: dds_raw_peer send|receive|echo --topic NAME --type TYPE_NAME"
+              << " [--reply-topic NAME] [--reply-type TYPE_NAME]"
               << " [--domain N] [--count N] [--timeout-ms N]" << std::endl;
     std::exit(2);
 }
@@ -251,7 +259,7 @@ Options parse(
         usage("no mode");
     }
     options.mode = argv[1];
-    if (options.mode != "send" && options.mode != "receive")
+    if (options.mode != "send" && options.mode != "receive" && options.mode != "echo")
     {
         usage("unknown mode '" + options.mode + "'");
     }
@@ -270,6 +278,14 @@ Options parse(
         else if (option == "--type")
         {
             options.type = value;
+        }
+        else if (option == "--reply-topic")
+        {
+            options.reply_topic = value;
+        }
+        else if (option == "--reply-type")
+        {
+            options.reply_type = value;
         }
         else if (option == "--domain")
         {
@@ -291,6 +307,14 @@ Options parse(
     if (options.topic.empty() || options.type.empty())
     {
         usage("--topic and --type are required");
+    }
+    if ((options.mode == "echo") == options.reply_topic.empty())
+    {
+        usage("echo takes --reply-topic, and only echo");
+    }
+    if (options.reply_type.empty())
+    {
+        options.reply_type = options.type;
     }
     return options;
 }
@@ -413,86 +437,158 @@ int fail(
     return 1;
 }
 
-int send(
+std::string describe(
+        const std::string& topic,
+        const std::string& type)
+{
+    return topic + " (" + type + ")";
+}
+
+// The topic, its type registered under type_name if it is not yet.
+Topic* make_topic(
         DomainParticipant* participant,
-        Topic* topic,
-        const Options& options,
-        std::chrono::steady_clock::time_point deadline)
+        const std::string& name,
+        const std::string& type_name)
+{
+    if (!participant->find_type(type_name).empty()
+            || TypeSupport(new RawType(type_name)).register_type(participant) == ReturnCode_t::RETCODE_OK)
+    {
+        return participant->create_topic(name, type_name, TOPIC_QOS_DEFAULT);
+    }
+    return nullptr;
+}
+
+DataWriter* make_writer(
+        DomainParticipant* participant,
+        Topic* topic)
 {
     Publisher* publisher = participant->create_publisher(PUBLISHER_QOS_DEFAULT);
     DataWriterQos qos = DATAWRITER_QOS_DEFAULT;
     keep_and_resend(qos);
-    DataWriter* writer = publisher == nullptr ? nullptr : publisher->create_datawriter(topic, qos);
-    if (writer == nullptr)
-    {
-        return fail("cannot create the writer");
-    }
-    std::cerr << "ready" << std::endl;
+    return publisher == nullptr ? nullptr : publisher->create_datawriter(topic, qos);
+}
 
-    const std::vector<Bytes> samples = read_samples();
+DataReader* make_reader(
+        DomainParticipant* participant,
+        Topic* topic,
+        DataReaderListener* listener)
+{
+    Subscriber* subscriber = participant->create_subscriber(SUBSCRIBER_QOS_DEFAULT);
+    DataReaderQos qos = DATAREADER_QOS_DEFAULT;
+    keep_and_resend(qos);
+    return subscriber == nullptr ? nullptr : subscriber->create_datareader(topic, qos, listener);
+}
+
+long milliseconds_left(
+        std::chrono::steady_clock::time_point deadline)
+{
+    long left = static_cast<long>(std::chrono::duration_cast<std::chrono::milliseconds>(
+                deadline - std::chrono::steady_clock::now()).count());
+    return left > 0 ? left : 0;
+}
+
+// 0 once a reader matched the writer, else 1 (with a line on stderr) at the
+// deadline.
+int wait_for_reader(
+        DataWriter* writer,
+        const std::string& what,
+        const Options& options,
+        std::chrono::steady_clock::time_point deadline)
+{
     PublicationMatchedStatus matched;
     while (writer->get_publication_matched_status(matched) == ReturnCode_t::RETCODE_OK
             && matched.current_count == 0)
     {
         if (std::chrono::steady_clock::now() >= deadline)
         {
-            return fail("no reader of " + options.topic + " (" + options.type + ") matched within "
-                           + std::to_string(options.timeout_ms) + " ms");
+            return fail("no reader of " + what + " matched within " + std::to_string(options.timeout_ms)
+                           + " ms");
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
-    for (const Bytes& sample : samples)
-    {
-        if (!writer->write(const_cast<Bytes*>(&sample)))
-        {
-            return fail("writing a sample of " + std::to_string(sample.size()) + " bytes failed");
-        }
-    }
-    long left = static_cast<long>(std::chrono::duration_cast<std::chrono::milliseconds>(
-                deadline - std::chrono::steady_clock::now()).count());
-    if (writer->wait_for_acknowledgments(duration(left > 0 ? left : 0)) != ReturnCode_t::RETCODE_OK)
-    {
-        return fail("the samples were not acknowledged within " + std::to_string(options.timeout_ms)
-                       + " ms");
-    }
-    std::cout << "sent " << samples.size() << std::endl;
     return 0;
 }
 
-int receive(
-        DomainParticipant* participant,
-        Topic* topic,
+int write(
+        DataWriter* writer,
+        const Bytes& sample)
+{
+    if (!writer->write(const_cast<Bytes*>(&sample)))
+    {
+        return fail("writing a sample of " + std::to_string(sample.size()) + " bytes failed");
+    }
+    return 0;
+}
+
+int wait_for_acknowledgments(
+        DataWriter* writer,
+        const std::string& what,
         const Options& options,
         std::chrono::steady_clock::time_point deadline)
 {
-    Inbox inbox;
-    Subscriber* subscriber = participant->create_subscriber(SUBSCRIBER_QOS_DEFAULT);
-    DataReaderQos qos = DATAREADER_QOS_DEFAULT;
-    keep_and_resend(qos);
-    DataReader* reader = subscriber == nullptr ? nullptr
-            : subscriber->create_datareader(topic, qos, &inbox);
-    if (reader == nullptr)
+    if (writer->wait_for_acknowledgments(duration(milliseconds_left(deadline))) != ReturnCode_t::RETCODE_OK)
     {
-        return fail("cannot create the reader");
+        return fail("the samples on " + what + " were not acknowledged within "
+                       + std::to_string(options.timeout_ms) + " ms");
     }
-    std::cerr << "ready" << std::endl;
+    return 0;
+}
 
+int send(
+        DataWriter* writer,
+        const Options& options,
+        std::chrono::steady_clock::time_point deadline)
+{
+    const std::string what = describe(options.topic, options.type);
+    const std::vector<Bytes> samples = read_samples();
+    int status = wait_for_reader(writer, what, options, deadline);
+    for (size_t i = 0; status == 0 && i < samples.size(); ++i)
+    {
+        status = write(writer, samples[i]);
+    }
+    if (status == 0)
+    {
+        status = wait_for_acknowledgments(writer, what, options, deadline);
+    }
+    if (status == 0)
+    {
+        std::cout << "sent " << samples.size() << std::endl;
+    }
+    return status;
+}
+
+// receive, and echo when writer is not null.
+int receive(
+        Inbox& inbox,
+        DataWriter* writer,
+        const Options& options,
+        std::chrono::steady_clock::time_point deadline)
+{
     int status = 0;
-    for (long received = 0; received < options.count; ++received)
+    for (long received = 0; status == 0 && received < options.count; ++received)
     {
         Bytes sample;
         if (!inbox.next(sample, deadline))
         {
-            status = fail("received " + std::to_string(received) + " of " + std::to_string(options.count)
-                           + " samples on " + options.topic + " (" + options.type + ") within "
+            return fail("received " + std::to_string(received) + " of " + std::to_string(options.count)
+                           + " samples on " + describe(options.topic, options.type) + " within "
                            + std::to_string(options.timeout_ms) + " ms");
-            break;
         }
         std::cout << hex(sample) << std::endl;
+        if (writer != nullptr)
+        {
+            status = write(writer, sample);
+        }
     }
-    // The listener goes out of scope with this function: no more calls to it.
-    reader->set_listener(nullptr);
-    participant->delete_contained_entities();
+    if (status == 0 && writer != nullptr)
+    {
+        const std::string what = describe(options.reply_topic, options.reply_type);
+        status = wait_for_reader(writer, what, options, deadline);
+        if (status == 0)
+        {
+            status = wait_for_acknowledgments(writer, what, options, deadline);
+        }
+    }
     return status;
 }
 
@@ -512,30 +608,49 @@ int main(
     Log::RegisterConsumer(std::move(log));
     Log::SetVerbosity(Log::Kind::Warning);
 
+    // Declared before the participant: it outlives the reader that calls it.
+    Inbox inbox;
     DomainParticipantFactory* factory = DomainParticipantFactory::get_instance();
     DomainParticipant* participant = factory->create_participant(options.domain, participant_qos());
     if (participant == nullptr)
     {
         return fail("cannot create a participant in domain " + std::to_string(options.domain));
     }
-    TypeSupport type(new RawType(options.type));
-    Topic* topic = nullptr;
-    if (type.register_type(participant) == ReturnCode_t::RETCODE_OK)
-    {
-        topic = participant->create_topic(options.topic, options.type, TOPIC_QOS_DEFAULT);
-    }
-    int status;
+    int status = 0;
+    DataWriter* writer = nullptr;
+    DataReader* reader = nullptr;
+    Topic* topic = make_topic(participant, options.topic, options.type);
     if (topic == nullptr)
     {
-        status = fail("cannot create topic " + options.topic + " of type " + options.type);
+        status = fail("cannot create topic " + describe(options.topic, options.type));
     }
     else if (options.mode == "send")
     {
-        status = send(participant, topic, options, deadline);
+        writer = make_writer(participant, topic);
+        status = writer == nullptr ? fail("cannot create the writer") : 0;
     }
     else
     {
-        status = receive(participant, topic, options, deadline);
+        reader = make_reader(participant, topic, &inbox);
+        status = reader == nullptr ? fail("cannot create the reader") : 0;
+        if (status == 0 && options.mode == "echo")
+        {
+            Topic* reply = make_topic(participant, options.reply_topic, options.reply_type);
+            writer = reply == nullptr ? nullptr : make_writer(participant, reply);
+            status = writer == nullptr
+                    ? fail("cannot create the writer of " + describe(options.reply_topic, options.reply_type))
+                    : 0;
+        }
+    }
+    if (status == 0)
+    {
+        std::cerr << "ready" << std::endl;
+        status = options.mode == "send" ? send(writer, options, deadline)
+                : receive(inbox, writer, options, deadline);
+    }
+    if (reader != nullptr)
+    {
+        reader->set_listener(nullptr);
     }
     participant->delete_contained_entities();
     factory->delete_participant(participant);

@@ -1,7 +1,8 @@
 """The real DDS peer the mros2 tests stand the ROS 2 side with
 (testing/dds_peer.py, testing/dds_raw_peer.cpp), held against itself: one
 Fast DDS participant's samples reach another byte for byte and in order on
-ROS 2's topic and type names, and not a reader of another type. The samples
+ROS 2's topic and type names, and not a reader of another type; the echo
+mode writes back what it received. The samples
 are CDR written by hand, so a fault here is the peer's, not generated
 code's."""
 
@@ -10,7 +11,7 @@ import struct
 
 import pytest
 
-from testing.dds_peer import PeerError, build, free_domain_id, receiver, send
+from testing.dds_peer import PeerError, build, echoer, free_domain_id, receiver, send
 
 pytestmark = pytest.mark.skipif(not os.path.isdir('/usr/include/fastdds'),
                                 reason='needs Fast DDS (Debian: libfastrtps-dev)')
@@ -54,3 +55,13 @@ def test_a_reader_of_another_type_gets_nothing(peer):
         assert same_type.samples() == [sample]
         with pytest.raises(PeerError, match='received 0 sample'):
             other_type.samples(timeout=3)
+
+
+def test_echo_writes_back_what_it_received(peer):
+    samples = [string_sample('ping %d' % number) for number in range(3)]
+    domain = free_domain_id()
+    with receiver(peer, 'rt/reply', STRING_TYPE, len(samples), domain) as replies, \
+            echoer(peer, TOPIC, STRING_TYPE, 'rt/reply', len(samples), domain) as echoing:
+        send(peer, TOPIC, STRING_TYPE, samples, domain)
+        assert echoing.samples() == samples
+        assert replies.samples() == samples
