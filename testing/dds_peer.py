@@ -20,8 +20,10 @@ are right is the tests' job.
 - :func:`free_domain_id`: a DDS domain for one test, so parallel runs do not
   meet.
 
-Both sides use UDPv4 on 127.0.0.1 only (no shared memory) and find each
-other there; every process runs in its own process group and is killed on
+Both sides use UDPv4 on 127.0.0.1 only (no shared memory, no multicast):
+a participant announces itself by unicast to the domain's well-known
+discovery ports of the first participant ids on 127.0.0.1 and listens on
+its own there. Every process runs in its own process group and is killed on
 leaving, also when the code using it fails. Only the standard library is
 used.
 """
@@ -29,6 +31,7 @@ used.
 import itertools
 import os
 import signal
+import socket
 import subprocess
 import threading
 import time
@@ -36,8 +39,9 @@ import time
 SOURCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'dds_raw_peer.cpp')
 # How long discovery and delivery may take on a loaded machine.
 DELIVERY_TIMEOUT = 30
-# Fast DDS reads XML profiles from these (and from the working directory);
-# the peer's settings are its own.
+# What would change the peer's settings: Fast DDS' XML profiles (also read
+# from the working directory, the build directory here) and builtin
+# transports, and ROS_DOMAIN_ID (the domain is always given).
 _PROFILE_VARIABLES = ('FASTRTPS_DEFAULT_PROFILES_FILE', 'FASTDDS_DEFAULT_PROFILES_FILE',
                       'FASTDDS_BUILTIN_TRANSPORTS', 'ROS_DOMAIN_ID')
 _domain_calls = itertools.count()
@@ -66,11 +70,30 @@ def build(out_dir):
     return program
 
 
+def _domain_in_use(domain):
+    """Whether a participant on 127.0.0.1 has one of the domain's first
+    discovery ports (RTPS' well-known ports: 7400 + 250 * domain + 10 +
+    2 * participant id)."""
+    for participant in range(4):
+        with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as probe:
+            try:
+                probe.bind(('127.0.0.1', 7410 + 250 * domain + 2 * participant))
+            except OSError:
+                return True
+    return False
+
+
 def free_domain_id():
-    """A DDS domain id in 1..200 for one test: from the process id, so
-    parallel test processes most likely differ, and another on each call.
-    Domain 0, the one ROS 2 uses by default, is never chosen."""
-    return 1 + (os.getpid() + next(_domain_calls)) % 200
+    """A DDS domain id in 1..200 for one test, another on each call: from the
+    process id (spread, so that parallel test processes with near ids start
+    far apart), skipping domains whose discovery ports are taken on
+    127.0.0.1. Domain 0, the one ROS 2 uses by default, is never chosen."""
+    start = os.getpid() * 37
+    for _ in range(200):
+        domain = 1 + (start + next(_domain_calls)) % 200
+        if not _domain_in_use(domain):
+            return domain
+    return domain
 
 
 def _environment():
