@@ -20,6 +20,14 @@ are right is the tests' job.
 - :func:`free_domain_id`: a DDS domain for one test, so parallel runs do not
   meet.
 
+The endpoints are reliable and transient-local unless reliability
+('best-effort') and durability ('volatile') say otherwise. A reader matches
+only writers that offer as much, and mros2's endpoints (embeddedRTPS) are
+best-effort and announce no durability (so volatile): a receiver of an
+mros2 publisher needs reliability='best-effort', durability='volatile'
+(Fast DDS logs "INCOMPATIBLE QOS" otherwise). With a best-effort reader,
+send does not learn whether the samples arrived.
+
 Both sides use UDPv4 on 127.0.0.1 only (no shared memory, no multicast):
 a participant announces itself by unicast to the domain's well-known
 discovery ports of the first participant ids on 127.0.0.1 and listens on
@@ -103,9 +111,13 @@ def _environment():
     return env
 
 
-def _argv(program, mode, topic, type_name, domain, timeout):
-    return [program, mode, '--topic', topic, '--type', type_name, '--domain', str(domain),
+def _argv(program, mode, topic, type_name, domain, timeout, qos):
+    argv = [program, mode, '--topic', topic, '--type', type_name, '--domain', str(domain),
             '--timeout-ms', str(int(timeout * 1000))]
+    for name in ('reliability', 'durability'):
+        if qos.get(name):
+            argv += ['--' + name, qos[name]]
+    return argv
 
 
 def _kill(popen):
@@ -126,14 +138,14 @@ def encode(samples):
 class Receiver:
     """A running `dds_raw_peer receive` (or echo): its samples and its log."""
 
-    def __init__(self, program, topic, type_name, count, domain, timeout, reply=None):
+    def __init__(self, program, topic, type_name, count, domain, timeout, reply=None, **qos):
         self.description = '%s (%s) in domain %d' % (topic, type_name, domain)
         self.count = count
         self._stdout = []
         self._stderr = []
         self._changed = threading.Condition()
-        argv = _argv(program, 'echo' if reply else 'receive', topic, type_name, domain, timeout) + [
-            '--count', str(count)]
+        argv = _argv(program, 'echo' if reply else 'receive', topic, type_name, domain, timeout,
+                     qos) + ['--count', str(count)]
         if reply:
             argv += ['--reply-topic', reply[0], '--reply-type', reply[1]]
             self.description += ', echoing on %s (%s)' % reply
@@ -213,30 +225,36 @@ class _Receiving:
         self.receiver.stop()
 
 
-def receiver(program, topic, type_name, count, domain, timeout=600):
+def receiver(program, topic, type_name, count, domain, timeout=600, reliability=None,
+             durability=None):
     """A context manager: `dds_raw_peer receive` for `count` samples on
     topic/type_name in domain, started and its reader created on entry,
     killed on exit. It yields the :class:`Receiver`. timeout bounds the
     process's own life; Receiver.samples takes the timeout a test waits."""
-    return _Receiving(program, topic, type_name, count, domain, timeout)
+    return _Receiving(program, topic, type_name, count, domain, timeout,
+                      reliability=reliability, durability=durability)
 
 
-def echoer(program, topic, type_name, reply_topic, count, domain, reply_type=None, timeout=600):
+def echoer(program, topic, type_name, reply_topic, count, domain, reply_type=None, timeout=600,
+           reliability=None, durability=None):
     """As :func:`receiver`, with `dds_raw_peer echo`: each sample received is
     also written back unchanged on reply_topic (of reply_type, default
     type_name). The process exits once a reader of the reply acknowledged
     all `count`; Receiver.samples gives what it received."""
     return _Receiving(program, topic, type_name, count, domain, timeout,
-                      reply=(reply_topic, reply_type or type_name))
+                      reply=(reply_topic, reply_type or type_name), reliability=reliability,
+                      durability=durability)
 
 
-def send(program, topic, type_name, samples, domain, timeout=DELIVERY_TIMEOUT):
+def send(program, topic, type_name, samples, domain, timeout=DELIVERY_TIMEOUT, reliability=None,
+         durability=None):
     """Runs `dds_raw_peer send`: samples (bytes each, header included) are
     written on topic/type_name in domain once a reader matched. Returns when
     every sample is acknowledged; raises PeerError with the peer's log if
     no reader matched or acknowledged them within timeout seconds."""
     samples = list(samples)
-    argv = _argv(program, 'send', topic, type_name, domain, timeout)
+    argv = _argv(program, 'send', topic, type_name, domain, timeout,
+                 {'reliability': reliability, 'durability': durability})
     popen = subprocess.Popen(argv, env=_environment(), cwd=os.path.dirname(program),
                              stdin=subprocess.PIPE, stdout=subprocess.PIPE,
                              stderr=subprocess.PIPE, start_new_session=True)
@@ -245,7 +263,7 @@ def send(program, topic, type_name, samples, domain, timeout=DELIVERY_TIMEOUT):
     except subprocess.TimeoutExpired:
         _kill(popen)
         raise PeerError('dds_raw_peer sending on %s (%s) in domain %d did not exit within %.0f s'
-                          % (topic, type_name, domain, timeout + 10))
+                        % (topic, type_name, domain, timeout + 10))
     finally:
         _kill(popen)
     if popen.returncode != 0 or stdout.decode().split() != ['sent', str(len(samples))]:

@@ -3,6 +3,8 @@
 //
 //   dds_raw_peer send|receive|echo --topic NAME --type TYPE_NAME
 //                [--reply-topic NAME] [--reply-type TYPE_NAME]
+//                [--reliability reliable|best-effort]
+//                [--durability transient-local|volatile]
 //                [--domain N] [--count N] [--timeout-ms N]
 //
 // A sample is a message's serialized bytes as they go into an RTPS DATA
@@ -27,9 +29,13 @@
 //
 // The participant uses UDPv4 on 127.0.0.1 only (no shared memory, no other
 // interface) and finds its peers there through the initial peers list; the
-// domain is --domain, else ROS_DOMAIN_ID, else 0. Both endpoints are
-// reliable and transient-local with the last 100 samples kept, so a reader
-// that matches late still gets what was written.
+// domain is --domain, else ROS_DOMAIN_ID, else 0. Its endpoints keep the
+// last 100 samples and are reliable and transient-local unless
+// --reliability and --durability say otherwise: a reader that matches late
+// still gets what was written. A reader only matches writers that offer as
+// much (mros2's embeddedRTPS endpoints are best-effort and announce no
+// durability, so volatile), and with a best-effort reader send's wait for
+// acknowledgments returns at once.
 
 #include <fastdds/dds/domain/DomainParticipant.hpp>
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
@@ -213,6 +219,8 @@ struct Options
     std::string type;
     std::string reply_topic;
     std::string reply_type;
+    bool reliable = true;
+    bool transient_local = true;
     uint32_t domain = 0;
     long count = 1;
     long timeout_ms = 10000;
@@ -224,6 +232,7 @@ void usage(
     std::cerr << "dds_raw_peer: " << problem << "\n"
               << "usage: dds_raw_peer send|receive|echo --topic NAME --type TYPE_NAME"
               << " [--reply-topic NAME] [--reply-type TYPE_NAME]"
+              << " [--reliability reliable|best-effort] [--durability transient-local|volatile]"
               << " [--domain N] [--count N] [--timeout-ms N]" << std::endl;
     std::exit(2);
 }
@@ -287,6 +296,14 @@ Options parse(
         {
             options.reply_type = value;
         }
+        else if (option == "--reliability" && (value == "reliable" || value == "best-effort"))
+        {
+            options.reliable = value == "reliable";
+        }
+        else if (option == "--durability" && (value == "transient-local" || value == "volatile"))
+        {
+            options.transient_local = value == "transient-local";
+        }
         else if (option == "--domain")
         {
             options.domain = static_cast<uint32_t>(number(option, value, 0, 232));
@@ -301,7 +318,7 @@ Options parse(
         }
         else
         {
-            usage("unknown option '" + option + "'");
+            usage("unknown option '" + option + "' or value '" + value + "'");
         }
     }
     if (options.topic.empty() || options.type.empty())
@@ -412,11 +429,13 @@ DomainParticipantQos participant_qos()
 }
 
 template<typename Qos>
-void keep_and_resend(
-        Qos& qos)
+void endpoint_qos(
+        Qos& qos,
+        const Options& options)
 {
-    qos.reliability().kind = RELIABLE_RELIABILITY_QOS;
-    qos.durability().kind = TRANSIENT_LOCAL_DURABILITY_QOS;
+    qos.reliability().kind = options.reliable ? RELIABLE_RELIABILITY_QOS : BEST_EFFORT_RELIABILITY_QOS;
+    qos.durability().kind = options.transient_local ? TRANSIENT_LOCAL_DURABILITY_QOS
+            : VOLATILE_DURABILITY_QOS;
     qos.history().kind = KEEP_LAST_HISTORY_QOS;
     qos.history().depth = KEPT_SAMPLES;
     qos.endpoint().history_memory_policy =
@@ -460,22 +479,24 @@ Topic* make_topic(
 
 DataWriter* make_writer(
         DomainParticipant* participant,
-        Topic* topic)
+        Topic* topic,
+        const Options& options)
 {
     Publisher* publisher = participant->create_publisher(PUBLISHER_QOS_DEFAULT);
     DataWriterQos qos = DATAWRITER_QOS_DEFAULT;
-    keep_and_resend(qos);
+    endpoint_qos(qos, options);
     return publisher == nullptr ? nullptr : publisher->create_datawriter(topic, qos);
 }
 
 DataReader* make_reader(
         DomainParticipant* participant,
         Topic* topic,
-        DataReaderListener* listener)
+        DataReaderListener* listener,
+        const Options& options)
 {
     Subscriber* subscriber = participant->create_subscriber(SUBSCRIBER_QOS_DEFAULT);
     DataReaderQos qos = DATAREADER_QOS_DEFAULT;
-    keep_and_resend(qos);
+    endpoint_qos(qos, options);
     return subscriber == nullptr ? nullptr : subscriber->create_datareader(topic, qos, listener);
 }
 
@@ -626,17 +647,17 @@ int main(
     }
     else if (options.mode == "send")
     {
-        writer = make_writer(participant, topic);
+        writer = make_writer(participant, topic, options);
         status = writer == nullptr ? fail("cannot create the writer") : 0;
     }
     else
     {
-        reader = make_reader(participant, topic, &inbox);
+        reader = make_reader(participant, topic, &inbox, options);
         status = reader == nullptr ? fail("cannot create the reader") : 0;
         if (status == 0 && options.mode == "echo")
         {
             Topic* reply = make_topic(participant, options.reply_topic, options.reply_type);
-            writer = reply == nullptr ? nullptr : make_writer(participant, reply);
+            writer = reply == nullptr ? nullptr : make_writer(participant, reply, options);
             status = writer == nullptr
                     ? fail("cannot create the writer of " + describe(options.reply_topic, options.reply_type))
                     : 0;

@@ -1,8 +1,9 @@
 """The real DDS peer the mros2 tests stand the ROS 2 side with
 (testing/dds_peer.py, testing/dds_raw_peer.cpp), held against itself: one
 Fast DDS participant's samples reach another byte for byte and in order on
-ROS 2's topic and type names, and not a reader of another type; the echo
-mode writes back what it received. The samples
+ROS 2's topic and type names, and not a reader of another type nor one
+asking for more durability than the writer offers; the echo mode writes
+back what it received. The samples
 are CDR written by hand, so a fault here is the peer's, not generated
 code's."""
 
@@ -65,3 +66,15 @@ def test_echo_writes_back_what_it_received(peer):
         send(peer, TOPIC, STRING_TYPE, samples, domain)
         assert echoing.samples() == samples
         assert replies.samples() == samples
+
+
+def test_a_reader_asking_for_more_durability_than_offered_gets_nothing(peer):
+    sample = string_sample('hello')
+    domain = free_domain_id()
+    with receiver(peer, TOPIC, STRING_TYPE, 1, domain) as transient_local, \
+            receiver(peer, TOPIC, STRING_TYPE, 1, domain, durability='volatile') as volatile:
+        send(peer, TOPIC, STRING_TYPE, [sample], domain, durability='volatile')
+        assert volatile.samples() == [sample]
+        with pytest.raises(PeerError, match='received 0 sample'):
+            transient_local.samples(timeout=2)
+        assert 'INCOMPATIBLE QOS' in transient_local.log()
