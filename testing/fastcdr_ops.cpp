@@ -436,10 +436,17 @@ std::string decode_op(
     return kind + " " + text.str();
 }
 
+const size_t kEncodeBufferSize = 16 << 20;
+
 int encode(
         std::istream& input)
 {
-    FastBuffer buffer;
+    // Fast-CDR skips padding bytes and leaves them as the buffer held them
+    // (its own buffer grows with realloc: anything). A zeroed buffer of ours
+    // makes them zero, as ROS 2's padding is meant to be, so whole images
+    // compare; it does not grow, and an image beyond it is refused.
+    std::vector<char> storage(kEncodeBufferSize, 0);
+    FastBuffer buffer(storage.data(), storage.size());
     Cdr cdr(buffer, Cdr::LITTLE_ENDIANNESS, Cdr::DDS_CDR);
     cdr.serialize_encapsulation();
     std::string line;

@@ -130,18 +130,25 @@ def has_wstring(message):
                for m in message.members)
 
 
+def _signed_byte(value):
+    return value - 256 if value > 127 else value
+
+
 def rosbags_message(typestore, message, value):
-    """value as a rosbags message object of typestore."""
+    """value as a rosbags message object of typestore. rosbags takes byte
+    (rosidl's octet) as int8, ROS 2 as uint8: the same bits."""
     import numpy
     fields = {}
     for member in message.members:
         item = value[member.name]
+        if member.number_type == 'octet':
+            item = [_signed_byte(v) for v in item] if member.container else _signed_byte(item)
         if member.element == 'message':
             item = ([rosbags_message(typestore, member.message, e) for e in item]
                     if member.container else rosbags_message(typestore, member.message, item))
         elif member.element == 'number' and member.container:
             dtype = {'boolean': numpy.bool_, 'float': numpy.float32, 'double': numpy.float64,
-                     'octet': numpy.uint8, 'char': numpy.uint8}.get(member.number_type,
+                     'octet': numpy.int8, 'char': numpy.uint8}.get(member.number_type,
                                                                     member.number_type)
             item = numpy.array(item, dtype=dtype)
         fields[member.name] = item

@@ -11,6 +11,10 @@ from mros_v1_checkout import checkout_found, missing_reason
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TEST_WS = os.path.join(REPO, 'test_ws')
+# What the tests take from PyPI (rosbags), installed there by
+# scripts/setup.sh --tests (scripts/test-requirements.txt), not into a Python of the system.
+TEST_PYTHON_PACKAGES = os.path.join(REPO, 'build', 'test-python')
+sys.path.append(TEST_PYTHON_PACKAGES)
 
 # The Debian ROS message packages genmros is held against.
 DEBIAN_MESSAGE_PACKAGES = [

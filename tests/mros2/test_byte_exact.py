@@ -1,0 +1,200 @@
+"""The mros2 headers are byte-exact with ROS 2's serializers, both ways.
+
+Random instances of every type of ROS 2's test interface files (Debian's
+ros2-test-interface-files) and of std_msgs, geometry_msgs and sensor_msgs as
+ROS 2 defines them (their definitions from rosbags' type store, written out
+as packages and read by genmros' rosidl front end) go:
+
+- into generated code as Fast-CDR (Debian's libfastcdr) and rosbags write
+  them: the checked copyFromBuf takes them, and copyToBuf writes the same
+  bytes again, as one buffer, in mros2's fragments and when published twice;
+- out of generated code into Fast-CDR, which reads back the instance.
+
+The echo program is compiled from the generated headers for this machine,
+for 32-bit ARM Linux (run under qemu-arm) and for big-endian s390x (under
+qemu-s390x).
+"""
+
+import os
+import random
+import shutil
+
+import pytest
+
+from conftest import run_genmros
+from testing import fastcdr, mros2_harness, ros2_messages
+
+from colcon_mros.generator.storage import HeapStorage
+from colcon_mros.ros2.interfaces import all_packages
+from colcon_mros.ros2.model import ModelBuilder
+
+INSTANCES_PER_TYPE = 12
+# mros2's fragment buffer is 64 bytes; smaller ones cut inside every value.
+FRAGMENT_SIZES = (64, 16, 8)
+TEST_INTERFACE_PACKAGE = 'test_interface_files'
+ROSBAGS_PACKAGES = ('std_msgs', 'geometry_msgs', 'sensor_msgs')
+TARGETS = {
+    'host': ((), ('g++',)),
+    'arm': (('qemu-arm', '-L', '/usr/arm-linux-gnueabihf'), ('arm-linux-gnueabihf-g++',)),
+    's390x': (('qemu-s390x', '-L', '/usr/s390x-linux-gnu'), ('s390x-linux-gnu-g++',)),
+}
+
+
+class Corpus:
+    """The types of one export: their models, headers and C++ names."""
+
+    def __init__(self, include_dir, messages):
+        self.include_dir = include_dir
+        self.messages = messages
+        from colcon_mros.mros2.cpp import CppMessageName
+        names = [CppMessageName(m) for m in messages]
+        self.headers = [n.header for n in names]
+        self.cpp_names = [n.cpp_name for n in names]
+
+
+def _typestore():
+    from rosbags.typesys import Stores, get_typestore
+    return get_typestore(Stores.ROS2_HUMBLE)
+
+
+@pytest.fixture(scope='module')
+def test_interface_corpus(tmp_path_factory):
+    include_dir = str(tmp_path_factory.mktemp('tif_export'))
+    run_genmros('mros2-export', '--prefix', '/usr', '--package', TEST_INTERFACE_PACKAGE,
+                '-o', include_dir)
+    builder = ModelBuilder(all_packages((), ['/usr']), HeapStorage())
+    names = sorted(n for k, n in all_packages((), ['/usr'])[TEST_INTERFACE_PACKAGE].interfaces
+                   if k == 'msg')
+    messages = [builder.message('%s/msg/%s' % (TEST_INTERFACE_PACKAGE, n)) for n in names]
+    services = [builder.service('%s/srv/%s' % (TEST_INTERFACE_PACKAGE, n)) for n in
+                sorted(n for k, n in builder.packages[TEST_INTERFACE_PACKAGE].interfaces
+                       if k == 'srv')]
+    messages += [half for service in services for half in (service.request, service.response)]
+    return Corpus(include_dir, messages)
+
+
+@pytest.fixture(scope='module')
+def rosbags_corpus(tmp_path_factory):
+    typestore = _typestore()
+    names = sorted(n for n in typestore.types if n.split('/')[0] in ROSBAGS_PACKAGES)
+    workspace = ros2_messages.write_packages(typestore, names,
+                                             str(tmp_path_factory.mktemp('rosbags_ws')))
+    include_dir = str(tmp_path_factory.mktemp('rosbags_export'))
+    run_genmros('mros2-export', '--workspace', workspace, '--prefix', workspace, '-o',
+                include_dir, *['--package=%s' % p for p in ROSBAGS_PACKAGES])
+    builder = ModelBuilder(all_packages([workspace], []), HeapStorage())
+    return Corpus(include_dir, [builder.message(name) for name in names])
+
+
+@pytest.fixture(scope='module')
+def fastcdr_program(tmp_path_factory):
+    return fastcdr.build(str(tmp_path_factory.mktemp('fastcdr')))
+
+
+def _echo(corpus, tmp_path, target):
+    runner, compiler = TARGETS[target]
+    if shutil.which(compiler[0]) is None or (runner and shutil.which(runner[0]) is None):
+        pytest.fail('%s is not installed (scripts/setup.sh --tests installs it)'
+                    % (compiler[0] if shutil.which(compiler[0]) is None else runner[0]))
+    flags = ['-static'] if runner else []
+    program = mros2_harness.build_echo(corpus.include_dir, corpus.headers, corpus.cpp_names,
+                                       str(tmp_path / target), compiler, extra_flags=flags)
+    return mros2_harness.Echo(program, runner)
+
+
+def _instances(corpus, seed):
+    rng = random.Random(seed)
+    return [(index, ros2_messages.random_value(message, rng))
+            for index, message in enumerate(corpus.messages)
+            for _ in range(INSTANCES_PER_TYPE)]
+
+
+def _padded(raw):
+    return raw + bytes(-len(raw) % 4)
+
+
+def _check_echo(corpus, instances, references, echoed):
+    for (index, _), reference, result in zip(instances, references, echoed):
+        name = corpus.messages[index].full_name
+        assert not result.refused, '%s: the checked copyFromBuf refused %s' % (name,
+                                                                                reference.hex())
+        assert result.raw == reference, '%s: wrote %s, reference %s' % (
+            name, result.raw.hex(), reference.hex())
+        assert result.whole == _padded(reference), name
+        assert result.fragmented == result.whole, '%s: fragments differ' % name
+        assert result.again == result.whole, '%s: the second publication differs' % name
+
+
+TARGET_PARAMS = ['host', pytest.param('arm', marks=[pytest.mark.slow, pytest.mark.needs_qemu]),
+                 pytest.param('s390x', marks=[pytest.mark.slow, pytest.mark.needs_qemu])]
+
+
+@pytest.mark.parametrize('target', TARGET_PARAMS)
+def test_fastcdr_bytes_come_back_byte_for_byte(test_interface_corpus, rosbags_corpus,
+                                               fastcdr_program, tmp_path, target):
+    for number, corpus in enumerate((test_interface_corpus, rosbags_corpus)):
+        instances = _instances(corpus, seed=number)
+        references = [fastcdr.encode(fastcdr_program,
+                                     ros2_messages.fastcdr_ops(corpus.messages[i], value))
+                      for i, value in instances]
+        samples = [(index, FRAGMENT_SIZES[n % len(FRAGMENT_SIZES)], reference)
+                   for n, ((index, _), reference) in enumerate(zip(instances, references))]
+        _check_echo(corpus, instances, references, _echo(corpus, tmp_path, target).run(samples))
+
+
+def test_generated_bytes_read_back_in_fastcdr(test_interface_corpus, rosbags_corpus,
+                                              fastcdr_program, tmp_path):
+    for number, corpus in enumerate((test_interface_corpus, rosbags_corpus)):
+        instances = _instances(corpus, seed=10 + number)
+        echo = _echo(corpus, tmp_path, 'host')
+        ops = [ros2_messages.fastcdr_ops(corpus.messages[i], value) for i, value in instances]
+        echoed = echo.run([(i, 64, fastcdr.encode(fastcdr_program, o))
+                           for (i, _), o in zip(instances, ops)])
+        for (index, value), op_list, result in zip(instances, ops, echoed):
+            decoded = fastcdr.decode(fastcdr_program, result.raw, ros2_messages.op_kinds(op_list))
+            assert ros2_messages.value_from_ops(corpus.messages[index], iter(decoded)) == value
+
+
+def test_rosbags_bytes_come_back_and_rosbags_reads_ours(test_interface_corpus, rosbags_corpus,
+                                                        tmp_path):
+    from rosbags.typesys import get_types_from_msg
+    typestore = _typestore()
+    for path in sorted(os.listdir('/usr/share/test_interface_files/msg')):
+        name = '%s/msg/%s' % (TEST_INTERFACE_PACKAGE, path[:-4])
+        with open(os.path.join('/usr/share/test_interface_files/msg', path)) as stream:
+            typestore.register(get_types_from_msg(stream.read(), name))
+    checked = 0
+    for number, corpus in enumerate((test_interface_corpus, rosbags_corpus)):
+        instances = [(i, v) for i, v in _instances(corpus, seed=20 + number)
+                     if corpus.messages[i].kind == 'msg'
+                     and not ros2_messages.has_wstring(corpus.messages[i])]
+        references = []
+        for index, value in instances:
+            message = corpus.messages[index]
+            references.append(bytes(typestore.serialize_cdr(
+                ros2_messages.rosbags_message(typestore, message, value), message.full_name)))
+        echoed = _echo(corpus, tmp_path, 'host').run(
+            [(i, 64, reference) for (i, _), reference in zip(instances, references)])
+        _check_echo(corpus, instances, references, echoed)
+        for (index, _), reference, result in zip(instances, references, echoed):
+            name = corpus.messages[index].full_name
+            ours = typestore.deserialize_cdr(result.raw, name)
+            assert bytes(typestore.serialize_cdr(ours, name)) == reference, name
+            checked += 1
+    assert checked > 500
+
+
+def test_every_cut_of_a_sample_is_refused(test_interface_corpus, fastcdr_program, tmp_path):
+    """The checked copyFromBuf never takes a sample cut short: every prefix
+    of every sample is refused."""
+    corpus = test_interface_corpus
+    rng = random.Random(30)
+    samples = []
+    for index, message in enumerate(corpus.messages):
+        value = ros2_messages.random_value(message, rng)
+        data = fastcdr.encode(fastcdr_program, ros2_messages.fastcdr_ops(message, value))
+        samples += [(index, 64, data[:length]) for length in range(len(data))]
+    echoed = _echo(corpus, tmp_path, 'host').run(samples)
+    accepted = [(corpus.messages[i].full_name, len(d)) for (i, _, d), r in zip(samples, echoed)
+                if not r.refused]
+    assert accepted == []
