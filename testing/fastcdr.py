@@ -66,6 +66,7 @@ def build(out_dir):
     this process asks for that directory."""
     out_dir = os.path.abspath(out_dir)
     if out_dir not in _programs:
+        os.makedirs(out_dir, exist_ok=True)
         program = os.path.join(out_dir, 'fastcdr_ops')
         result = subprocess.run(['g++'] + COMPILE_FLAGS + [SOURCE, '-o', program, '-lfastcdr'],
                                 capture_output=True, text=True)
@@ -82,6 +83,16 @@ def encode(program, ops):
     lines = ['%s %s' % (kind, _value_text(kind, value)) for kind, value in ops]
     output = _run(program, 'encode', lines)
     return bytes.fromhex(output[0])
+
+
+def encode_many(program, messages):
+    """encode() of each op list in messages, in one run of the program."""
+    lines = []
+    for ops in messages:
+        lines += ['%s %s' % (kind, _value_text(kind, value)) for kind, value in ops] + ['---']
+    output = _run(program, 'encode', lines)
+    assert len(output) == len(messages), output[-3:]
+    return [bytes.fromhex(line) for line in output]
 
 
 def decode(program, data, kinds):

@@ -68,6 +68,7 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+#include <algorithm>
 
 using eprosima::fastcdr::Cdr;
 using eprosima::fastcdr::FastBuffer;
@@ -436,29 +437,61 @@ std::string decode_op(
     return kind + " " + text.str();
 }
 
-const size_t kEncodeBufferSize = 16 << 20;
+const size_t kEncodeBufferSize = 4 << 20;
 
-int encode(
-        std::istream& input)
+// One message's ops, up to the end of input or a line "---" (which ends
+// each message of a batch); prints its hex line. Returns false at the end
+// of input with no op read.
+bool encode_one(
+        std::istream& input,
+        std::vector<char>& storage)
 {
     // Fast-CDR skips padding bytes and leaves them as the buffer held them
     // (its own buffer grows with realloc: anything). A zeroed buffer of ours
     // makes them zero, as ROS 2's padding is meant to be, so whole images
     // compare; it does not grow, and an image beyond it is refused.
-    std::vector<char> storage(kEncodeBufferSize, 0);
+    std::fill(storage.begin(), storage.end(), 0);
     FastBuffer buffer(storage.data(), storage.size());
     Cdr cdr(buffer, Cdr::LITTLE_ENDIANNESS, Cdr::DDS_CDR);
     cdr.serialize_encapsulation();
     std::string line;
+    bool ended = false;
+    bool read_any = false;
     while (std::getline(input, line))
     {
+        read_any = true;
+        if (line == "---")
+        {
+            ended = true;
+            break;
+        }
         std::string kind;
         std::string value;
         split_op(line, kind, value);
         encode_op(cdr, kind, value);
     }
+    if (!read_any)
+    {
+        return false;
+    }
     std::cout << hex_of(reinterpret_cast<const unsigned char*>(buffer.getBuffer()),
             cdr.getSerializedDataLength()) << "\n";
+    return ended;
+}
+
+int encode(
+        std::istream& input)
+{
+    std::vector<char> storage(kEncodeBufferSize, 0);
+    if (!encode_one(input, storage))
+    {
+        // No op at all: the empty message, the header alone.
+        std::cout << "00010000\n";
+        return 0;
+    }
+    while (encode_one(input, storage))
+    {
+    }
     return 0;
 }
 

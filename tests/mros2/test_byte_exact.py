@@ -134,9 +134,9 @@ def test_fastcdr_bytes_come_back_byte_for_byte(test_interface_corpus, rosbags_co
                                                fastcdr_program, tmp_path, target):
     for number, corpus in enumerate((test_interface_corpus, rosbags_corpus)):
         instances = _instances(corpus, seed=number)
-        references = [fastcdr.encode(fastcdr_program,
-                                     ros2_messages.fastcdr_ops(corpus.messages[i], value))
-                      for i, value in instances]
+        references = fastcdr.encode_many(
+            fastcdr_program, [ros2_messages.fastcdr_ops(corpus.messages[i], value)
+                              for i, value in instances])
         samples = [(index, FRAGMENT_SIZES[n % len(FRAGMENT_SIZES)], reference)
                    for n, ((index, _), reference) in enumerate(zip(instances, references))]
         _check_echo(corpus, instances, references, _echo(corpus, tmp_path, target).run(samples))
@@ -148,8 +148,8 @@ def test_generated_bytes_read_back_in_fastcdr(test_interface_corpus, rosbags_cor
         instances = _instances(corpus, seed=10 + number)
         echo = _echo(corpus, tmp_path, 'host')
         ops = [ros2_messages.fastcdr_ops(corpus.messages[i], value) for i, value in instances]
-        echoed = echo.run([(i, 64, fastcdr.encode(fastcdr_program, o))
-                           for (i, _), o in zip(instances, ops)])
+        echoed = echo.run([(i, 64, data) for (i, _), data
+                           in zip(instances, fastcdr.encode_many(fastcdr_program, ops))])
         for (index, value), op_list, result in zip(instances, ops, echoed):
             decoded = fastcdr.decode(fastcdr_program, result.raw, ros2_messages.op_kinds(op_list))
             assert ros2_messages.value_from_ops(corpus.messages[index], iter(decoded)) == value
@@ -190,9 +190,10 @@ def test_every_cut_of_a_sample_is_refused(test_interface_corpus, fastcdr_program
     corpus = test_interface_corpus
     rng = random.Random(30)
     samples = []
-    for index, message in enumerate(corpus.messages):
-        value = ros2_messages.random_value(message, rng)
-        data = fastcdr.encode(fastcdr_program, ros2_messages.fastcdr_ops(message, value))
+    images = fastcdr.encode_many(fastcdr_program, [
+        ros2_messages.fastcdr_ops(message, ros2_messages.random_value(message, rng))
+        for message in corpus.messages])
+    for index, data in enumerate(images):
         samples += [(index, 64, data[:length]) for length in range(len(data))]
     echoed = _echo(corpus, tmp_path, 'host').run(samples)
     accepted = [(corpus.messages[i].full_name, len(d)) for (i, _, d), r in zip(samples, echoed)
