@@ -60,12 +60,14 @@ Version: $version
 Architecture: all
 Maintainer: colcon-mros developers <dev@colcon-mros.invalid>
 Depends: python3, python3-genmsg, python3-empy, python3-rospkg, python3-catkin-pkg, python3-colcon-core
+Recommends: python3-rosidl
 Installed-Size: $(du -sk "$stage/usr" | cut -f1)
 Section: devel
 Priority: optional
-Description: mROS message headers from ROS 1 .msg files
- genmros, its catkin message generator, colcon extension, firmware CMake
- module and make fragment. Built locally by colcon-mros' scripts/setup.sh.
+Description: mROS message headers from ROS 1 and ROS 2 interface files
+ genmros, its catkin message generator, rosidl generator, colcon extension,
+ firmware CMake module and make fragment, for mROS v1 and mros2. Built
+ locally by colcon-mros' scripts/setup.sh.
 CONTROL
 # Byte code is compiled after install and removed before removal, so dpkg
 # leaves no __pycache__ behind.
@@ -74,3 +76,12 @@ printf '#!/bin/sh\nset -e\npy3clean -p colcon-mros\n' >"$stage/DEBIAN/prerm"
 chmod 755 "$stage/DEBIAN/postinst" "$stage/DEBIAN/prerm"
 dpkg-deb --build --root-owner-group "$stage" "$work/colcon-mros.deb" >/dev/null
 as_root dpkg -i "$work/colcon-mros.deb" >/dev/null
+
+# What the tests take from PyPI (scripts/test-requirements.txt: rosbags, the
+# ROS 2 serializer the mros2 tests compare with) goes into the checkout's
+# build/test-python, which tests/conftest.py puts on the path, not into a
+# Python of the system.
+if [ "${1:-}" = --tests ]; then
+  /usr/bin/python3 -m pip install --quiet --disable-pip-version-check --upgrade \
+    --target "$here/build/test-python" -r "$here/scripts/test-requirements.txt"
+fi

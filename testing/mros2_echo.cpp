@@ -10,6 +10,8 @@
 //   memAlign and getTotalSize send, FRAGMENTED what copyToFragBuf sends in
 //   FRAGMENT_SIZE-byte fragments driven as the runtime drives it, AGAIN
 //   the same message published once more through the path its size takes.
+// With the argument "names" it prints the DDS type name of each type
+// (message_traits::TypeName), one per line, instead.
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -95,10 +97,19 @@ template <class T> static void echo(const Bytes& sample, uint32_t fragment_size)
             << "\n";
 }
 
+template <class T> static const char* type_name() { return message_traits::TypeName<T*>::value(); }
+
 typedef void (*Echo)(const Bytes&, uint32_t);
 static const Echo kEchoes[] = {MROS2_ECHO_FUNCTIONS};
+typedef const char* (*TypeNameOf)();
+static const TypeNameOf kTypeNames[] = {MROS2_ECHO_TYPE_NAMES};
 
-int main() {
+int main(int argc, char** argv) {
+  if (argc == 2 && strcmp(argv[1], "names") == 0) {
+    for (size_t i = 0; i < sizeof kTypeNames / sizeof kTypeNames[0]; ++i)
+      std::cout << kTypeNames[i]() << "\n";
+    return 0;
+  }
   std::string line;
   while (std::getline(std::cin, line)) {
     size_t type_index = 0;

@@ -24,6 +24,8 @@ def build_echo(include_dir, headers, cpp_names, out_dir, compiler=('g++',), std=
         stream.write(''.join('#include "%s"\n' % header for header in sorted(set(headers))))
         stream.write('#define MROS2_ECHO_FUNCTIONS %s\n'
                      % ', '.join('echo<%s>' % name for name in cpp_names))
+        stream.write('#define MROS2_ECHO_TYPE_NAMES %s\n'
+                     % ', '.join('type_name<%s>' % name for name in cpp_names))
     program = os.path.join(out_dir, 'mros2_echo')
     command = list(compiler) + ['-std=' + std, '-O1'] + WARNING_FLAGS + list(extra_flags) + [
         '-I', include_dir, '-DMROS2_ECHO_TYPES_HEADER="%s"' % types_header, SOURCE,
@@ -48,6 +50,12 @@ class Echo:
 
     def __init__(self, program, runner=()):
         self.command = list(runner) + [program]
+
+    def type_names(self):
+        """The DDS type name each type's header gives, in the program's order."""
+        result = subprocess.run(self.command + ['names'], capture_output=True, text=True,
+                                check=True)
+        return result.stdout.split()
 
     def run(self, samples):
         """samples: (type index, fragment size, bytes) -> [Echoed]."""

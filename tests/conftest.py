@@ -24,6 +24,10 @@ DEBIAN_MESSAGE_PACKAGES = [
 ]
 
 
+# The mros2 corpora's fixtures (tests/mros2_corpus.py).
+pytest_plugins = ['mros2_corpus']
+
+
 def pytest_collection_modifyitems(config, items):
     """Tests marked needs_mros_v1 are skipped, saying why, without a checkout."""
     if checkout_found():

@@ -21,74 +21,18 @@ import shutil
 
 import pytest
 
-from conftest import run_genmros
 from testing import fastcdr, mros2_harness, ros2_messages
 
-from colcon_mros.generator.storage import HeapStorage
-from colcon_mros.ros2.interfaces import all_packages
-from colcon_mros.ros2.model import ModelBuilder
+from mros2_corpus import TEST_INTERFACE_PACKAGE, typestore
 
 INSTANCES_PER_TYPE = 12
 # mros2's fragment buffer is 64 bytes; smaller ones cut inside every value.
 FRAGMENT_SIZES = (64, 16, 8)
-TEST_INTERFACE_PACKAGE = 'test_interface_files'
-ROSBAGS_PACKAGES = ('std_msgs', 'geometry_msgs', 'sensor_msgs')
 TARGETS = {
     'host': ((), ('g++',)),
     'arm': (('qemu-arm', '-L', '/usr/arm-linux-gnueabihf'), ('arm-linux-gnueabihf-g++',)),
     's390x': (('qemu-s390x', '-L', '/usr/s390x-linux-gnu'), ('s390x-linux-gnu-g++',)),
 }
-
-
-class Corpus:
-    """The types of one export: their models, headers and C++ names."""
-
-    def __init__(self, include_dir, messages):
-        self.include_dir = include_dir
-        self.messages = messages
-        from colcon_mros.mros2.cpp import CppMessageName
-        names = [CppMessageName(m) for m in messages]
-        self.headers = [n.header for n in names]
-        self.cpp_names = [n.cpp_name for n in names]
-
-
-def _typestore():
-    from rosbags.typesys import Stores, get_typestore
-    return get_typestore(Stores.ROS2_HUMBLE)
-
-
-@pytest.fixture(scope='module')
-def test_interface_corpus(tmp_path_factory):
-    include_dir = str(tmp_path_factory.mktemp('tif_export'))
-    run_genmros('mros2-export', '--prefix', '/usr', '--package', TEST_INTERFACE_PACKAGE,
-                '-o', include_dir)
-    builder = ModelBuilder(all_packages((), ['/usr']), HeapStorage())
-    names = sorted(n for k, n in all_packages((), ['/usr'])[TEST_INTERFACE_PACKAGE].interfaces
-                   if k == 'msg')
-    messages = [builder.message('%s/msg/%s' % (TEST_INTERFACE_PACKAGE, n)) for n in names]
-    services = [builder.service('%s/srv/%s' % (TEST_INTERFACE_PACKAGE, n)) for n in
-                sorted(n for k, n in builder.packages[TEST_INTERFACE_PACKAGE].interfaces
-                       if k == 'srv')]
-    messages += [half for service in services for half in (service.request, service.response)]
-    return Corpus(include_dir, messages)
-
-
-@pytest.fixture(scope='module')
-def rosbags_corpus(tmp_path_factory):
-    typestore = _typestore()
-    names = sorted(n for n in typestore.types if n.split('/')[0] in ROSBAGS_PACKAGES)
-    workspace = ros2_messages.write_packages(typestore, names,
-                                             str(tmp_path_factory.mktemp('rosbags_ws')))
-    include_dir = str(tmp_path_factory.mktemp('rosbags_export'))
-    run_genmros('mros2-export', '--workspace', workspace, '--prefix', workspace, '-o',
-                include_dir, *['--package=%s' % p for p in ROSBAGS_PACKAGES])
-    builder = ModelBuilder(all_packages([workspace], []), HeapStorage())
-    return Corpus(include_dir, [builder.message(name) for name in names])
-
-
-@pytest.fixture(scope='module')
-def fastcdr_program(tmp_path_factory):
-    return fastcdr.build(str(tmp_path_factory.mktemp('fastcdr')))
 
 
 def _echo(corpus, tmp_path, target):
@@ -158,11 +102,11 @@ def test_generated_bytes_read_back_in_fastcdr(test_interface_corpus, rosbags_cor
 def test_rosbags_bytes_come_back_and_rosbags_reads_ours(test_interface_corpus, rosbags_corpus,
                                                         tmp_path):
     from rosbags.typesys import get_types_from_msg
-    typestore = _typestore()
+    store = typestore()
     for path in sorted(os.listdir('/usr/share/test_interface_files/msg')):
         name = '%s/msg/%s' % (TEST_INTERFACE_PACKAGE, path[:-4])
         with open(os.path.join('/usr/share/test_interface_files/msg', path)) as stream:
-            typestore.register(get_types_from_msg(stream.read(), name))
+            store.register(get_types_from_msg(stream.read(), name))
     checked = 0
     for number, corpus in enumerate((test_interface_corpus, rosbags_corpus)):
         instances = [(i, v) for i, v in _instances(corpus, seed=20 + number)
@@ -171,15 +115,15 @@ def test_rosbags_bytes_come_back_and_rosbags_reads_ours(test_interface_corpus, r
         references = []
         for index, value in instances:
             message = corpus.messages[index]
-            references.append(bytes(typestore.serialize_cdr(
-                ros2_messages.rosbags_message(typestore, message, value), message.full_name)))
+            references.append(bytes(store.serialize_cdr(
+                ros2_messages.rosbags_message(store, message, value), message.full_name)))
         echoed = _echo(corpus, tmp_path, 'host').run(
             [(i, 64, reference) for (i, _), reference in zip(instances, references)])
         _check_echo(corpus, instances, references, echoed)
         for (index, _), reference, result in zip(instances, references, echoed):
             name = corpus.messages[index].full_name
-            ours = typestore.deserialize_cdr(result.raw, name)
-            assert bytes(typestore.serialize_cdr(ours, name)) == reference, name
+            ours = store.deserialize_cdr(result.raw, name)
+            assert bytes(store.serialize_cdr(ours, name)) == reference, name
             checked += 1
     assert checked > 500
 
