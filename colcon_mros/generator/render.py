@@ -9,11 +9,11 @@ import functools
 import hashlib
 import io
 import os
-import sys
 
 import em
 
 from colcon_mros import __version__
+from colcon_mros.empy_proxy import allow_new_interpreter
 from colcon_mros.generator.cpp import (SUPPORT_HEADER, SUPPORT_HEADERS, SUPPORT_VERSION,
                                        SUPPORT_VERSION_HEADER, CppMessage, CppService)
 
@@ -34,11 +34,7 @@ def _template_tokens(path):
 
 def render_template(template_dir, template_name, **context):
     """The text of the empy template template_name in template_dir."""
-    # empy 3 wraps sys.stdout in a proxy the first time it runs and refuses
-    # to run again if the host has replaced sys.stdout since (a test runner
-    # does, per test); rendering in such a process wraps the current one.
-    if not hasattr(sys.stdout, '_testProxy'):
-        em.Interpreter._wasProxyInstalled = False
+    allow_new_interpreter()
     tokens = _template_tokens(os.path.join(template_dir, template_name))
     output = io.StringIO()
     interpreter = em.Interpreter(output, globals=dict(context))
