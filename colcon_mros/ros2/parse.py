@@ -8,6 +8,8 @@ line at which the file stops parsing), so every error reads
 ``FILE:LINE: problem``.
 """
 
+import contextlib
+import io
 import os
 import re
 
@@ -59,6 +61,13 @@ def _problem(error):
     return text[0] if text else type(error).__name__
 
 
+def _quietly(function, *arguments):
+    """function(*arguments) with rosidl_adapter's own report of a bad line
+    (printed to stderr before it raises) held back: genmros says it once."""
+    with contextlib.redirect_stderr(io.StringIO()):
+        return function(*arguments)
+
+
 def _adapt(package, kind, name, text):
     """The IDL text rosidl_adapter makes of a .msg or .srv."""
     from rosidl_adapter.parser import parse_message_string, parse_service_string
@@ -80,12 +89,10 @@ def _first_bad_line(package, kind, name, text):
         prefix = '\n'.join(lines[:count])
         if kind == 'srv' and _SECTION_SEPARATOR not in [l.strip() for l in lines[:count]]:
             prefix += '\n' + _SECTION_SEPARATOR
+        from rosidl_adapter.parser import parse_message_string, parse_service_string
         try:
-            from rosidl_adapter.parser import parse_message_string, parse_service_string
-            if kind == 'msg':
-                parse_message_string(package, name, prefix)
-            else:
-                parse_service_string(package, name, prefix)
+            _quietly(parse_message_string if kind == 'msg' else parse_service_string,
+                     package, name, prefix)
         except Exception:  # rosidl_adapter raises many types for bad input
             return count
     return None
@@ -105,7 +112,7 @@ def parse_interface(interface):
         idl = text
     else:
         try:
-            idl = _adapt(interface.package, interface.kind, interface.name, text)
+            idl = _quietly(_adapt, interface.package, interface.kind, interface.name, text)
         except Exception as error:  # rosidl_adapter's errors, ValueError and more
             raise GenmrosError(_problem(error), path,
                                _first_bad_line(interface.package, interface.kind,
