@@ -21,8 +21,9 @@ ROSBAGS_PACKAGES = ('std_msgs', 'geometry_msgs', 'sensor_msgs')
 class Corpus:
     """The types of one export: their models, headers and C++ names."""
 
-    def __init__(self, include_dir, messages):
+    def __init__(self, include_dir, messages, workspace=None):
         self.include_dir = include_dir
+        self.workspace = workspace  # the ROS 2 workspace the types come from, if any
         self.messages = messages
         from colcon_mros.mros2.cpp import CppMessageName
         names = [CppMessageName(m) for m in messages]
@@ -61,7 +62,7 @@ def rosbags_corpus(tmp_path_factory):
     run_genmros('mros2-export', '--workspace', workspace, '--prefix', workspace, '-o',
                 include_dir, *['--package=%s' % p for p in ROSBAGS_PACKAGES])
     builder = ModelBuilder(all_packages([workspace], []), HeapStorage())
-    return Corpus(include_dir, [builder.message(name) for name in names])
+    return Corpus(include_dir, [builder.message(name) for name in names], workspace)
 
 
 @pytest.fixture(scope='module')
