@@ -1,5 +1,7 @@
 """What ``colcon build --mros-export DIR`` exports after the build.
 
+For the ROS 2 (ament) packages it built, DIR gets its mros2 half
+(:mod:`colcon_mros.export.mros2_export_dir`). For the catkin packages,
 DIR becomes an export dir (:mod:`colcon_mros.export.export_dir`) holding every
 message and service of the built packages and of the installed packages they
 depend on (std_msgs from Debian included): the headers ``genmros export
@@ -24,6 +26,43 @@ from colcon_mros.integrations.installed_files import CMAKE_MODULE, installed_fil
 from colcon_mros.generator.ros_environment import require_ros_python
 
 
+# colcon's package types of the two stacks (colcon-ros).
+ROS2_PACKAGE_TYPES = ('ros.ament_cmake',)
+ROS1_PACKAGE_TYPES = ('ros.catkin',)
+
+
+def _selected(args, types):
+    return [d for d in get_packages(args, recursive_categories=('run',))
+            if d.selected and d.descriptor.type in types]
+
+
+def _built_catkin_packages(args):
+    return _selected(args, ROS1_PACKAGE_TYPES)
+
+
+def _built_ros2_interface_packages(args, workspace):
+    from colcon_mros.ros2.interfaces import workspace_packages
+    with_interfaces = workspace_packages(workspace)
+    return sorted(d.descriptor.name for d in _selected(args, ROS2_PACKAGE_TYPES)
+                  if d.descriptor.name in with_interfaces)
+
+
+def _export_ros2(args, workspace, names, export_dir):
+    """The mros2 half (:mod:`colcon_mros.export.mros2_export_dir`): the built
+    ROS 2 packages' interfaces and every type they contain, from the
+    sourced ROS 2 environment and this build's install base."""
+    from colcon_mros.export.mros2_export_dir import export_ros2_packages
+    from colcon_mros.ros2.environment import require_rosidl
+    from colcon_mros.ros2.interfaces import ament_prefixes
+    require_rosidl()
+    install_base = os.path.abspath(args.install_base)
+    prefixes = [install_base] + [os.path.join(install_base, name) for name in names
+                                 if os.path.isdir(os.path.join(install_base, name))]
+    result = export_ros2_packages(export_dir, workspace, names, prefixes + ament_prefixes())
+    print('genmros: mros2 headers of %d message types and %d services in %s'
+          % (len(result.messages), len(result.services), os.path.join(export_dir, 'mros2')))
+
+
 def export_built_packages(args, export_dir):
     """Export the packages colcon built (as selected by args) to export_dir.
 
@@ -35,6 +74,11 @@ def export_built_packages(args, export_dir):
         raise GenmrosError('--mros-export needs the packages under one base path, not %s'
                            % ' '.join(args.base_paths), export_dir)
     workspace = os.path.abspath(args.base_paths[0])
+    ros2_names = _built_ros2_interface_packages(args, workspace)
+    if ros2_names:
+        _export_ros2(args, workspace, ros2_names, export_dir)
+        if not _built_catkin_packages(args):
+            return
     require_ros_python()
     from colcon_mros.export.firmware_export import ExportRequest, export  # needs genmsg
     from colcon_mros.generator.render import Renderer  # needs empy

@@ -92,8 +92,9 @@ def export_firmware(output_dir, workspaces=(), prefixes=None, package_names=(), 
         files.update(render.templates_header(publish_types, subscribe_types))
     changed, removed = write_tree(
         output_dir, files, drop=lambda relative: is_generated(os.path.join(output_dir, relative)))
-    return Mros2Export(builder.closure(messages + publish_types + subscribe_types), services,
-                       changed, removed)
+    contained = builder.closure(messages + publish_types + subscribe_types +
+                                [half for service in services for half in service.dependencies])
+    return Mros2Export([m for m in contained if m.kind == 'msg'], services, changed, removed)
 
 
 def generate_package(package_dir, output_dir, prefixes=None):

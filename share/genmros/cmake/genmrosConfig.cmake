@@ -16,4 +16,5 @@ set(genmros_LIBRARIES "")
 
 # mros_generate.cmake first: it finds GENMROS_BIN, which the generator runs.
 include("${CMAKE_CURRENT_LIST_DIR}/mros_generate.cmake")
+include("${CMAKE_CURRENT_LIST_DIR}/mros2_generate.cmake")
 include("${CMAKE_CURRENT_LIST_DIR}/genmros-extras.cmake")
