@@ -1,5 +1,8 @@
 """The package's layers: every module imports only its own layer and the
-layers below it, lazy imports inside functions included. The mROS v1
+layers below it, lazy imports inside functions included. The mros2 back
+end sits on the ROS 2 front end (ros2), both on the shared core in
+generator (output, names, storage, templates), which is also ROS 1's front
+end; mros_v1 and mros2 never import each other. The mROS v1
 library's subpackage has two: what it is (settings, rules, fit check, its
 apps, its aggregates), which the export uses, and what runs it (the fit
 flow, its PC target, the fit report), which uses the export."""
@@ -13,8 +16,10 @@ PACKAGE = os.path.join(REPO, 'colcon_mros')
 # Top first; a module's layer is the longest of these its name below
 # colcon_mros starts with.
 LAYERS = ['cli', 'mros_v1.report', 'mros_v1.pc_target', 'mros_v1.patches',
-          'mros_v1.firmware_fit', 'integrations', 'export', 'mros_v1', 'generator', '']
-TOP_MODULES = {'cli': 'cli', '__main__': 'cli', 'errors': '', '__init__': '', '__version__': ''}
+          'mros_v1.firmware_fit', 'integrations', 'export', 'mros_v1', 'mros2', 'ros2', 'generator',
+          '']
+TOP_MODULES = {'cli': 'cli', '__main__': 'cli', 'errors': '', '__init__': '', '__version__': '',
+               'empy_proxy': ''}
 
 
 def _layer(dotted):
@@ -58,6 +63,18 @@ def test_every_import_goes_down_the_layers():
                     upward.append('%s imports colcon_mros.%s' % (module, imported))
     assert checked > 80
     assert upward == []
+
+
+def test_the_two_mros_lines_do_not_import_each_other():
+    crossing = []
+    for line, other in (('mros_v1', 'mros2'), ('mros2', 'mros_v1')):
+        for directory, _, files in os.walk(os.path.join(PACKAGE, line)):
+            for name in sorted(files):
+                if name.endswith('.py'):
+                    path = os.path.join(directory, name)
+                    crossing += [(path, i) for i in _imports(path)
+                                 if (i + '.').startswith(other + '.')]
+    assert crossing == []
 
 
 def test_the_check_sees_an_upward_import(tmp_path):
