@@ -1,4 +1,8 @@
 """What the tests, the benchmarks and the main job (evaluation/) share, and
-what is not installed: a ROS graph on this machine (rosmaster, ROS nodes,
-an app of the PC target as a board) and a raw TCPROS peer. Each of them
-imports this package from the repository; none imports the others."""
+what is not installed. For mROS v1: a ROS graph on this machine (rosmaster,
+ROS nodes, an app of the PC target as a board) and a raw TCPROS peer. For
+mros2: Fast-CDR as a reference serializer (fastcdr), a real Fast DDS
+participant (dds_peer), random ROS 2 instances and rosbags' definitions
+(ros2_messages), the echo program of generated headers (mros2_harness) and
+a stand-in of mros2's runtime calls (mros2_runtime/). Each of them imports
+this package from the repository; none imports the others."""

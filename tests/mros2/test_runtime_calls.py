@@ -4,7 +4,7 @@ for the host and the boards' CPUs; on the host the stand-in runtime's
 publish sends what Fast-CDR writes, header and padding included, through
 its 100-byte buffer and its 64-byte fragments alike.
 
-The stand-in (tests/fixtures/mros2_runtime) declares what mros2.h declares
+The stand-in (testing/mros2_runtime) declares what mros2.h declares
 and defines the four templates as mros2.cpp does, with its buffers; the
 network is left out.
 """
@@ -17,7 +17,7 @@ import pytest
 from conftest import REPO, run_genmros
 from testing import fastcdr
 
-RUNTIME = os.path.join(REPO, 'tests', 'fixtures', 'mros2_runtime')
+RUNTIME = os.path.join(REPO, 'testing', 'mros2_runtime')
 FLAGS = ['-std=c++14', '-Wall', '-Wextra', '-Werror']
 TARGETS = {
     'host': ['g++'],
