@@ -59,7 +59,9 @@ def service_header(service):
 def templates_header(publish, subscribe):
     """mros2's templates.hpp: the explicit instantiations of its publish and
     subscribe calls for the message types a firmware uses."""
+    wire_types = {m.full_name: CppMessageName(m) for m in publish + subscribe}
     return {TEMPLATES_HEADER: _render(
-        'templates.hpp.em', headers=sorted({CppMessageName(m).header for m in publish + subscribe}),
+        'templates.hpp.em', headers=sorted({name.header for name in wire_types.values()}),
+        wire_types=[wire_types[name] for name in sorted(wire_types)],
         publish=[CppMessageName(m) for m in publish],
         subscribe=[CppMessageName(m) for m in subscribe])}

@@ -4,6 +4,13 @@
 @[for header in headers]@
 #include "@(header)"
 @[end for]@
+
+// embeddedRTPS keeps a type name in rtps::Config::MAX_TYPENAME_LENGTH bytes,
+// its NUL included (rtps/config.h; mros2.cpp includes it before this file).
+@[for msg in wire_types]@
+static_assert(sizeof("@(msg.dds_type_name)") <= rtps::Config::MAX_TYPENAME_LENGTH,
+              "@(msg.dds_type_name) needs rtps::Config::MAX_TYPENAME_LENGTH >= @(len(msg.dds_type_name) + 1) (rtps/config.h)");
+@[end for]@
 @[for msg in publish]@
 
 template mros2::Publisher mros2::Node::create_publisher<@(msg.cpp_name)>(std::string topic_name, int qos);
