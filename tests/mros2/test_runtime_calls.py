@@ -98,20 +98,19 @@ def test_the_runtime_calls_compile_warning_free(export, tmp_path, target):
 def test_a_type_name_too_long_for_embedded_rtps_stops_the_build(export, tmp_path):
     """mros2-posix's rtps/config.h keeps type names in 40 bytes, NUL
     included; every listed name is longer and is named with what it needs."""
-    command = ['g++'] + FLAGS + ['-DSTAND_IN_MAX_TYPENAME_LENGTH=40', '-I', export, '-I', RUNTIME,
-                                 '-c', os.path.join(RUNTIME, 'mros2_runtime_check.cpp'),
-                                 '-o', str(tmp_path / 'check.o')]
-    result = subprocess.run(command, capture_output=True, text=True)
+    def compile_with(length):
+        return subprocess.run(['g++'] + FLAGS + [
+            '-DSTAND_IN_MAX_TYPENAME_LENGTH=%d' % length, '-I', export, '-I', RUNTIME, '-c',
+            os.path.join(RUNTIME, 'mros2_runtime_check.cpp'), '-o', str(tmp_path / 'check.o')],
+            capture_output=True, text=True)
+    dds_names = ['%s::msg::dds_::%s_' % (n.split('/')[0], n.split('/')[2])
+                 for n in PUBLISH + SUBSCRIBE]
+    result = compile_with(40)
     assert result.returncode != 0
-    for full_name in PUBLISH + SUBSCRIBE:
-        package, _, name = full_name.split('/')
-        dds_name = '%s::msg::dds_::%s_' % (package, name)
+    for dds_name in dds_names:
         assert '%s needs rtps::Config::MAX_TYPENAME_LENGTH >= %d (rtps/config.h)' % (
             dds_name, len(dds_name) + 1) in result.stderr
-    command[4] = '-DSTAND_IN_MAX_TYPENAME_LENGTH=%d' % max(
-        len('%s::msg::dds_::%s_' % (n.split('/')[0], n.split('/')[2])) + 1
-        for n in PUBLISH + SUBSCRIBE)
-    assert subprocess.run(command, capture_output=True, text=True).returncode == 0
+    assert compile_with(max(len(name) for name in dds_names) + 1).returncode == 0
 
 
 def test_the_runtime_sends_what_fastcdr_writes(export, tmp_path):
