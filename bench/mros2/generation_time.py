@@ -161,7 +161,7 @@ def main():
     print('\nDoes the header compile (g++ -std=c++14 -fsyntax-only)? Alone, and after mros2.h '
           '(the runtime stand-in\'s), as an application includes it')
     print('| type | mros2\'s generator: alone | after mros2.h | genmros: alone | after mros2.h '
-          '| first error |')
+          '| first error (alone) |')
     print('|---|---|---|---|---|---|')
     for row in compiled:
         errors = '; '.join(e for e in (row[3], row[6]) if e)
