@@ -56,9 +56,21 @@ def _declaration_lines(text, is_idl):
     return lines
 
 
+# mros2's own generator wants nested types as pkg/msg/Type; rosidl takes pkg/Type.
+_MSG_PATH_FORM = re.compile(r'^([A-Za-z]\w*)/msg/([A-Za-z]\w*)$')
+
+
 def _problem(error):
     text = str(error).strip().splitlines()
-    return text[0] if text else type(error).__name__
+    text = text[0] if text else ''
+    match = _MSG_PATH_FORM.match(text)
+    if match:
+        return ("'%s' is no type name ROS 2 takes: write '%s/%s' (mros2's own generator wants "
+                'the other form)' % (text, match.group(1), match.group(2)))
+    if ' ' not in text:
+        # rosidl_adapter says little more than the offending word.
+        return '%s: %s' % (type(error).__name__, text)
+    return text
 
 
 def _quietly(function, *arguments):

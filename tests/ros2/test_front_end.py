@@ -67,6 +67,8 @@ def test_what_ros2_accepts_is_read(tmp_path):
     ('int32 a\nint32 a\n', 2, 'duplicate names: a'),
     ('int32[<=x] a\n', 1, ''),
     ('string<=-1 s\n', 1, ''),
+    ('float64 a\ngeometry_msgs/msg/Vector3 v\n', 2,
+     "'geometry_msgs/msg/Vector3' is no type name ROS 2 takes: write 'geometry_msgs/Vector3'"),
 ])
 def test_a_bad_line_is_named(tmp_path, text, line, problem):
     path = _package(tmp_path, 'demo_msgs', {'msg/Bad.msg': text})

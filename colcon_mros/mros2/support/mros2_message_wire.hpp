@@ -111,14 +111,19 @@ template <class Sink> class Writer {
     position_ += padding;
   }
   template <class Number> void number(Number value) {
+    align(sizeof(Number));
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    // The host's bytes are the wire's: one copy the compiler turns into a store.
+    sink_.put(position_, reinterpret_cast<const uint8_t*>(&value), sizeof(Number));
+#else
     typedef typename Bits<sizeof(Number)>::type Unsigned;
     Unsigned bits;
     memcpy(&bits, &value, sizeof bits);
     uint8_t bytes[sizeof(Number)];
     little_endian(bits, bytes);
-    align(sizeof(Number));
     sink_.put(position_, bytes, sizeof bytes);
-    position_ += sizeof bytes;
+#endif
+    position_ += sizeof(Number);
   }
   // count numbers at once: one copy where the host is little-endian.
   template <class Number> void numbers(const Number* values, uint32_t count) {
@@ -155,10 +160,14 @@ class Reader {
     return skip(padding);
   }
   template <class Number> bool number(Number& value) {
-    typedef typename Bits<sizeof(Number)>::type Unsigned;
     if (!align(sizeof(Number)) || !has(sizeof(Number))) return false;
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    memcpy(&value, data_ + position_, sizeof value);
+#else
+    typedef typename Bits<sizeof(Number)>::type Unsigned;
     Unsigned bits = from_little_endian<Unsigned>(data_ + position_);
     memcpy(&value, &bits, sizeof value);
+#endif
     position_ += sizeof(Number);
     return true;
   }
