@@ -22,15 +22,19 @@ REQUIRED_MODULES = (
 )
 
 
+def importable(module):
+    """Whether this interpreter finds module, without importing it."""
+    try:
+        return importlib.util.find_spec(module) is not None
+    except (ImportError, ValueError):
+        return False
+
+
 def require_ros_python():
     """Raise a one-line GenmrosError if this interpreter cannot import genmsg,
     empy or rospkg. Finding them is enough (importing rospkg would cost a
     generator run, which never needs it, a tenth of its start-up)."""
     for module, what in REQUIRED_MODULES:
-        try:
-            found = importlib.util.find_spec(module) is not None
-        except (ImportError, ValueError):
-            found = False
-        if not found:
+        if not importable(module):
             raise GenmrosError('%s cannot import %s; install or source %s, or run genmros with '
                                'the Python that has it' % (sys.executable, module, what))

@@ -6,10 +6,10 @@ sourced ROS 2 setup (Humble's /opt/ros/humble/setup.bash puts them on
 PYTHONPATH).
 """
 
-import importlib.util
 import sys
 
 from colcon_mros.errors import GenmrosError
+from colcon_mros.generator.ros_environment import importable
 
 REQUIRED_MODULES = ('rosidl_adapter', 'rosidl_parser', 'rosidl_pycommon', 'em')
 
@@ -17,11 +17,7 @@ REQUIRED_MODULES = ('rosidl_adapter', 'rosidl_parser', 'rosidl_pycommon', 'em')
 def require_rosidl():
     """Raise a one-line GenmrosError if this interpreter cannot import rosidl or empy."""
     for module in REQUIRED_MODULES:
-        try:
-            found = importlib.util.find_spec(module) is not None
-        except (ImportError, ValueError):
-            found = False
-        if not found:
+        if not importable(module):
             raise GenmrosError('%s cannot import %s; install rosidl (Debian: apt-get install '
                                'python3-rosidl; ROS 2 Humble: source /opt/ros/humble/setup.bash), '
                                'or run genmros with the Python that has it'

@@ -215,6 +215,21 @@ class Reader {
   bool ok_;
 };
 
+// The element types copied at once in arrays and sequences: every number but
+// bool, whose received byte may hold another value than 0 or 1.
+template <class T> struct IsNumber { static const bool value = false; };
+template <> struct IsNumber<uint8_t> { static const bool value = true; };
+template <> struct IsNumber<int8_t> { static const bool value = true; };
+template <> struct IsNumber<uint16_t> { static const bool value = true; };
+template <> struct IsNumber<int16_t> { static const bool value = true; };
+template <> struct IsNumber<uint32_t> { static const bool value = true; };
+template <> struct IsNumber<int32_t> { static const bool value = true; };
+template <> struct IsNumber<uint64_t> { static const bool value = true; };
+template <> struct IsNumber<int64_t> { static const bool value = true; };
+template <> struct IsNumber<float> { static const bool value = true; };
+template <> struct IsNumber<double> { static const bool value = true; };
+template <bool> struct NumberTag {};
+
 // write(): one overload per kind of member; the member's C++ type says how
 // it goes on the wire, so a generated writeTo is one call per member.
 template <class W> inline void write(W& writer, bool value) { writer.number(static_cast<uint8_t>(value)); }
@@ -250,25 +265,18 @@ template <class W, class Message> inline void write(W& writer, const Message& me
   message.writeTo(writer);
 }
 
-// Elements: numbers at once, anything else one by one.
-template <class W, class T> inline void write_elements(W& writer, const T* elements, size_t count) {
+// Elements: numbers at once (IsNumber), anything else one by one.
+template <class W, class T>
+inline void write_elements(W& writer, const T* elements, size_t count, NumberTag<true>) {
+  writer.numbers(elements, static_cast<uint32_t>(count));
+}
+template <class W, class T>
+inline void write_elements(W& writer, const T* elements, size_t count, NumberTag<false>) {
   for (size_t i = 0; i < count; ++i) write(writer, elements[i]);
 }
-#define MROS2_WIRE_NUMBER_ELEMENTS(Number)                                                      \
-  template <class W> inline void write_elements(W& writer, const Number* elements, size_t count) { \
-    writer.numbers(elements, static_cast<uint32_t>(count));                                     \
-  }
-MROS2_WIRE_NUMBER_ELEMENTS(uint8_t)
-MROS2_WIRE_NUMBER_ELEMENTS(int8_t)
-MROS2_WIRE_NUMBER_ELEMENTS(uint16_t)
-MROS2_WIRE_NUMBER_ELEMENTS(int16_t)
-MROS2_WIRE_NUMBER_ELEMENTS(uint32_t)
-MROS2_WIRE_NUMBER_ELEMENTS(int32_t)
-MROS2_WIRE_NUMBER_ELEMENTS(uint64_t)
-MROS2_WIRE_NUMBER_ELEMENTS(int64_t)
-MROS2_WIRE_NUMBER_ELEMENTS(float)
-MROS2_WIRE_NUMBER_ELEMENTS(double)
-#undef MROS2_WIRE_NUMBER_ELEMENTS
+template <class W, class T> inline void write_elements(W& writer, const T* elements, size_t count) {
+  write_elements(writer, elements, count, NumberTag<IsNumber<T>::value>());
+}
 
 template <class W, class T, size_t N> inline void write(W& writer, const std::array<T, N>& elements) {
   write_elements(writer, elements.data(), N);
@@ -335,26 +343,19 @@ template <class Message> inline bool read(Reader& reader, Message& message) {
   return message.readFrom(reader);
 }
 
-template <class T> inline bool read_elements(Reader& reader, T* elements, size_t count) {
+template <class T>
+inline bool read_elements(Reader& reader, T* elements, size_t count, NumberTag<true>) {
+  return reader.numbers(elements, static_cast<uint32_t>(count));
+}
+template <class T>
+inline bool read_elements(Reader& reader, T* elements, size_t count, NumberTag<false>) {
   for (size_t i = 0; i < count; ++i)
     if (!read(reader, elements[i])) return false;
   return true;
 }
-#define MROS2_WIRE_NUMBER_ELEMENTS(Number)                                            \
-  inline bool read_elements(Reader& reader, Number* elements, size_t count) {         \
-    return reader.numbers(elements, static_cast<uint32_t>(count));                    \
-  }
-MROS2_WIRE_NUMBER_ELEMENTS(uint8_t)
-MROS2_WIRE_NUMBER_ELEMENTS(int8_t)
-MROS2_WIRE_NUMBER_ELEMENTS(uint16_t)
-MROS2_WIRE_NUMBER_ELEMENTS(int16_t)
-MROS2_WIRE_NUMBER_ELEMENTS(uint32_t)
-MROS2_WIRE_NUMBER_ELEMENTS(int32_t)
-MROS2_WIRE_NUMBER_ELEMENTS(uint64_t)
-MROS2_WIRE_NUMBER_ELEMENTS(int64_t)
-MROS2_WIRE_NUMBER_ELEMENTS(float)
-MROS2_WIRE_NUMBER_ELEMENTS(double)
-#undef MROS2_WIRE_NUMBER_ELEMENTS
+template <class T> inline bool read_elements(Reader& reader, T* elements, size_t count) {
+  return read_elements(reader, elements, count, NumberTag<IsNumber<T>::value>());
+}
 
 template <class T, size_t N> inline bool read(Reader& reader, std::array<T, N>& elements) {
   return read_elements(reader, elements.data(), N);
