@@ -199,3 +199,37 @@ def test_message_rosidl_rejects_fails_the_build_with_rosidls_error(workspace):
     assert "Error processing 'int32 Bad-name' of 'mros2_test_msgs/Reading'" in result.stdout, \
         result.stdout[-6000:]
     assert "'Bad-name' is an invalid field name" in result.stdout
+
+
+def test_ament_index_discovery_finds_the_generator(workspace, tmp_path):
+    # What ROS 2 Humble's rosidl_default_generators does in its extras file
+    # (Iron and later: rosidl_core_generators): find_package() every
+    # package of the ament index's rosidl_generator_packages group, found on
+    # AMENT_PREFIX_PATH. The checkout is laid out as a prefix
+    # (share/ament_index, share/rosidl_generator_mros2), as the installed
+    # distribution is.
+    project = tmp_path / 'discover'
+    project.mkdir()
+    (project / 'CMakeLists.txt').write_text(
+        'cmake_minimum_required(VERSION 3.16)\n'
+        'project(discover NONE)\n'
+        'find_package(ament_cmake_core REQUIRED)\n'
+        'ament_index_get_resources(_generators "rosidl_generator_packages")\n'
+        'foreach(_generator ${_generators})\n'
+        '  find_package(${_generator} QUIET)\n'
+        'endforeach()\n'
+        'message(STATUS "generators: ${_generators}")\n'
+        'message(STATUS "extensions: ${AMENT_EXTENSIONS_rosidl_generate_idl_interfaces}")\n'
+        'message(STATUS "mros2 dir: ${rosidl_generator_mros2_DIR}")\n')
+    env = dict(workspace.env, AMENT_PREFIX_PATH='%s:/usr' % REPO, CMAKE_PREFIX_PATH=REPO)
+    result = subprocess.run(
+        ['cmake', '-S', str(project), '-B', str(tmp_path / 'build'),
+         '-DGENMROS_BIN=%s' % workspace.genmros],
+        env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    assert result.returncode == 0, result.stdout
+    lines = dict(line[3:].split(': ', 1) for line in result.stdout.splitlines()
+                 if line.startswith('-- ') and ': ' in line)
+    assert 'rosidl_generator_mros2' in lines['generators'].split(';')
+    assert ('rosidl_generator_mros2:rosidl_generator_mros2_generate_interfaces.cmake'
+            in lines['extensions'].split(';'))
+    assert lines['mros2 dir'] == EXTENSION_DIR
