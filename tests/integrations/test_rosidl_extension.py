@@ -1,0 +1,235 @@
+"""colcon build of ROS 2 interface packages with the rosidl_generator_mros2 extension.
+
+A fresh copy of test_ws_ros2 (mros2_base_msgs, and mros2_test_msgs, whose
+Reading contains mros2_base_msgs/Stamp) is built with colcon as a Debian 12
+user builds it: /usr/bin first on PATH, no ROS variables set. The packages
+find_package(rosidl_generator_cpp) and find_package(rosidl_generator_mros2);
+this checkout's generator is used, not an installed one:
+rosidl_generator_mros2_DIR names the checkout's share/rosidl_generator_mros2/cmake
+and GENMROS_BIN a wrapper that runs the checkout's genmros (and logs each
+run). The steps share one workspace and run in file order.
+"""
+
+import os
+import re
+import shutil
+import subprocess
+
+import pytest
+
+from colcon_mros.mros2 import render
+
+# cmake and colcon builds.
+pytestmark = pytest.mark.slow
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+TEST_WS_ROS2 = os.path.join(REPO, 'test_ws_ros2')
+EXTENSION_DIR = os.path.join(REPO, 'share', 'rosidl_generator_mros2', 'cmake')
+STRICT_CXX = ['g++', '-std=c++11', '-Wall', '-Wextra', '-Werror', '-pedantic', '-fsyntax-only']
+# Variables of a sourced ROS environment the build must not see.
+ROS_VARIABLES = ('AMENT_PREFIX_PATH', 'CMAKE_PREFIX_PATH', 'COLCON_PREFIX_PATH', 'PYTHONPATH',
+                 'ROS_PACKAGE_PATH', 'ROS_DISTRO', 'ROS_VERSION', 'MROS_EXPORT_DIR')
+
+
+class Workspace:
+    def __init__(self, root):
+        self.root = root
+        shutil.copytree(os.path.join(TEST_WS_ROS2, 'src'), os.path.join(root, 'src'))
+        self.install = os.path.join(root, 'install')
+        self.mros2_include = os.path.join(self.install, 'include', 'mros2')
+        self.genmros_log = os.path.join(root, 'genmros-runs.log')
+        self.genmros = os.path.join(root, 'genmros')
+        with open(self.genmros, 'w') as stream:
+            stream.write('#!/bin/sh\necho "$*" >> "%s"\nexec /usr/bin/python3 -m colcon_mros "$@"\n'
+                         % self.genmros_log)
+        os.chmod(self.genmros, 0o755)
+        self.env = {key: value for key, value in os.environ.items() if key not in ROS_VARIABLES}
+        self.env['PATH'] = '/usr/bin:/bin:' + os.environ.get('PATH', '')
+        self.env['PYTHONPATH'] = REPO
+
+    def source(self, package, *parts):
+        return os.path.join(self.root, 'src', package, *parts)
+
+    def colcon_build(self, check=True):
+        result = subprocess.run(
+            ['colcon', 'build', '--merge-install', '--event-handlers', 'console_direct+',
+             '--cmake-args', '-DGENMROS_BIN=%s' % self.genmros,
+             '-Drosidl_generator_mros2_DIR=%s' % EXTENSION_DIR],
+            cwd=self.root, env=self.env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+            text=True)
+        if check and result.returncode != 0:
+            pytest.fail('colcon build failed (exit %d):\n%s'
+                        % (result.returncode, result.stdout[-6000:]))
+        return result
+
+    def genmros_runs(self):
+        """The genmros command lines the builds ran so far."""
+        if not os.path.exists(self.genmros_log):
+            return []
+        with open(self.genmros_log) as stream:
+            return stream.read().splitlines()
+
+    def mros2_header(self, relative):
+        with open(os.path.join(self.mros2_include, relative)) as stream:
+            return stream.read()
+
+    def append(self, source_file, line):
+        with open(source_file, 'a') as stream:
+            stream.write(line + '\n')
+
+
+@pytest.fixture(scope='module')
+def workspace(tmp_path_factory):
+    workspace = Workspace(str(tmp_path_factory.mktemp('ros2_ws')))
+    workspace.colcon_build()
+    return workspace
+
+
+def test_build_used_the_checkouts_generator(workspace):
+    for package in ('mros2_base_msgs', 'mros2_test_msgs'):
+        with open(os.path.join(workspace.root, 'build', package, 'CMakeCache.txt')) as stream:
+            cache = stream.read()
+        # -D without a type: the cache keeps them UNINITIALIZED.
+        assert re.search(r'^rosidl_generator_mros2_DIR:\w+=%s$' % re.escape(EXTENSION_DIR),
+                         cache, re.M)
+        assert re.search(r'^GENMROS_BIN:\w+=%s$' % re.escape(workspace.genmros), cache, re.M)
+    runs = workspace.genmros_runs()
+    assert len(runs) == 2, runs
+    assert all(run.startswith('mros2-generate --package-dir ') for run in runs)
+    # mros2_test_msgs' run names the prefix mros2_base_msgs is installed in.
+    assert '--prefix %s' % workspace.install in runs[1]
+
+
+def test_mros2_headers_are_installed(workspace):
+    found = sorted(os.path.relpath(os.path.join(directory, name), workspace.mros2_include)
+                   for directory, _, names in os.walk(workspace.mros2_include) for name in names)
+    assert found == [os.path.join('mros2_base_msgs', 'msg', 'stamp.hpp'),
+                     os.path.join('mros2_test_msgs', 'msg', 'reading.hpp'),
+                     os.path.join('mros2_test_msgs', 'srv', 'query.hpp')]
+
+
+def test_message_header_declares_the_type_and_its_dds_name(workspace):
+    header = workspace.mros2_header(os.path.join('mros2_test_msgs', 'msg', 'reading.hpp'))
+    assert 'namespace mros2_test_msgs\n{\nnamespace msg\n{\n' in header
+    assert 'class Reading ' in header
+    assert '"mros2_test_msgs::msg::dds_::Reading_"' in header
+    assert '#include "mros2_base_msgs/msg/stamp.hpp"' in header
+    for member in ('mros2_base_msgs::msg::Stamp stamp;', 'mros::bounded_string<16> sensor;',
+                   'std::array<float, 3> position{};', 'std::vector<int16_t> samples;',
+                   'double scale = 1.5;', 'static constexpr uint8_t SENSOR_COUNT = 4u;'):
+        assert member in header
+    stamp = workspace.mros2_header(os.path.join('mros2_base_msgs', 'msg', 'stamp.hpp'))
+    assert '"mros2_base_msgs::msg::dds_::Stamp_"' in stamp
+
+
+def test_service_header_declares_both_halves(workspace):
+    header = workspace.mros2_header(os.path.join('mros2_test_msgs', 'srv', 'query.hpp'))
+    assert 'class Query_Request ' in header and 'class Query_Response ' in header
+    assert '"mros2_test_msgs::srv::dds_::Query_Request_"' in header
+    assert '"mros2_test_msgs::srv::dds_::Query_Response_"' in header
+    assert '#include "mros2_test_msgs/msg/reading.hpp"' in header
+
+
+def test_rosidls_own_cpp_headers_are_installed_too(workspace):
+    for relative in (('mros2_test_msgs', 'mros2_test_msgs', 'msg', 'reading.hpp'),
+                     ('mros2_test_msgs', 'mros2_test_msgs', 'srv', 'query.hpp'),
+                     ('mros2_base_msgs', 'mros2_base_msgs', 'msg', 'stamp.hpp')):
+        assert os.path.isfile(os.path.join(workspace.install, 'include', *relative)), relative
+
+
+def test_installed_headers_compile_with_the_support_headers(workspace, tmp_path):
+    support = str(tmp_path / 'support')
+    for name, text in render.support_headers().items():
+        os.makedirs(os.path.dirname(os.path.join(support, name)), exist_ok=True)
+        with open(os.path.join(support, name), 'w') as stream:
+            stream.write(text)
+    source = str(tmp_path / 'use.cpp')
+    with open(source, 'w') as stream:
+        stream.write('#include "mros2_test_msgs/msg/reading.hpp"\n'
+                     '#include "mros2_test_msgs/srv/query.hpp"\n'
+                     'int main()\n{\n  mros2_test_msgs::msg::Reading reading;\n'
+                     '  reading.stamp.nanosec = 1u;\n'
+                     '  return static_cast<int>(reading.samples.size());\n}\n')
+    result = subprocess.run(STRICT_CXX + ['-I', workspace.mros2_include, '-I', support, source],
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    assert result.returncode == 0, result.stdout
+
+
+def test_unchanged_rebuild_runs_no_genmros(workspace):
+    before = len(workspace.genmros_runs())
+    workspace.colcon_build()
+    assert len(workspace.genmros_runs()) == before
+
+
+def test_edited_message_is_regenerated(workspace):
+    before = len(workspace.genmros_runs())
+    workspace.append(workspace.source('mros2_test_msgs', 'msg', 'Reading.msg'),
+                     'uint32 count  # added after the first build')
+    workspace.colcon_build()
+    header = workspace.mros2_header(os.path.join('mros2_test_msgs', 'msg', 'reading.hpp'))
+    assert 'uint32_t count = 0u;' in header
+    assert 'mros2_wire::write(writer, count);' in header
+    assert len(workspace.genmros_runs()) == before + 1, 'only mros2_test_msgs is regenerated'
+
+
+def test_message_genmros_rejects_fails_the_build_naming_the_file(workspace):
+    # rosidl takes the bound (its C++ member is a std::string); an mros2
+    # message image cannot be that long. (A fixed array as long, e.g.
+    # float64[600000000], takes genmros minutes: it sizes arrays element
+    # by element.)
+    stamp = workspace.source('mros2_base_msgs', 'msg', 'Stamp.msg')
+    with open(stamp) as stream:
+        original = stream.read()
+    workspace.append(stamp, 'string<=5000000000 label')
+    result = workspace.colcon_build(check=False)
+    with open(stamp, 'w') as stream:
+        stream.write(original)
+    assert result.returncode != 0
+    errors = [line for line in result.stdout.splitlines() if line.startswith('genmros: error:')]
+    assert len(errors) == 1, result.stdout[-6000:]
+    assert errors[0].startswith('genmros: error: %s: mros2_base_msgs/msg/Stamp can take ' % stamp)
+
+
+def test_message_rosidl_rejects_fails_the_build_with_rosidls_error(workspace):
+    # rosidl_adapter reads the .msg when CMake configures, before any
+    # generator runs: the error is rosidl's, naming the type and the line.
+    workspace.append(workspace.source('mros2_test_msgs', 'msg', 'Reading.msg'), 'int32 Bad-name')
+    result = workspace.colcon_build(check=False)
+    assert result.returncode != 0
+    assert "Error processing 'int32 Bad-name' of 'mros2_test_msgs/Reading'" in result.stdout, \
+        result.stdout[-6000:]
+    assert "'Bad-name' is an invalid field name" in result.stdout
+
+
+def test_ament_index_discovery_finds_the_generator(workspace, tmp_path):
+    # What ROS 2 Humble's rosidl_default_generators does in its extras file
+    # (Iron and later: rosidl_core_generators): find_package() every
+    # package of the ament index's rosidl_generator_packages group, found on
+    # AMENT_PREFIX_PATH. The checkout is laid out as a prefix
+    # (share/ament_index, share/rosidl_generator_mros2), as the installed
+    # distribution is.
+    project = tmp_path / 'discover'
+    project.mkdir()
+    (project / 'CMakeLists.txt').write_text(
+        'cmake_minimum_required(VERSION 3.16)\n'
+        'project(discover NONE)\n'
+        'find_package(ament_cmake_core REQUIRED)\n'
+        'ament_index_get_resources(_generators "rosidl_generator_packages")\n'
+        'foreach(_generator ${_generators})\n'
+        '  find_package(${_generator} QUIET)\n'
+        'endforeach()\n'
+        'message(STATUS "generators: ${_generators}")\n'
+        'message(STATUS "extensions: ${AMENT_EXTENSIONS_rosidl_generate_idl_interfaces}")\n'
+        'message(STATUS "mros2 dir: ${rosidl_generator_mros2_DIR}")\n')
+    env = dict(workspace.env, AMENT_PREFIX_PATH='%s:/usr' % REPO, CMAKE_PREFIX_PATH=REPO)
+    result = subprocess.run(
+        ['cmake', '-S', str(project), '-B', str(tmp_path / 'build'),
+         '-DGENMROS_BIN=%s' % workspace.genmros],
+        env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    assert result.returncode == 0, result.stdout
+    lines = dict(line[3:].split(': ', 1) for line in result.stdout.splitlines()
+                 if line.startswith('-- ') and ': ' in line)
+    assert 'rosidl_generator_mros2' in lines['generators'].split(';')
+    assert ('rosidl_generator_mros2:rosidl_generator_mros2_generate_interfaces.cmake'
+            in lines['extensions'].split(';'))
+    assert lines['mros2 dir'] == EXTENSION_DIR
