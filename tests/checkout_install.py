@@ -43,10 +43,13 @@ def checkout_install():
     target = os.path.join(root, 'install')
     subprocess.run(['/usr/bin/python3', '-m', 'pip', 'install', '--prefix', target] + pip_flags()
                    + [source], check=True, capture_output=True)
-    # Debian's pip puts a --prefix install under <prefix>/local.
+    # Debian's pip puts a --prefix install under <prefix>/local. The first
+    # share/genmros found is the prefix's (os.walk goes top-down); the catkin
+    # prefix inside it has one too.
+    prefix = None
     for directory, names, _ in os.walk(target):
         if 'colcon_mros' in names:
             site_packages = directory
-        if os.path.basename(directory) == 'share' and 'genmros' in names:
+        if os.path.basename(directory) == 'share' and 'genmros' in names and prefix is None:
             prefix = os.path.dirname(directory)
     return CheckoutInstall(prefix, site_packages)

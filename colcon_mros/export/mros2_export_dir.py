@@ -10,6 +10,7 @@ writes for the ROS 2 packages it built, and what a firmware's
     DIR/mros2/share/<pkg>/msg|srv/...        ROS 2 prefix holds them, so that
     DIR/mros2/share/ament_index/...          genmros mros2-export --prefix
                                              DIR/mros2 reads them again
+    DIR/mros2/COLCON_IGNORE                  so no tool takes share/<pkg> for packages
 
 The include dir is switched in one step
 (:func:`colcon_mros.generator.output.write_tree`); the definitions are
@@ -18,6 +19,7 @@ written with :func:`colcon_mros.generator.output.write_files`.
 
 import os
 
+from colcon_mros.export.export_dir import IGNORE_MARKER
 from colcon_mros.generator.output import write_files
 from colcon_mros.mros2.export import export_firmware
 from colcon_mros.ros2.interfaces import AMENT_PACKAGE_INDEX
@@ -50,5 +52,6 @@ def export_ros2_packages(export_dir, workspace, package_names, prefixes):
         if os.path.isfile(manifest):
             definitions[os.path.join(SHARE_DIR, package, 'package.xml')] = _read(manifest)
         definitions[os.path.join(SHARE_DIR, *AMENT_PACKAGE_INDEX, package)] = ''
+    definitions[IGNORE_MARKER] = ''
     write_files(root, definitions)
     return result

@@ -75,9 +75,10 @@ def export_built_packages(args, export_dir):
                            % ' '.join(args.base_paths), export_dir)
     workspace = os.path.abspath(args.base_paths[0])
     ros2_names = _built_ros2_interface_packages(args, workspace)
+    catkin_built = bool(_built_catkin_packages(args))
     if ros2_names:
         _export_ros2(args, workspace, ros2_names, export_dir)
-        if not _built_catkin_packages(args):
+        if not catkin_built:
             return
     require_ros_python()
     from colcon_mros.export.firmware_export import ExportRequest, export  # needs genmsg

@@ -99,8 +99,9 @@ def export_firmware(output_dir, workspaces=(), prefixes=None, package_names=(), 
 
 def generate_package(package_dir, output_dir, prefixes=None):
     """Write the headers of the interfaces of the package in package_dir
-    under output_dir (``<output_dir>/<pkg>/msg/...``); the types they
-    contain from other packages (found in prefixes) are theirs to generate.
+    under output_dir (``<output_dir>/<pkg>/msg/...``) and the support
+    headers; the types they contain from other packages (found in prefixes)
+    are theirs to generate.
     Returns the paths it changed."""
     package = source_package(package_dir)
     package_name = package.name
@@ -110,4 +111,7 @@ def generate_package(package_dir, output_dir, prefixes=None):
     messages, services = _select(builder, [package_name], [])
     files = {path: text for path, text in render_types(builder, messages, services).items()
              if path.startswith(package_name + '/')}
+    # Every package's install holds the support headers too, so that its
+    # include/mros2 is a whole include root (same text in every package).
+    files.update(render.support_headers())
     return write_files(output_dir, files)

@@ -103,9 +103,10 @@ def test_build_used_the_checkouts_generator(workspace):
 def test_mros2_headers_are_installed(workspace):
     found = sorted(os.path.relpath(os.path.join(directory, name), workspace.mros2_include)
                    for directory, _, names in os.walk(workspace.mros2_include) for name in names)
-    assert found == [os.path.join('mros2_base_msgs', 'msg', 'stamp.hpp'),
-                     os.path.join('mros2_test_msgs', 'msg', 'reading.hpp'),
-                     os.path.join('mros2_test_msgs', 'srv', 'query.hpp')]
+    assert found == sorted([os.path.join('mros2_base_msgs', 'msg', 'stamp.hpp'),
+                            os.path.join('mros2_test_msgs', 'msg', 'reading.hpp'),
+                            os.path.join('mros2_test_msgs', 'srv', 'query.hpp'),
+                            'mros2_message_wire.hpp', 'mros_message_containers.h'])
 
 
 def test_message_header_declares_the_type_and_its_dds_name(workspace):

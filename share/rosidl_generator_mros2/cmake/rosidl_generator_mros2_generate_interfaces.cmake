@@ -87,5 +87,5 @@ if(NOT rosidl_generate_interfaces_SKIP_INSTALL)
   install(
     DIRECTORY "${_mros2_output_dir}/"
     DESTINATION "include/mros2"
-    FILES_MATCHING PATTERN "*.hpp")
+    FILES_MATCHING PATTERN "*.hpp" PATTERN "*.h")
 endif()

@@ -1,0 +1,133 @@
+"""The ROS 2 main job: a colcon build of ROS 2 interface packages gives an
+mros2 firmware every type it uses, in the same build.
+
+A fresh copy of test_ws_ros2 (mros2_base_msgs, and mros2_test_msgs, whose
+Reading contains mros2_base_msgs/Stamp) is built with ``colcon build
+--mros-export DIR`` as a Debian user builds it, with this checkout installed
+as a user installs it (the rosidl generator, the colcon extension and the
+CMake package from that install). Then a firmware's CMake project imports
+DIR/mros2 with mros2_import_messages(), builds against the stand-in of
+mros2's runtime calls (testing/mros2_runtime) and publishes a Reading whose
+bytes Fast-CDR reads. A field added to Reading.msg reaches the export and
+the firmware with the next builds. The steps share one workspace and run in
+file order.
+"""
+
+import os
+import shutil
+
+import pytest
+
+from conftest import REPO
+from fixtures.build_integration.tools import run
+from testing import fastcdr
+
+pytestmark = pytest.mark.slow
+
+TEST_WS_ROS2 = os.path.join(REPO, 'test_ws_ros2')
+RUNTIME = os.path.join(REPO, 'testing', 'mros2_runtime')
+
+FIRMWARE_CMAKE = '''cmake_minimum_required(VERSION 3.16)
+project(firmware CXX)
+set(CMAKE_CXX_STANDARD 14)
+find_package(genmros REQUIRED)
+add_executable(firmware main.cpp {runtime}/mros2_runtime_check.cpp)
+target_include_directories(firmware PRIVATE {runtime})
+target_compile_options(firmware PRIVATE -Wall -Wextra -Werror)
+mros2_import_messages(TARGET firmware EXPORT_DIR {export}
+                      PUBLISH mros2_test_msgs/msg/Reading SUBSCRIBE mros2_base_msgs/msg/Stamp
+                      TYPES mros2_test_msgs/srv/Query)
+'''
+FIRMWARE_MAIN = r'''#include <stdio.h>
+#include "mros2.h"
+#include "mros2_test_msgs/msg/reading.hpp"
+#include "mros2_test_msgs/srv/query.hpp"
+
+int main() {
+  mros2::Node node;
+  mros2::Publisher pub = node.create_publisher<mros2_test_msgs::msg::Reading>("reading", 10);
+  mros2_test_msgs::msg::Reading reading;
+  reading.stamp.sec = 7;
+  reading.sensor = "imu";
+  reading.samples.push_back(-3);
+  NEW_FIELD_LINE
+  pub.publish(reading);
+  printf("%s\n", g_type_name);
+  for (uint32_t i = 0; i < g_sent_size; ++i) printf("%02x", g_sent[i]);
+  printf("\n");
+  mros2_test_msgs::srv::Query::Request request;
+  (void)request;
+  return 0;
+}
+'''
+
+
+class Ros2Workspace:
+    def __init__(self, root):
+        # The firmware beside the workspace: colcon would build it as a package.
+        self.root = os.path.join(root, 'ws')
+        shutil.copytree(os.path.join(TEST_WS_ROS2, 'src'), os.path.join(self.root, 'src'))
+        self.export_dir = os.path.join(self.root, 'mros_export')
+        self.firmware = os.path.join(root, 'firmware')
+        os.makedirs(self.firmware)
+        with open(os.path.join(self.firmware, 'CMakeLists.txt'), 'w') as stream:
+            stream.write(FIRMWARE_CMAKE.format(runtime=RUNTIME, export=self.export_dir))
+        self.write_main('')
+
+    def write_main(self, new_field_line):
+        with open(os.path.join(self.firmware, 'main.cpp'), 'w') as stream:
+            stream.write(FIRMWARE_MAIN.replace('NEW_FIELD_LINE', new_field_line))
+
+    def colcon_build(self):
+        return run(['colcon', 'build', '--event-handlers', 'console_direct+', '--mros-export',
+                    self.export_dir], self.root)
+
+    def build_firmware(self):
+        build = os.path.join(self.firmware, 'build')
+        if not os.path.isdir(build):
+            run(['cmake', '-S', self.firmware, '-B', build], self.root)
+        run(['cmake', '--build', build], self.root)
+        return run([os.path.join(build, 'firmware')], self.root).stdout.split()
+
+
+@pytest.fixture(scope='module')
+def workspace(tmp_path_factory):
+    workspace = Ros2Workspace(str(tmp_path_factory.mktemp('ros2_main_job')))
+    workspace.colcon_build()
+    return workspace
+
+
+def test_the_export_holds_the_built_types_and_their_definitions(workspace):
+    mros2 = os.path.join(workspace.export_dir, 'mros2')
+    for relative in ('include/mros2_test_msgs/msg/reading.hpp',
+                     'include/mros2_test_msgs/srv/query.hpp',
+                     'include/mros2_base_msgs/msg/stamp.hpp',
+                     'include/mros2_message_wire.hpp', 'include/mros_message_containers.h',
+                     'share/mros2_test_msgs/msg/Reading.msg', 'share/mros2_test_msgs/srv/Query.srv',
+                     'share/mros2_base_msgs/msg/Stamp.msg', 'share/mros2_test_msgs/package.xml',
+                     'share/ament_index/resource_index/packages/mros2_base_msgs'):
+        assert os.path.isfile(os.path.join(mros2, relative)), relative
+
+
+def test_the_firmware_publishes_what_fastcdr_writes(workspace, tmp_path):
+    type_name, sent = workspace.build_firmware()
+    assert type_name == 'mros2_test_msgs::msg::dds_::Reading_'
+    program = fastcdr.build(str(tmp_path / 'fastcdr'))
+    # stamp (sec, nanosec), sensor, position[3], samples[], scale (default 1.5)
+    expected = fastcdr.encode(program, [
+        ('int32', 7), ('uint32', 0), ('string', b'imu'), ('float32', 0.0), ('float32', 0.0),
+        ('float32', 0.0), ('count', 1), ('int16', -3), ('float64', 1.5)])
+    assert bytes.fromhex(sent) == expected + bytes(-len(expected) % 4)
+
+
+def test_a_field_added_reaches_the_export_and_the_firmware(workspace):
+    with open(os.path.join(workspace.root, 'src', 'mros2_test_msgs', 'msg', 'Reading.msg'),
+              'a') as stream:
+        stream.write('uint32 sequence_number\n')
+    workspace.colcon_build()
+    with open(os.path.join(workspace.export_dir, 'mros2', 'include', 'mros2_test_msgs', 'msg',
+                           'reading.hpp')) as stream:
+        assert 'uint32_t sequence_number = 0u;' in stream.read()
+    workspace.write_main('reading.sequence_number = 0x01020304u;')
+    _, sent = workspace.build_firmware()
+    assert sent.endswith('04030201')
