@@ -144,3 +144,25 @@ def test_the_runtime_sends_what_fastcdr_writes(export, tmp_path):
     nested_bytes = fastcdr.encode(program, nested)
     assert bytes.fromhex(lines[4]) == nested_bytes + bytes(-len(nested_bytes) % 4)
     assert lines[5] == '-123456'
+
+
+def test_a_bad_count_through_the_unsized_receive_grows_nothing(export, tmp_path):
+    """mros2's callback_handler calls copyFromBuf without a size; a sample
+    whose sequence count says 2**31 elements must not make the vector try to
+    hold them (it would take 16 GB and stop the board)."""
+    source = tmp_path / 'bad_count.cpp'
+    source.write_text(
+        '#include <stdio.h>\n#include "test_interface_files/msg/unbounded_sequences.hpp"\n'
+        'int main() {\n'
+        '  static uint8_t sample[1 << 17];\n'
+        '  sample[0] = 0; sample[1] = 0; sample[2] = 0; sample[3] = 0x80;  // bool_values: 2**31\n'
+        '  test_interface_files::msg::UnboundedSequences message;\n'
+        '  message.copyFromBuf(sample);\n'
+        '  printf("%zu\\n", message.bool_values.size());\n'
+        '  return 0;\n}\n')
+    binary = str(tmp_path / 'bad_count')
+    subprocess.run(['g++'] + FLAGS + ['-I', export, str(source), '-o', binary], check=True)
+    result = subprocess.run(['sh', '-c', 'ulimit -v 1000000 && %s' % binary], capture_output=True,
+                            text=True)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.strip() == '0'

@@ -33,6 +33,12 @@
 // The version of this header; every generated header checks it.
 #define MROS2_MESSAGE_WIRE_VERSION 1
 
+// The most a sample of unknown size is read as (copyFromBuf without a size):
+// the largest UDP payload. A firmware may set a smaller one.
+#ifndef MROS2_WIRE_UNSIZED_LIMIT
+#define MROS2_WIRE_UNSIZED_LIMIT 65507u
+#endif
+
 // mros2.h defines message_traits::TypeName<T*>; a message header that
 // specializes it must compile without mros2.h too.
 namespace message_traits {
@@ -445,9 +451,13 @@ template <class Derived> class Message {
     return FragCopyReturnType(cntPub == writer.position(), written);
   }
 
-  // mros2's receive call: its caller gives no size, so nothing is checked.
+  // mros2's receive call. Its caller gives no size; mros2 receives a sample
+  // in one UDP datagram (embeddedRTPS takes DATA, not DATA_FRAG), so a
+  // sample is never longer than MROS2_WIRE_UNSIZED_LIMIT: a bad count can
+  // make no container grow past it, though reads past the real sample stay
+  // possible. Prefer the checked call below where the size is known.
   void copyFromBuf(const uint8_t* addrPtr) {
-    Reader reader(addrPtr, UINT32_MAX);
+    Reader reader(addrPtr, MROS2_WIRE_UNSIZED_LIMIT);
     self().readFrom(reader);
   }
   // The checked receive: reads only the size bytes at addrPtr (the image,
