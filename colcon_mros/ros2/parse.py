@@ -10,7 +10,6 @@ line at which the file stops parsing), so every error reads
 
 import contextlib
 import io
-import os
 import re
 
 from colcon_mros.empy_proxy import allow_new_interpreter
@@ -136,10 +135,3 @@ def parse_interface(interface):
         raise GenmrosError(_problem(error), path, line)
     return Parsed(path, content, _declaration_lines(text, is_idl))
 
-
-def interface_of_idl_tuple(idl_tuple, package):
-    """(kind, name, path) of one of rosidl's IDL tuples ``<dir>:<kind>/<Name>.idl``,
-    as rosidl_generate_interfaces hands them to its generators."""
-    directory, _, relative = idl_tuple.rpartition(':')
-    kind, _, file_name = relative.partition('/')
-    return kind, os.path.splitext(file_name)[0], os.path.join(directory, relative)
