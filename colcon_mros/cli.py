@@ -18,7 +18,9 @@ from colcon_mros.generator.defaults import (DEFAULT_DEFINITION_TEXT, DEFAULT_STO
 from colcon_mros.mros_v1.defaults import DEFAULT_VARIABLE_SIZE_BUDGET, PC_TARGETS
 
 DESCRIPTION = '''\
-Generate mROS message headers from ROS 1 .msg and .srv files.
+Generate mROS message headers: from ROS 1 .msg and .srv files for mROS v1,
+and from ROS 2 interface files (.msg, .srv, .idl, read with rosidl) for
+mros2 (the mros2-* subcommands).
 
 Generator mode, with gencpp's arguments and one or more files of a package
 (catkin runs it once per package, with all its files):
@@ -26,6 +28,10 @@ Generator mode, with gencpp's arguments and one or more files of a package
 
 Export mode, what one firmware needs:
   genmros export [--workspace WS ...] [--package PKG ...] [--type PKG/TYPE ...] -o DIR ...
+
+mros2 (ROS 2), what one firmware needs, with its templates.hpp:
+  genmros mros2-export [--workspace WS ...] [--type PKG/msg/TYPE ...]
+                       [--publish T ...] [--subscribe T ...] -o DIR
 
 Every subcommand has --help.'''
 

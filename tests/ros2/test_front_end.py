@@ -114,3 +114,24 @@ def test_bounded_storage_names_the_field_without_a_bound(tmp_path):
     assert result.stderr.strip() == (
         "genmros: error: %s:2: field 'text' (string) has no max_size for bounded storage (add "
         "'demo_msgs/Log.text max_size:N' to an options file)" % path)
+
+
+def test_an_idl_file_is_read_as_rosidl_reads_it(tmp_path):
+    _package(tmp_path, 'demo_msgs', {'msg/Point3.idl': (
+        'module demo_msgs {\n'
+        '  module msg {\n'
+        '    struct Point3 {\n'
+        '      double x;\n'
+        '      @default (value=2)\n'
+        '      int32 y;\n'
+        '      sequence<int16, 4> z;\n'
+        '      string<8> name;\n'
+        '    };\n'
+        '  };\n'
+        '};\n')})
+    result = _export(tmp_path, tmp_path / 'out', '--type', 'demo_msgs/msg/Point3')
+    assert result.returncode == 0, result.stderr
+    header = (tmp_path / 'out' / 'demo_msgs' / 'msg' / 'point3.hpp').read_text()
+    for line in ('double x = 0.0;', 'int32_t y = 2;', 'mros::bounded_vector<int16_t, 4> z;',
+                 'mros::bounded_string<8> name;', '"demo_msgs::msg::dds_::Point3_"'):
+        assert line in header, line
