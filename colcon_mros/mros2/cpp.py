@@ -157,7 +157,6 @@ class CppMessage(CppMessageName):
         self.constants = [CppConstant(constant) for constant in message.constants]
         self.includes = sorted({CppMessageName(d).header for d in message.dependencies
                                 if CppMessageName(d).header != self.header})
-        self.max_size = message.max_size
         self.guard = header_guard(self.header)
 
 

@@ -14,7 +14,6 @@ import os
 from colcon_mros.errors import GenmrosError, close_match
 
 INTERFACE_KINDS = ('msg', 'srv')
-SOURCE_EXTENSIONS = ('.msg', '.srv', '.idl')
 AMENT_PACKAGE_INDEX = ('ament_index', 'resource_index', 'packages')
 # Directories a workspace search does not enter: build output and VCS.
 _SKIPPED_DIRS = {'build', 'install', 'log', '.git'}
@@ -28,7 +27,6 @@ class Interface:
         self.kind = kind
         self.name = name
         self.path = path
-        self.full_name = '%s/%s/%s' % (package, kind, name)
 
 
 class Package:
@@ -44,14 +42,12 @@ class Package:
                 continue
             for file_name in sorted(os.listdir(directory)):
                 stem, extension = os.path.splitext(file_name)
-                if extension not in SOURCE_EXTENSIONS:
-                    continue
-                if extension == '.idl' and (kind, stem) in self.interfaces:
-                    continue  # rosidl's .idl form of a .msg or .srv beside it
-                if extension != '.idl' and extension != '.' + kind:
-                    continue
-                self.interfaces[(kind, stem)] = Interface(
-                    name, kind, stem, os.path.join(directory, file_name))
+                interface = Interface(name, kind, stem, os.path.join(directory, file_name))
+                if extension == '.' + kind:
+                    self.interfaces[(kind, stem)] = interface
+                elif extension == '.idl':
+                    # Unless a .msg or .srv of which it is rosidl's form is beside it.
+                    self.interfaces.setdefault((kind, stem), interface)
 
     def interface(self, kind, name):
         found = self.interfaces.get((kind, name))

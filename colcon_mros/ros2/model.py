@@ -36,24 +36,22 @@ def _align(position, size):
 
 
 class Constant:
-    """A constant: name, IDL type (a number or 'string'), value, line."""
+    """A constant: name, IDL type (a number or 'string'), value."""
 
-    def __init__(self, rosidl_constant, line):
+    def __init__(self, rosidl_constant):
         from rosidl_parser.definition import AbstractString
         self.name = rosidl_constant.name
         self.is_string = isinstance(rosidl_constant.type, AbstractString)
         self.number_type = None if self.is_string else rosidl_constant.type.typename
         self.value = rosidl_constant.value
-        self.line = line
 
 
 class Member:
     """A member: its element and container, default, bounds and wire sizes."""
 
-    def __init__(self, name, line, comment, element, number_type, string_bound, message,
-                 container, count, default):
+    def __init__(self, name, comment, element, number_type, string_bound, message, container,
+                 count, default):
         self.name = name
-        self.line = line
         self.comment = comment
         self.element = element            # 'number', 'string', 'wstring' or 'message'
         self.number_type = number_type    # for 'number': rosidl's name ('int32', 'double'...)
@@ -120,17 +118,6 @@ class Member:
             done += 1
         return position
 
-    @property
-    def unbounded_reason(self):
-        """Why the member has no largest image ('name (string)'), or None."""
-        if self.is_sequence and self.count is None:
-            return '%s (sequence)' % self.name
-        if self.element in ('string', 'wstring') and self.string_bound is None:
-            return '%s (%s)' % (self.name, self.element)
-        if self.element == 'message' and self.message.max_size is None:
-            return '%s.%s' % (self.name, self.message.unbounded_reason)
-        return None
-
 
 class Message:
     """One message type, or one half of a service (``Query_Request``)."""
@@ -150,8 +137,6 @@ class Message:
                 self.dependencies.append(member.message)
         self.min_size = self.end(0, largest=False)
         self.max_size = self.end(0, largest=True)
-        self.unbounded_reason = next(
-            (m.unbounded_reason for m in members if m.unbounded_reason is not None), None)
         if self.min_size > MAX_IMAGE_SIZE:
             raise GenmrosError('%s takes at least %d bytes in CDR, more than the %d a message can '
                                'have' % (self.full_name, self.min_size, MAX_IMAGE_SIZE), source)
@@ -277,7 +262,7 @@ class ModelBuilder:
                        for member in structure.members]
         finally:
             self._building.pop()
-        constants = [Constant(c, parsed.line_of(c.name, section)) for c in rosidl_message.constants]
+        constants = [Constant(c) for c in rosidl_message.constants]
         return Message(package, kind, name, parsed.path, structure.get_comment_lines(), members,
                        constants)
 
@@ -320,8 +305,8 @@ class ModelBuilder:
             string_bound = bounds.max_size
         if container == 'sequence':
             count = bounds.max_count
-        return Member(member.name, line, member.get_comment_lines(), element, number_type,
-                      string_bound, message, container, count, _default_of(member, element))
+        return Member(member.name, member.get_comment_lines(), element, number_type, string_bound,
+                      message, container, count, _default_of(member, element))
 
     def closure(self, roots):
         """The messages roots are and contain, each after the ones it contains."""
