@@ -31,20 +31,11 @@ ROS2_PACKAGE_TYPES = ('ros.ament_cmake',)
 ROS1_PACKAGE_TYPES = ('ros.catkin',)
 
 
-def _selected(args, types):
-    return [d for d in get_packages(args, recursive_categories=('run',))
-            if d.selected and d.descriptor.type in types]
-
-
-def _built_catkin_packages(args):
-    return _selected(args, ROS1_PACKAGE_TYPES)
-
-
-def _built_ros2_interface_packages(args, workspace):
-    from colcon_mros.ros2.interfaces import workspace_packages
-    with_interfaces = workspace_packages(workspace)
-    return sorted(d.descriptor.name for d in _selected(args, ROS2_PACKAGE_TYPES)
-                  if d.descriptor.name in with_interfaces)
+def _ros2_interface_packages(descriptors):
+    """The names of the built ROS 2 packages that define interfaces."""
+    from colcon_mros.ros2.interfaces import Package
+    return sorted(d.name for d in descriptors if d.type in ROS2_PACKAGE_TYPES
+                  and Package(d.name, str(d.path)).interfaces)
 
 
 def _export_ros2(args, workspace, names, export_dir):
@@ -74,11 +65,12 @@ def export_built_packages(args, export_dir):
         raise GenmrosError('--mros-export needs the packages under one base path, not %s'
                            % ' '.join(args.base_paths), export_dir)
     workspace = os.path.abspath(args.base_paths[0])
-    ros2_names = _built_ros2_interface_packages(args, workspace)
-    catkin_built = bool(_built_catkin_packages(args))
+    selected = [d.descriptor for d in get_packages(args, recursive_categories=('run',))
+                if d.selected]
+    ros2_names = _ros2_interface_packages(selected)
     if ros2_names:
         _export_ros2(args, workspace, ros2_names, export_dir)
-        if not catkin_built:
+        if not any(d.type in ROS1_PACKAGE_TYPES for d in selected):
             return
     require_ros_python()
     from colcon_mros.export.firmware_export import ExportRequest, export  # needs genmsg
@@ -88,10 +80,10 @@ def export_built_packages(args, export_dir):
     packages.update(workspace_packages(workspace))
 
     names = set()
-    for decorator in get_packages(args, recursive_categories=('run',)):
-        if decorator.selected and decorator.descriptor.name in packages:
-            names.add(decorator.descriptor.name)
-            names.update(str(dependency) for dependency in decorator.descriptor.get_dependencies()
+    for descriptor in selected:
+        if descriptor.name in packages:
+            names.add(descriptor.name)
+            names.update(str(dependency) for dependency in descriptor.get_dependencies()
                          if dependency in packages)
     if not names:
         raise GenmrosError('the built packages define no messages or services; nothing to '

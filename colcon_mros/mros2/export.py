@@ -61,16 +61,21 @@ def _select(builder, package_names, type_names):
     return messages, services
 
 
-def render_types(builder, messages, services):
-    """{path: text} of the headers of messages, services and all they contain."""
+def render_types(messages, services):
+    """{path: text} of the headers of messages (service halves among them
+    are their services') and of services."""
     files = {}
-    roots = list(messages) + [half for service in services for half in service.dependencies]
-    for message in builder.closure(roots):
+    for message in messages:
         if message.kind == 'msg':
             files.update(render.message_header(message))
     for service in services:
         files.update(render.service_header(service))
     return files
+
+
+def _within(path, directory):
+    return os.path.commonpath([os.path.abspath(path), os.path.abspath(directory)]) == \
+        os.path.abspath(directory)
 
 
 def export_firmware(output_dir, workspaces=(), prefixes=None, package_names=(), type_names=(),
@@ -84,16 +89,18 @@ def export_firmware(output_dir, workspaces=(), prefixes=None, package_names=(), 
         if not workspaces:
             raise GenmrosError('name the types to export (--type, --package, --publish, '
                                '--subscribe) or a --workspace')
-        package_names = sorted(set().union(*(all_packages([w], []) for w in workspaces)))
+        # A workspace's packages hide installed ones of the same name.
+        package_names = sorted(name for name, package in packages.items()
+                               if any(_within(package.root, w) for w in workspaces))
     messages, services = _select(builder, package_names, type_names)
+    contained = builder.closure(messages + publish_types + subscribe_types +
+                                [half for service in services for half in service.dependencies])
     files = render.support_headers()
-    files.update(render_types(builder, messages + publish_types + subscribe_types, services))
+    files.update(render_types(contained, services))
     if publish_types or subscribe_types:
         files.update(render.templates_header(publish_types, subscribe_types))
     changed, removed = write_tree(
         output_dir, files, drop=lambda relative: is_generated(os.path.join(output_dir, relative)))
-    contained = builder.closure(messages + publish_types + subscribe_types +
-                                [half for service in services for half in service.dependencies])
     return Mros2Export([m for m in contained if m.kind == 'msg'], services, changed, removed)
 
 
@@ -104,13 +111,10 @@ def generate_package(package_dir, output_dir, prefixes=None):
     are theirs to generate.
     Returns the paths it changed."""
     package = source_package(package_dir)
-    package_name = package.name
     packages = all_packages((), prefixes)
-    packages[package_name] = package
+    packages[package.name] = package
     builder = _builder(packages, 'heap', ())
-    messages, services = _select(builder, [package_name], [])
-    files = {path: text for path, text in render_types(builder, messages, services).items()
-             if path.startswith(package_name + '/')}
+    files = render_types(*_select(builder, [package.name], []))
     # Every package's install holds the support headers too, so that its
     # include/mros2 is a whole include root (same text in every package).
     files.update(render.support_headers())
