@@ -131,6 +131,12 @@ class CppConstant:
             self.literal = _number_literal(constant.number_type, constant.value)
 
 
+def _source(model):
+    """The definition a header comes from: 'pkg/msg/Type.msg'."""
+    return '%s/%s/%s' % (model.package, os.path.basename(os.path.dirname(model.source)),
+                         os.path.basename(model.source))
+
+
 class CppMessageName:
     """The names a message type has in C++ and on the wire, and its header's."""
 
@@ -152,7 +158,8 @@ class CppMessage(CppMessageName):
     def __init__(self, message):
         super().__init__(message)
         self.comment = comment_lines(message.comment)
-        self.source = '%s/%s/%s' % (message.package, message.kind, os.path.basename(message.source))
+        self.source = _source(message)
+        self.summary = 'mros2 message %s, DDS type %s.' % (self.cpp_name, self.dds_type_name)
         self.members = [CppMember(member) for member in message.members]
         self.constants = [CppConstant(constant) for constant in message.constants]
         self.includes = sorted({CppMessageName(d).header for d in message.dependencies
@@ -165,12 +172,16 @@ class CppService:
 
     def __init__(self, service):
         self.package = service.package
+        self.kind = 'srv'
         self.name = service.name
         self.cpp_name = '%s::srv::%s' % (service.package, service.name)
         self.header = '%s/srv/%s.hpp' % (service.package, header_stem(service.name))
         self.guard = header_guard(self.header)
+        self.source = _source(service)
         self.request = CppMessage(service.request)
         self.response = CppMessage(service.response)
+        self.summary = 'mros2 service %s: %s and %s.' % (self.cpp_name, self.request.cpp_name,
+                                                         self.response.cpp_name)
         self.includes = sorted(set(self.request.includes + self.response.includes))
 
 

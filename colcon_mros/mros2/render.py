@@ -43,16 +43,17 @@ def support_headers():
 def message_header(message):
     view = CppMessage(message)
     return {view.header: _render(
-        'message.hpp.em', msg=view, class_text=_render('message_class.hpp.em', msg=view),
+        'header.hpp.em', file=view, body_text=_render('message_class.hpp.em', msg=view),
         traits_text=_render('type_name.hpp.em', messages=[view]))}
 
 
 def service_header(service):
     view = CppService(service)
+    body = _render('service_types.hpp.em', srv=view,
+                   request_text=_render('message_class.hpp.em', msg=view.request),
+                   response_text=_render('message_class.hpp.em', msg=view.response))
     return {view.header: _render(
-        'service.hpp.em', srv=view,
-        request_text=_render('message_class.hpp.em', msg=view.request),
-        response_text=_render('message_class.hpp.em', msg=view.response),
+        'header.hpp.em', file=view, body_text=body,
         traits_text=_render('type_name.hpp.em', messages=[view.request, view.response]))}
 
 

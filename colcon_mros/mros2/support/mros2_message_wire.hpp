@@ -72,17 +72,23 @@ class WindowSink {
   WindowSink(uint8_t* buffer, uint32_t start, uint32_t size)
       : buffer_(buffer), start_(start), end_(start + size) {}
   void put(uint32_t position, const uint8_t* bytes, uint32_t count) {
-    uint32_t first = position > start_ ? position : start_;
-    uint32_t last = position + count < end_ ? position + count : end_;
-    if (first < last) memcpy(buffer_ + (first - start_), bytes + (first - position), last - first);
+    uint32_t first, last;
+    if (overlap(position, count, first, last))
+      memcpy(buffer_ + (first - start_), bytes + (first - position), last - first);
   }
   void zeros(uint32_t position, uint32_t count) {
-    uint32_t first = position > start_ ? position : start_;
-    uint32_t last = position + count < end_ ? position + count : end_;
-    if (first < last) memset(buffer_ + (first - start_), 0, last - first);
+    uint32_t first, last;
+    if (overlap(position, count, first, last)) memset(buffer_ + (first - start_), 0, last - first);
   }
 
  private:
+  // [first, last): the part of [position, position + count) inside the window.
+  bool overlap(uint32_t position, uint32_t count, uint32_t& first, uint32_t& last) const {
+    first = position > start_ ? position : start_;
+    last = position + count < end_ ? position + count : end_;
+    return first < last;
+  }
+
   uint8_t* buffer_;
   uint32_t start_;
   uint32_t end_;
