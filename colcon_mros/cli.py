@@ -82,17 +82,21 @@ def _add_fit_strict(parser):
                              'storage), a connection header that fits only short names')
 
 
-def _add_header_form(parser):
-    """What the headers hold: storage, bounds, definition text."""
+def _add_storage(parser, what, options_note):
+    """Heap or bounded storage, and the options files that bound it."""
     parser.add_argument('--storage', choices=STORAGE_KINDS, default=DEFAULT_STORAGE,
-                        help='strings and variable arrays as std::string/std::vector (heap, '
-                             'default) or held in the message with maxima from options files '
-                             '(bounded: no heap)')
+                        help='%s as std::string/std::vector (heap, default) or held in the '
+                             'message with maxima from options files (bounded: no heap)' % what)
     parser.add_argument('--options', dest='option_files', action='append', default=[],
                         metavar='FILE',
                         help="bounds for --storage bounded: lines 'pkg/Type.field max_size:N "
-                             "max_count:N' or '* ...' (repeatable; each package's "
-                             'msg/genmros.options is read too)')
+                             "max_count:N' or '* ...' (repeatable%s)" % options_note)
+
+
+def _add_header_form(parser):
+    """What the headers hold: storage, bounds, definition text."""
+    _add_storage(parser, 'strings and variable arrays',
+                 "; each package's msg/genmros.options is read too")
     parser.add_argument('--definition-text', choices=DEFINITION_TEXTS,
                         default=DEFAULT_DEFINITION_TEXT,
                         help="the definition text each header carries: gencpp's (full, default; "
@@ -319,14 +323,8 @@ def _add_mros2_export(subparsers):
                                  'templates.hpp (repeatable)' % what)
     parser.add_argument('-o', dest='output_dir', required=True, metavar='DIR',
                         help='include root to write to')
-    parser.add_argument('--storage', choices=STORAGE_KINDS, default=DEFAULT_STORAGE,
-                        help='unbounded strings and sequences as std::string/std::vector (heap, '
-                             'default) or held in the message with maxima from options files '
-                             "(bounded: no heap); string<=N and T[<=N] are always bounded")
-    parser.add_argument('--options', dest='option_files', action='append', default=[],
-                        metavar='FILE',
-                        help="bounds for --storage bounded: lines 'pkg/Type.field max_size:N "
-                             "max_count:N' or '* ...' (repeatable)")
+    _add_storage(parser, 'unbounded strings and sequences (string<=N and T[<=N] are always '
+                         'bounded)', "; each package's msg/genmros.options is read too")
     parser.set_defaults(run=_mros2_export)
 
 

@@ -34,8 +34,9 @@ class Mros2Export:
 
 
 def _builder(packages, storage, option_files):
-    package_dirs = {name: [package.root] for name, package in packages.items()}
-    return ModelBuilder(packages, storage_for(storage, option_files, package_dirs))
+    # A package's own bounds: msg/genmros.options, as on the ROS 1 side.
+    msg_dirs = {name: [os.path.join(package.root, 'msg')] for name, package in packages.items()}
+    return ModelBuilder(packages, storage_for(storage, option_files, msg_dirs))
 
 
 def _select(builder, package_names, type_names):

@@ -107,6 +107,17 @@ def test_a_type_that_contains_itself_is_refused(tmp_path):
     assert path in result.stderr or os.path.dirname(path) in result.stderr
 
 
+def test_bounded_storage_takes_a_packages_own_bounds(tmp_path):
+    _package(tmp_path, 'demo_msgs', {'msg/Log.msg': 'string text\nint8[] codes\n',
+                                     'msg/genmros.options': 'Log.text max_size:24\n'
+                                                            'Log.codes max_count:5\n'})
+    result = _export(tmp_path, tmp_path / 'out', '--package', 'demo_msgs', '--storage', 'bounded')
+    assert result.returncode == 0, result.stderr
+    header = (tmp_path / 'out' / 'demo_msgs' / 'msg' / 'log.hpp').read_text()
+    assert 'mros::bounded_string<24> text;' in header
+    assert 'mros::bounded_vector<int8_t, 5> codes;' in header
+
+
 def test_bounded_storage_names_the_field_without_a_bound(tmp_path):
     path = _package(tmp_path, 'demo_msgs', {'msg/Log.msg': 'int32 level\nstring text\n'})
     result = _export(tmp_path, tmp_path / 'out', '--package', 'demo_msgs', '--storage', 'bounded')
