@@ -5,10 +5,12 @@ rosbags' type store, written out as packages), each exported with
 ``genmros mros2-export`` and modelled by genmros' rosidl front end. Its
 fixtures are every test's (tests/conftest.py names it a plugin)."""
 
+import shutil
+
 import pytest
 
 from conftest import run_genmros
-from testing import fastcdr, ros2_messages
+from testing import fastcdr, mros2_harness, ros2_messages
 
 from colcon_mros.generator.storage import HeapStorage
 from colcon_mros.ros2.interfaces import all_packages
@@ -18,8 +20,17 @@ TEST_INTERFACE_PACKAGE = 'test_interface_files'
 ROSBAGS_PACKAGES = ('std_msgs', 'geometry_msgs', 'sensor_msgs')
 
 
+# Where the echo program runs: (runner, compiler) of each target.
+ECHO_TARGETS = {
+    'host': ((), ('g++',)),
+    'arm': (('qemu-arm', '-L', '/usr/arm-linux-gnueabihf'), ('arm-linux-gnueabihf-g++',)),
+    's390x': (('qemu-s390x', '-L', '/usr/s390x-linux-gnu'), ('s390x-linux-gnu-g++',)),
+}
+
+
 class Corpus:
-    """The types of one export: their models, headers and C++ names."""
+    """The types of one export: their models, headers and C++ names, and
+    the echo program of them (testing/mros2_harness) per target."""
 
     def __init__(self, include_dir, messages, workspace=None):
         self.include_dir = include_dir
@@ -29,6 +40,21 @@ class Corpus:
         names = [CppMessageName(m) for m in messages]
         self.headers = [n.header for n in names]
         self.cpp_names = [n.cpp_name for n in names]
+        self._echoes = {}
+
+    def echo(self, target='host'):
+        """The echo program for target, built the first time a test asks."""
+        if target not in self._echoes:
+            runner, compiler = ECHO_TARGETS[target]
+            for tool in [compiler[0]] + list(runner[:1]):
+                if shutil.which(tool) is None:
+                    pytest.fail('%s is not installed (scripts/setup.sh --tests installs it)' % tool)
+            program = mros2_harness.build_echo(
+                self.include_dir, self.headers, self.cpp_names,
+                '%s-echo-%s' % (self.include_dir, target), compiler,
+                extra_flags=['-static'] if runner else [])
+            self._echoes[target] = mros2_harness.Echo(program, runner)
+        return self._echoes[target]
 
 
 def typestore():

@@ -17,33 +17,16 @@ qemu-s390x).
 
 import os
 import random
-import shutil
 
 import pytest
 
-from testing import fastcdr, mros2_harness, ros2_messages
+from testing import fastcdr, ros2_messages
 
 from mros2_corpus import TEST_INTERFACE_PACKAGE, typestore
 
 INSTANCES_PER_TYPE = 12
 # mros2's fragment buffer is 64 bytes; smaller ones cut inside every value.
 FRAGMENT_SIZES = (64, 16, 8)
-TARGETS = {
-    'host': ((), ('g++',)),
-    'arm': (('qemu-arm', '-L', '/usr/arm-linux-gnueabihf'), ('arm-linux-gnueabihf-g++',)),
-    's390x': (('qemu-s390x', '-L', '/usr/s390x-linux-gnu'), ('s390x-linux-gnu-g++',)),
-}
-
-
-def _echo(corpus, tmp_path, target):
-    runner, compiler = TARGETS[target]
-    if shutil.which(compiler[0]) is None or (runner and shutil.which(runner[0]) is None):
-        pytest.fail('%s is not installed (scripts/setup.sh --tests installs it)'
-                    % (compiler[0] if shutil.which(compiler[0]) is None else runner[0]))
-    flags = ['-static'] if runner else []
-    program = mros2_harness.build_echo(corpus.include_dir, corpus.headers, corpus.cpp_names,
-                                       str(tmp_path / target), compiler, extra_flags=flags)
-    return mros2_harness.Echo(program, runner)
 
 
 def _instances(corpus, seed):
@@ -75,7 +58,7 @@ TARGET_PARAMS = ['host', pytest.param('arm', marks=[pytest.mark.slow, pytest.mar
 
 @pytest.mark.parametrize('target', TARGET_PARAMS)
 def test_fastcdr_bytes_come_back_byte_for_byte(test_interface_corpus, rosbags_corpus,
-                                               fastcdr_program, tmp_path, target):
+                                               fastcdr_program, target):
     for number, corpus in enumerate((test_interface_corpus, rosbags_corpus)):
         instances = _instances(corpus, seed=number)
         references = fastcdr.encode_many(
@@ -83,14 +66,14 @@ def test_fastcdr_bytes_come_back_byte_for_byte(test_interface_corpus, rosbags_co
                               for i, value in instances])
         samples = [(index, FRAGMENT_SIZES[n % len(FRAGMENT_SIZES)], reference)
                    for n, ((index, _), reference) in enumerate(zip(instances, references))]
-        _check_echo(corpus, instances, references, _echo(corpus, tmp_path, target).run(samples))
+        _check_echo(corpus, instances, references, corpus.echo(target).run(samples))
 
 
 def test_generated_bytes_read_back_in_fastcdr(test_interface_corpus, rosbags_corpus,
-                                              fastcdr_program, tmp_path):
+                                              fastcdr_program):
     for number, corpus in enumerate((test_interface_corpus, rosbags_corpus)):
         instances = _instances(corpus, seed=10 + number)
-        echo = _echo(corpus, tmp_path, 'host')
+        echo = corpus.echo()
         ops = [ros2_messages.fastcdr_ops(corpus.messages[i], value) for i, value in instances]
         echoed = echo.run([(i, 64, data) for (i, _), data
                            in zip(instances, fastcdr.encode_many(fastcdr_program, ops))])
@@ -99,8 +82,7 @@ def test_generated_bytes_read_back_in_fastcdr(test_interface_corpus, rosbags_cor
             assert ros2_messages.value_from_ops(corpus.messages[index], iter(decoded)) == value
 
 
-def test_rosbags_bytes_come_back_and_rosbags_reads_ours(test_interface_corpus, rosbags_corpus,
-                                                        tmp_path):
+def test_rosbags_bytes_come_back_and_rosbags_reads_ours(test_interface_corpus, rosbags_corpus):
     from rosbags.typesys import get_types_from_msg
     store = typestore()
     for path in sorted(os.listdir('/usr/share/test_interface_files/msg')):
@@ -117,7 +99,7 @@ def test_rosbags_bytes_come_back_and_rosbags_reads_ours(test_interface_corpus, r
             message = corpus.messages[index]
             references.append(bytes(store.serialize_cdr(
                 ros2_messages.rosbags_message(store, message, value), message.full_name)))
-        echoed = _echo(corpus, tmp_path, 'host').run(
+        echoed = corpus.echo().run(
             [(i, 64, reference) for (i, _), reference in zip(instances, references)])
         _check_echo(corpus, instances, references, echoed)
         for (index, _), reference, result in zip(instances, references, echoed):
@@ -128,7 +110,7 @@ def test_rosbags_bytes_come_back_and_rosbags_reads_ours(test_interface_corpus, r
     assert checked > 500
 
 
-def test_every_cut_of_a_sample_is_refused(test_interface_corpus, fastcdr_program, tmp_path):
+def test_every_cut_of_a_sample_is_refused(test_interface_corpus, fastcdr_program):
     """The checked copyFromBuf never takes a sample cut short: every prefix
     of every sample is refused."""
     corpus = test_interface_corpus
@@ -139,7 +121,7 @@ def test_every_cut_of_a_sample_is_refused(test_interface_corpus, fastcdr_program
         for message in corpus.messages])
     for index, data in enumerate(images):
         samples += [(index, 64, data[:length]) for length in range(len(data))]
-    echoed = _echo(corpus, tmp_path, 'host').run(samples)
+    echoed = corpus.echo().run(samples)
     accepted = [(corpus.messages[i].full_name, len(d)) for (i, _, d), r in zip(samples, echoed)
                 if not r.refused]
     assert accepted == []

@@ -15,7 +15,7 @@ import random
 
 import pytest
 
-from testing import dds_peer, fastcdr, mros2_harness, ros2_messages
+from testing import dds_peer, fastcdr, ros2_messages
 
 TYPES = {
     'test_interface_files': ['test_interface_files/msg/MultiNested',
@@ -40,11 +40,10 @@ def _corpus(request, name):
 @pytest.mark.slow
 @pytest.mark.parametrize('corpus_name', sorted(TYPES))
 def test_fast_dds_and_the_generated_code_exchange_samples(request, corpus_name, peer_program,
-                                                          fastcdr_program, tmp_path):
+                                                          fastcdr_program):
     corpus = _corpus(request, corpus_name)
     indexes = [[m.full_name for m in corpus.messages].index(n) for n in TYPES[corpus_name]]
-    echo = mros2_harness.Echo(mros2_harness.build_echo(
-        corpus.include_dir, corpus.headers, corpus.cpp_names, str(tmp_path / 'echo')))
+    echo = corpus.echo()
     type_names = echo.type_names()
     rng = random.Random(40)
     for index in indexes:
