@@ -95,15 +95,15 @@ def _adapt(package, kind, name, text):
 
 def _first_bad_line(package, kind, name, text):
     """The first line at which a .msg or .srv no longer parses, or None."""
+    from rosidl_adapter.parser import parse_message_string, parse_service_string
+    parse = parse_message_string if kind == 'msg' else parse_service_string
     lines = text.split('\n')
     for count in range(1, len(lines) + 1):
         prefix = '\n'.join(lines[:count])
         if kind == 'srv' and _SECTION_SEPARATOR not in [l.strip() for l in lines[:count]]:
             prefix += '\n' + _SECTION_SEPARATOR
-        from rosidl_adapter.parser import parse_message_string, parse_service_string
         try:
-            _quietly(parse_message_string if kind == 'msg' else parse_service_string,
-                     package, name, prefix)
+            _quietly(parse, package, name, prefix)
         except Exception:  # rosidl_adapter raises many types for bad input
             return count
     return None
