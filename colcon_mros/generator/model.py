@@ -13,6 +13,7 @@ import zlib
 from genmsg.msgs import is_valid_msg_field_name, parse_type
 
 from colcon_mros.errors import GenmrosError
+from colcon_mros.generator.closure import contained_first
 from colcon_mros.generator.defaults import DEFAULT_DEFINITION_TEXT
 from colcon_mros.generator.definition import Definition
 from colcon_mros.generator.storage import HeapStorage
@@ -215,23 +216,8 @@ class ModelBuilder:
     def closure(self, full_names):
         """The messages named and every message they contain, each after the
         ones it contains (in the order of their sorted names)."""
-        ordered = []
-        seen = set()
-        for root in full_names:
-            if root in seen:
-                continue
-            seen.add(root)
-            stack = [(root, iter(self.message(root).dependencies))]
-            while stack:
-                name, dependencies = stack[-1]
-                dependency = next(dependencies, None)
-                if dependency is None:
-                    stack.pop()
-                    ordered.append(self.message(name))
-                elif dependency not in seen:
-                    seen.add(dependency)
-                    stack.append((dependency, iter(self.message(dependency).dependencies)))
-        return ordered
+        names = contained_first(full_names, lambda name: self.message(name).dependencies)
+        return [self.message(name) for name in names]
 
     def _element(self, ros_type, bounds):
         """The :class:`ElementType` of a field's type, arrays aside."""

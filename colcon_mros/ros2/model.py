@@ -12,6 +12,7 @@ per-type sizes. C++ spelling is :mod:`colcon_mros.mros2.cpp`'s job.
 """
 
 from colcon_mros.errors import GenmrosError, close_match
+from colcon_mros.generator.closure import contained_first
 from colcon_mros.ros2.parse import parse_interface
 
 # rosidl's IDL number types: their CDR size, which is also their alignment.
@@ -310,16 +311,4 @@ class ModelBuilder:
 
     def closure(self, roots):
         """The messages roots are and contain, each after the ones it contains."""
-        ordered = []
-        seen = set()
-
-        def visit(message):
-            if message.full_name in seen:
-                return
-            seen.add(message.full_name)
-            for dependency in message.dependencies:
-                visit(dependency)
-            ordered.append(message)
-        for root in roots:
-            visit(root)
-        return ordered
+        return contained_first(roots, lambda message: message.dependencies)
