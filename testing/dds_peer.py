@@ -192,6 +192,12 @@ class Receiver:
         """Waits until the reader exists (so a sender may start)."""
         self._wait(lambda: 'ready' in self._stderr, timeout, 'no reader')
 
+    def wait_for_log(self, text, timeout=DELIVERY_TIMEOUT):
+        """Waits until the peer's log holds text (Fast DDS logs as discovery
+        goes on, not when a sample is due)."""
+        self._wait(lambda: any(text in line for line in self._stderr if line), timeout,
+                   "no '%s' in its log" % text)
+
     def samples(self, timeout=DELIVERY_TIMEOUT):
         """The `count` samples received, as bytes, in order; raises
         PeerError if they have not all come within timeout seconds."""

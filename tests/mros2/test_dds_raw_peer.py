@@ -77,4 +77,4 @@ def test_a_reader_asking_for_more_durability_than_offered_gets_nothing(peer):
         assert volatile.samples() == [sample]
         with pytest.raises(PeerError, match='received 0 sample'):
             transient_local.samples(timeout=2)
-        assert 'INCOMPATIBLE QOS' in transient_local.log()
+        transient_local.wait_for_log('INCOMPATIBLE QOS')
