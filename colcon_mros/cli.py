@@ -13,7 +13,7 @@ import sys
 
 from colcon_mros import __version__
 from colcon_mros.errors import GenmrosError
-from colcon_mros.generator.defaults import (DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE,
+from colcon_mros.core.defaults import (DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE,
                                             DEFINITION_TEXTS, EXPORT_PARTS, STORAGE_KINDS)
 from colcon_mros.mros_v1.defaults import DEFAULT_VARIABLE_SIZE_BUDGET, PC_TARGETS
 
@@ -127,10 +127,12 @@ def _add_generate(subparsers):
     parser.add_argument('-I', dest='include_paths', action='append', default=[],
                         metavar='PKG:DIR', help='msg directory of a package (repeatable)')
     _add_template_dir(parser)
-    parser.add_argument('--export-dir', metavar='DIR',
+    parser.add_argument('--add-to-export-dir', dest='export_dir', metavar='DIR',
                         help='also put the headers of the types of FILE and of every type they '
                              "contain, and their definitions, into the export dir DIR (catkin's "
                              'MROS_EXPORT_DIR)')
+    # Its name until 0.1.0, where --export-dir elsewhere names a dir to read.
+    parser.add_argument('--export-dir', dest='export_dir', help=argparse.SUPPRESS)
     _add_cmake_module(parser)
     parser.add_argument('--record', dest='records', action='append', default=[], metavar='FILE',
                         help="the run's record (repeatable): only the files whose definitions "
@@ -195,10 +197,7 @@ def _add_printers(subparsers):
             ('catkin-prefix', "print a catkin prefix that holds genmros' generator marker (and "
                               'leads find_package(genmros) to this install): with it on '
                               'CMAKE_PREFIX_PATH, catkin runs genmros (for installs that cannot '
-                              'write /etc/ros/genmsg: ROS Noetic, a user, a venv)', _catkin_prefix),
-            ('cmake-names', 'print genmros-names.cmake, the names the CMake module and the catkin '
-                            'generator take from genmros (they write it at configure time)',
-             _cmake_names)):
+                              'write /etc/ros/genmsg: ROS Noetic, a user, a venv)', _catkin_prefix)):
         parser = subparsers.add_parser(name, help=help_text, description=help_text)
         parser.set_defaults(run=run)
 
@@ -364,10 +363,10 @@ def build_parser():
 # What each subcommand runs.
 
 def _generate(options):
-    from colcon_mros.generator.ros_environment import require_ros_python
+    from colcon_mros.ros1.environment import require_ros_python
     require_ros_python()
     from colcon_mros.integrations.catkin_generator import generate_files  # needs genmsg and empy
-    from colcon_mros.generator.workspace import parse_include_flags
+    from colcon_mros.ros1.workspace import parse_include_flags
     generate_files(options.files, options.package, options.output_dir,
                    parse_include_flags(options.include_paths), options.template_dir,
                    options.export_dir, options.records, options.cmake_module,
@@ -377,7 +376,7 @@ def _generate(options):
 def _mros2_export(options):
     from colcon_mros.ros2.environment import require_rosidl
     require_rosidl()
-    from colcon_mros.mros2.export import export_firmware
+    from colcon_mros.export.mros2_export import export_firmware
     result = export_firmware(options.output_dir, options.workspaces, options.prefixes,
                              options.packages, options.types, options.publish, options.subscribe,
                              options.storage, options.option_files)
@@ -389,15 +388,15 @@ def _mros2_export(options):
 def _mros2_generate(options):
     from colcon_mros.ros2.environment import require_rosidl
     require_rosidl()
-    from colcon_mros.mros2.export import generate_package
+    from colcon_mros.export.mros2_export import generate_package
     generate_package(options.package_dir, options.output_dir, options.prefixes)
 
 
 def _export(options):
-    from colcon_mros.generator.ros_environment import require_ros_python
+    from colcon_mros.ros1.environment import require_ros_python
     require_ros_python()
     from colcon_mros.export.firmware_export import ExportRequest, export  # needs genmsg and empy
-    from colcon_mros.generator.workspace import split_msg_paths
+    from colcon_mros.ros1.workspace import split_msg_paths
     prefixes, workspaces = split_msg_paths(options.msg_paths)
     prefixes = (options.prefixes or []) + prefixes
     result = export(ExportRequest(
@@ -434,11 +433,6 @@ def _catkin_prefix(options):
     print(os.path.dirname(installed_file(CATKIN_MARKER)))
 
 
-def _cmake_names(options):
-    from colcon_mros.integrations.cmake_names import cmake_names
-    sys.stdout.write(cmake_names())
-
-
 def _prune_export(options):
     from colcon_mros.export.export_dir import ExportDir
     from colcon_mros.integrations.installed_files import CMAKE_MODULE, installed_file
@@ -454,7 +448,7 @@ def _catkin_export_dir(options):
 
 
 def _mros_v1_pc(options):
-    from colcon_mros.mros_v1.pc_target import build
+    from colcon_mros.library_tools.mros_v1.pc_target import build
     program = build.build(build.PcBuild(
         app_dir=options.app_dir, mros_root=options.mros_root, target=options.target,
         build_dir=options.build_dir, types=options.types, msg_paths=options.msg_paths,
@@ -470,11 +464,11 @@ def _mros_v1_pc(options):
 
 
 def _mros_v1_fit(options):
-    from colcon_mros.generator.ros_environment import require_ros_python
+    from colcon_mros.ros1.environment import require_ros_python
     require_ros_python()
-    from colcon_mros.mros_v1 import report
+    from colcon_mros.library_tools.mros_v1 import report
     from colcon_mros.mros_v1.app import App, find_app
-    from colcon_mros.mros_v1.firmware_fit import app_fit, export_dir_fit  # needs genmsg
+    from colcon_mros.library_tools.mros_v1.fit_flow import app_fit, export_dir_fit  # needs genmsg
     form = (options.storage, options.option_files)
     if options.export_dir:
         fit, settings = export_dir_fit(options.export_dir, options.types,
@@ -491,15 +485,17 @@ def _mros_v1_fit(options):
 
 
 def _mros_v1_harden(options):
-    from colcon_mros.mros_v1.patches.patch_set import apply_patches, check_root, patch_states
+    from colcon_mros.library_tools.mros_v1.patches import check_root, mros_v1_patches
+    from colcon_mros.library_tools.patch_series import apply_patches, patch_states
     root = check_root(options.mros_root)
+    patches = mros_v1_patches()
     if options.check:
-        states = patch_states(root)
+        states = patch_states(root, patches)
         for patch, applied in states:
             print('%-13s %s: %s' % ('applied' if applied else 'not applied', patch.name,
                                     patch.description))
         return 0 if all(applied for _, applied in states) else 1
-    done = apply_patches(root, revert=options.revert)
+    done = apply_patches(root, patches, revert=options.revert)
     verb = 'took out' if options.revert else 'applied'
     print('genmros: %s %s' % (verb, ', '.join(done)) if done else
           'genmros: nothing to do: the patches are %s' % ('out' if options.revert else 'in'))

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Regenerates colcon_mros/generator/c_names.py: the names the C and C++
-standard headers claim, which colcon_mros/generator/names.py keeps ROS names
+"""Regenerates colcon_mros/core/c_names.py: the names the C and C++
+standard headers claim, which colcon_mros/mros_v1/names.py keeps ROS names
 away from.
 
 It asks the compilers this project supports (host g++ and clang++ with
@@ -34,9 +34,10 @@ import tempfile
 import textwrap
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-GENERATOR = os.path.join(REPO, 'colcon_mros', 'generator')
-SUPPORT_DIR = os.path.join(GENERATOR, 'support')
-OUTPUT = os.path.join(GENERATOR, 'c_names.py')
+PACKAGE = os.path.join(REPO, 'colcon_mros')
+# The mROS v1 support header and the containers header it includes.
+SUPPORT_DIRS = [os.path.join(PACKAGE, 'mros_v1', 'support'), os.path.join(PACKAGE, 'core', 'support')]
+OUTPUT = os.path.join(PACKAGE, 'core', 'c_names.py')
 
 PARSER = 'clang++'
 # (compiler, the clang target that parses its preprocessed output, the C
@@ -59,8 +60,8 @@ VERSION_HEADER = ('#ifndef MROS_MESSAGE_SUPPORT_VERSION_H\n'
                   '#define MROS_MESSAGE_SUPPORT_VERSION_H\n'
                   '#define MROS_MESSAGE_SUPPORT_VERSION 0\n'
                   '#endif\n')
-# The support headers' own macros are names.py's SUPPORT_MACROS, held equal
-# to the headers by tests/generator/test_names.py, not the standard's.
+# The support headers' own macros are mros_v1/names.py's SUPPORT_MACROS, held
+# equal to the headers by tests/mros_v1/test_names.py, not the standard's.
 SUPPORT_MACRO_PREFIX = 'MROS_'
 
 LINE_WIDTH = 96
@@ -145,7 +146,7 @@ def words(names):
 
 def collect(compilers, directory):
     unit = write_translation_unit(directory)
-    include_flags = ['-I', directory, '-I', SUPPORT_DIR]
+    include_flags = ['-I', directory] + [flag for support in SUPPORT_DIRS for flag in ('-I', support)]
     macros, global_names = set(), set()
     for compiler, target, _ in compilers:
         for mode in MODES:

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Rewrites genmros' patch set for the mROS v1 library (colcon_mros/mros_v1/
-patches, in the order of its series file) with the least context that keeps
+"""Rewrites genmros' patch set for the mROS v1 library (colcon_mros/
+library_tools/mros_v1/patches, in the order of its series file) with the least context that keeps
 each hunk in one place: the conventional 3 lines, more only where 3 would
 also fit elsewhere in the file, as the library is and after the patches
 before it in the series. Each patch stays a diff against the library as it
@@ -17,8 +17,10 @@ import sys
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, REPO)  # this checkout's patch set
 
-from colcon_mros.mros_v1.patches.patch_set import (  # noqa: E402
-    PATCH_DIR, SERIES, patched_text, patch_set, read_patch)
+from colcon_mros.library_tools.mros_v1.patches import MROS_V1_SERIES, mros_v1_patches  # noqa: E402
+from colcon_mros.library_tools.patch_series import SERIES, patched_text, read_patch  # noqa: E402
+
+PATCH_DIR = MROS_V1_SERIES.directory
 
 CONVENTIONAL_CONTEXT = 3
 
@@ -50,7 +52,7 @@ def main():
         return 2
     root = sys.argv[1]
     series = {}  # path: its text after the patches so far
-    for patch in patch_set():
+    for patch in mros_v1_patches():
         patch_path = os.path.join(PATCH_DIR, patch.name + '.patch')
         with open(patch_path, encoding='utf-8') as stream:
             text = stream.read()
@@ -65,7 +67,7 @@ def main():
             series[path] = patched_text(current, hunks, path)
         with open(patch_path, 'w', encoding='utf-8') as stream:
             stream.write(description + '\n'.join(diff_lines) + '\n')
-        read_patch(patch_path)  # still a patch genmros reads
+        read_patch(patch_path, MROS_V1_SERIES.library_dir)  # still a patch genmros reads
     print('refreshed the patches of %s' % os.path.join(PATCH_DIR, SERIES))
     return 0
 

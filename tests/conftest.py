@@ -38,6 +38,23 @@ def pytest_collection_modifyitems(config, items):
             item.add_marker(skip)
 
 
+@pytest.fixture(autouse=True)
+def empy_takes_the_tests_stdout():
+    """empy 3 wraps sys.stdout in a proxy when its first interpreter starts,
+    and refuses to start another once sys.stdout has been replaced since.
+    pytest's capture replaces it for every test; a genmros process, colcon's
+    and rosidl's never do (tests/core/test_render.py runs two of them). So
+    each test lets its first interpreter wrap the stdout pytest gave it."""
+    try:
+        import em
+    except ImportError:  # a test of a Python without ROS
+        yield
+        return
+    if not hasattr(sys.stdout, '_testProxy'):
+        em.Interpreter._wasProxyInstalled = False
+    yield
+
+
 def run_genmros(*arguments, check=True):
     """Run genmros from this checkout as users run it; returns the CompletedProcess."""
     result = subprocess.run([sys.executable, '-m', 'colcon_mros'] + list(arguments),

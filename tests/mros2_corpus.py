@@ -12,7 +12,7 @@ import pytest
 from conftest import run_genmros
 from testing import fastcdr, mros2_harness, ros2_messages
 
-from colcon_mros.generator.storage import HeapStorage
+from colcon_mros.core.storage import HeapStorage
 from colcon_mros.ros2.interfaces import all_packages
 from colcon_mros.ros2.model import ModelBuilder
 

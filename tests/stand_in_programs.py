@@ -1,14 +1,14 @@
 """Programs of the tests' own on the PC target's stand-ins (the ASP kernel,
-task stacks, lwIP and mbed in colcon_mros/mros_v1/pc_target), configured
+task stacks, lwIP and mbed in colcon_mros/library_tools/mros_v1/pc_target), configured
 from their own .cfg as an mROS v1 app is, with no mROS v1 library."""
 
 import os
 import subprocess
 
-from colcon_mros.mros_v1.pc_target.asp_cfg import read_config, write_kernel_config
+from colcon_mros.library_tools.mros_v1.pc_target.asp_cfg import read_config, write_kernel_config
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-PC_TARGET = os.path.join(REPO, 'colcon_mros', 'mros_v1', 'pc_target')
+PC_TARGET = os.path.join(REPO, 'colcon_mros', 'library_tools', 'mros_v1', 'pc_target')
 FIXTURES = os.path.join(REPO, 'tests', 'fixtures')
 # The arm target's line (mros_v1_pc.mk): GR-PEACH's CPU, linked statically
 # for qemu-arm.

@@ -1,11 +1,10 @@
-"""The package's layers: every module imports only its own layer and the
-layers below it, lazy imports inside functions included. The mros2 back
-end sits on the ROS 2 front end (ros2), both on the shared core in
-generator (output, names, storage, templates), which is also ROS 1's front
-end; mros_v1 and mros2 never import each other. The mROS v1
-library's subpackage has two: what it is (settings, rules, fit check, its
-apps, its aggregates), which the export uses, and what runs it (the fit
-flow, its PC target, the fit report), which uses the export."""
+"""The package's levels, bottom up: the core; the front ends (ros1 | ros2);
+the back ends (mros_v1 | mros2); the export; the integrations; the tools
+that work on the user's library; the CLI. Each top-level subpackage of
+colcon_mros sits on one level, whole. A module imports its own subpackage
+and the levels below it, lazy imports inside functions included; siblings
+on a level never import each other, and each back end stands on its own
+stack's front end only."""
 
 import ast
 import os
@@ -13,22 +12,32 @@ import os
 from conftest import REPO
 
 PACKAGE = os.path.join(REPO, 'colcon_mros')
-# Top first; a module's layer is the longest of these its name below
-# colcon_mros starts with.
-LAYERS = ['cli', 'mros_v1.report', 'mros_v1.pc_target', 'mros_v1.patches',
-          'mros_v1.firmware_fit', 'integrations', 'export', 'mros_v1', 'mros2', 'ros2', 'generator',
-          '']
-TOP_MODULES = {'cli': 'cli', '__main__': 'cli', 'errors': '', '__init__': '', '__version__': '',
-               'empy_proxy': ''}
+# Bottom first; a level's subpackages are siblings. '' is the package's
+# root modules below everything (errors, __init__); cli.py and __main__
+# are the top.
+LEVELS = [
+    ('',),
+    ('core',),
+    ('ros1', 'ros2'),
+    ('mros_v1', 'mros2'),
+    ('export',),
+    ('integrations',),
+    ('library_tools',),
+    ('cli',),
+]
+ROOT_MODULES = {'__init__': '', '__version__': '', 'errors': '', 'cli': 'cli', '__main__': 'cli'}
+# Which stack each front and back end belongs to.
+STACKS = {'ros1': 'ROS 1', 'mros_v1': 'ROS 1', 'ros2': 'ROS 2', 'mros2': 'ROS 2'}
 
 
-def _layer(dotted):
-    """The layer of colcon_mros.<dotted>."""
-    first = dotted.split('.')[0]
-    if first in TOP_MODULES or not dotted:
-        return TOP_MODULES.get(first, '')
-    return max((layer for layer in LAYERS if layer and (dotted + '.').startswith(layer + '.')),
-               key=len)
+def _unit(dotted):
+    """The top-level subpackage (or root module's unit) of colcon_mros.<dotted>."""
+    first = dotted.split('.')[0] if dotted else ''
+    return ROOT_MODULES.get(first, first)
+
+
+def _level(unit):
+    return next(index for index, units in enumerate(LEVELS) if unit in units)
 
 
 def _imports(path):
@@ -47,45 +56,77 @@ def _imports(path):
                 yield name[len('colcon_mros.'):] if '.' in name else ''
 
 
-def test_every_import_goes_down_the_layers():
-    checked = 0
-    upward = []
+def _modules():
+    """(dotted name below colcon_mros, path) of every module of the package."""
     for directory, _, files in os.walk(PACKAGE):
         for name in sorted(files):
-            if not name.endswith('.py'):
-                continue
-            path = os.path.join(directory, name)
-            module = os.path.relpath(path, PACKAGE)[:-3].replace(os.sep, '.')
-            own = LAYERS.index(_layer(module))
-            for imported in _imports(path):
-                checked += 1
-                if LAYERS.index(_layer(imported)) < own:
-                    upward.append('%s imports colcon_mros.%s' % (module, imported))
-    assert checked > 80
-    assert upward == []
+            if name.endswith('.py'):
+                path = os.path.join(directory, name)
+                yield os.path.relpath(path, PACKAGE)[:-3].replace(os.sep, '.'), path
 
 
-def test_the_two_mros_lines_do_not_import_each_other():
-    crossing = []
-    for line, other in (('mros_v1', 'mros2'), ('mros2', 'mros_v1')):
-        for directory, _, files in os.walk(os.path.join(PACKAGE, line)):
-            for name in sorted(files):
-                if name.endswith('.py'):
-                    path = os.path.join(directory, name)
-                    crossing += [(path, i) for i in _imports(path)
-                                 if (i + '.').startswith(other + '.')]
-    assert crossing == []
+def _unit_imports():
+    """[(importing unit, imported unit, 'module imports colcon_mros.name')]."""
+    found = []
+    for module, path in _modules():
+        for imported in _imports(path):
+            found.append((_unit(module), _unit(imported),
+                          '%s imports colcon_mros.%s' % (module, imported)))
+    return found
 
 
-def test_the_check_sees_an_upward_import(tmp_path):
+def test_every_subpackage_sits_on_one_level():
+    units = {_unit(module) for module, _ in _modules()}
+    placed = [unit for units_of_level in LEVELS for unit in units_of_level]
+    assert len(placed) == len(set(placed))
+    assert units == set(placed)
+    assert {name for name in os.listdir(PACKAGE)
+            if os.path.isdir(os.path.join(PACKAGE, name)) and name != '__pycache__'} \
+        == set(placed) - {'', 'cli'}
+
+
+def test_every_import_goes_down_the_levels():
+    imports = _unit_imports()
+    assert len(imports) > 80
+    assert [text for unit, imported, text in imports if _level(imported) > _level(unit)] == []
+
+
+def test_siblings_on_a_level_never_import_each_other():
+    assert [text for unit, imported, text in _unit_imports()
+            if unit != imported and _level(unit) == _level(imported)] == []
+
+
+def test_a_back_end_stands_on_its_own_front_end_only():
+    assert [text for unit, imported, text in _unit_imports()
+            if unit in STACKS and imported in STACKS and STACKS[unit] != STACKS[imported]] == []
+
+
+def test_no_cycle_between_subpackages():
+    graph = {}
+    for unit, imported, _ in _unit_imports():
+        if unit != imported:
+            graph.setdefault(unit, set()).add(imported)
+    # Kahn's algorithm: what cannot be ordered lies on a cycle.
+    remaining = {unit: set(targets) for unit, targets in graph.items()}
+    progress = True
+    while remaining and progress:
+        progress = False
+        for unit in sorted(remaining):
+            if not remaining[unit] - {u for u in remaining[unit] if u not in remaining}:
+                del remaining[unit]
+                progress = True
+    assert remaining == {}
+
+
+def test_the_checks_see_an_upward_and_a_sibling_import(tmp_path):
     module = tmp_path / 'upward.py'
-    module.write_text('def f():\n    from colcon_mros.integrations import installed_files\n')
-    assert list(_imports(str(module))) == ['integrations.installed_files']
-    assert LAYERS.index(_layer('integrations')) < LAYERS.index(_layer('generator.parse'))
-    # A subpackage's modules in two layers: the PC target above the export,
-    # the library's rules below it.
-    assert LAYERS.index(_layer('mros_v1.pc_target.build')) < LAYERS.index(_layer('export'))
-    assert LAYERS.index(_layer('export.firmware_export')) < LAYERS.index(_layer('mros_v1.rules'))
+    module.write_text('def f():\n    from colcon_mros.integrations import installed_files\n'
+                      'from colcon_mros.ros2.model import ModelBuilder\n')
+    assert sorted(_imports(str(module))) == ['integrations.installed_files', 'ros2.model.ModelBuilder']
+    assert _level(_unit('integrations.installed_files')) > _level(_unit('ros1.parse'))
+    assert _level(_unit('ros2.model')) == _level(_unit('ros1.parse'))
+    assert _unit('cli') == _unit('__main__') == 'cli'
+    assert _unit('errors') == ''
 
 
 # The trees beside the package; each shares code with the others only

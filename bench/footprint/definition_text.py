@@ -7,9 +7,10 @@ Run by bench/footprint/run.sh, or alone:
     PYTHONPATH=. /usr/bin/python3 bench/footprint/definition_text.py
 """
 
-from colcon_mros.generator.model import gencpp_definition_text
-from colcon_mros.generator.parse import SpecLoader
-from colcon_mros.generator.workspace import installed_packages, msg_search_path
+from colcon_mros.ros1.model import gencpp_definition_text
+from colcon_mros.mros_v1.names import RESERVED_NAMES
+from colcon_mros.ros1.parse import SpecLoader
+from colcon_mros.ros1.workspace import installed_packages, msg_search_path
 
 DEBIAN_MESSAGE_PACKAGES = [
     'std_msgs', 'geometry_msgs', 'sensor_msgs', 'nav_msgs', 'trajectory_msgs',
@@ -34,7 +35,7 @@ def _type_names(loader, packages):
 
 def main():
     packages = installed_packages(['/usr'])
-    loader = SpecLoader(msg_search_path(packages))
+    loader = SpecLoader(msg_search_path(packages), RESERVED_NAMES)
     names = _type_names(loader, packages)
 
     def size(name, compact):

@@ -21,7 +21,7 @@ if [ ! -f "${MROS_V1_ROOT:-}/mros-lib/Makefile.m" ]; then
   exit 2
 fi
 mros_src="$MROS_V1_ROOT/mros-lib/mros-src"
-ros_h=(-I"$mros_src/api" -I"$mros_src/os/target/os_asp" -I"$repo/colcon_mros/mros_v1/pc_target/asp")
+ros_h=(-I"$mros_src/api" -I"$mros_src/os/target/os_asp" -I"$repo/colcon_mros/library_tools/mros_v1/pc_target/asp")
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 

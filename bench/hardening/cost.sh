@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# What genmros' patch set for the mROS v1 library (colcon_mros/mros_v1/patches)
+# What genmros' patch set for the mROS v1 library (colcon_mros/library_tools/mros_v1/patches)
 # costs in code: each C source of the library a patch changes, compiled as
 # the library's own build compiles it for the board (-Os, the board's CPU),
 # as it is and with the patches applied (genmros mros-v1-harden on a copy),
@@ -20,7 +20,7 @@ cp -r "$1/mros-lib" "$work/as_is/"
 cp -r "$1/mros-lib" "$work/hardened/"
 (cd "$repo" && /usr/bin/python3 -m colcon_mros mros-v1-harden "$work/hardened" >/dev/null)
 
-target="$repo/colcon_mros/mros_v1/pc_target"
+target="$repo/colcon_mros/library_tools/mros_v1/pc_target"
 declare -A cpus=(
   [cortex-m0]="-mcpu=cortex-m0 -mthumb"
   [cortex-m4]="-mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16"

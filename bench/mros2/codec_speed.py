@@ -65,7 +65,7 @@ TEXT = 'joint_%u'
 
 def _models(workspace):
     sys.path.insert(0, REPO)
-    from colcon_mros.generator.storage import HeapStorage
+    from colcon_mros.core.storage import HeapStorage
     from colcon_mros.ros2.interfaces import all_packages
     from colcon_mros.ros2.model import ModelBuilder
     ours = ModelBuilder(all_packages([workspace], []), HeapStorage())

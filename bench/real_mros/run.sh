@@ -35,7 +35,7 @@ else
 fi
 
 src="$mros/mros-lib/mros-src"
-target="$repo/colcon_mros/mros_v1/pc_target"
+target="$repo/colcon_mros/library_tools/mros_v1/pc_target"
 includes=(-I"$target/asp" -I"$target/mbed" -I"$here/board_only")
 for dir in inc api protocol/cimpl node/cimpl topic/cimpl os/target/os_asp comm/cimpl/target/lwip \
     comm/cimpl packet/cimpl packet/template/version/kinetic packet/cimpl/version/kinetic transfer/cimpl; do
@@ -101,7 +101,7 @@ for entry in "${apps[@]}"; do
   # includes board libraries the target does not have (image_publisher's camera).
   PYTHONPATH="$repo" /usr/bin/python3 -c 'import sys
 from colcon_mros.errors import GenmrosError
-from colcon_mros.mros_v1.pc_target.asp_cfg import read_config, write_kernel_config
+from colcon_mros.library_tools.mros_v1.pc_target.asp_cfg import read_config, write_kernel_config
 app_cfg, mros_lib, target_cfg, output = sys.argv[1:]
 try:
     config = read_config(app_cfg, [mros_lib, target_cfg])

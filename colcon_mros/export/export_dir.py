@@ -34,10 +34,10 @@ pruning happen under an exclusive lock.
 import fcntl
 import os
 
-from colcon_mros.generator.defaults import DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE
-from colcon_mros.generator.definition import KINDS, Definition, definitions_in
+from colcon_mros.core.defaults import DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE
+from colcon_mros.ros1.definition import KINDS, Definition, definitions_in
 from colcon_mros.errors import GenmrosError
-from colcon_mros.generator.output import check_writable, write_files
+from colcon_mros.core.output import check_writable, write_files
 
 # (storage, definition text) of the headers catkin and colcon export.
 HEADER_FORM = (DEFAULT_STORAGE, DEFAULT_DEFINITION_TEXT)
@@ -46,6 +46,8 @@ SHARE_DIR = 'share'
 CMAKE_FILE = 'mros_export.cmake'
 IGNORE_MARKER = 'COLCON_IGNORE'
 MANIFEST = 'package.xml'
+# mros_export.cmake's template.
+TEMPLATE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'templates')
 _STATE_DIR = '.genmros'
 _CLAIMS_DIR = 'claims'
 _LEDGER = 'ledger'
@@ -224,9 +226,10 @@ class ExportDir:
 
     def _write_tables(self, cmake_module):
         """mros_export.cmake (with the types the dir holds now) and COLCON_IGNORE."""
-        from colcon_mros.generator.render import render_export_cmake  # empy, only when writing
+        from colcon_mros.core.render import render_template  # empy, only when writing
         write_files(self.path, {
-            CMAKE_FILE: render_export_cmake(INCLUDE_DIR, self.types(), cmake_module),
+            CMAKE_FILE: render_template(TEMPLATE_DIR, CMAKE_FILE + '.em', include_dir=INCLUDE_DIR,
+                                        types=self.types(), cmake_module=cmake_module),
             IGNORE_MARKER: '',
         })
 

@@ -15,7 +15,7 @@ them again where the library compiles.
 
 Everything is rendered before anything is written, so a bad definition
 leaves OUT as it was, and OUT is switched to the new export in one step
-(:func:`colcon_mros.generator.output.write_tree`). Headers left over from types that
+(:func:`colcon_mros.core.output.write_tree`). Headers left over from types that
 no longer exist in a package the run exported are removed. With a run
 record (:mod:`colcon_mros.export.run_record`), a run whose inputs, arguments
 and genmros are those of the last one does nothing.
@@ -27,19 +27,20 @@ import time
 from colcon_mros.errors import GenmrosError, close_match
 from colcon_mros.export.export_dir import HEADER_FORM
 from colcon_mros.export.run_record import RunRecord, definition_directories, snapshot
-from colcon_mros.generator.model import ModelBuilder
-from colcon_mros.generator.output import is_generated, write_tree
-from colcon_mros.generator.parse import SpecLoader
-from colcon_mros.generator.defaults import DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE, EXPORT_PARTS
-from colcon_mros.generator.render import Renderer
-from colcon_mros.generator.storage import storage_for
-from colcon_mros.generator.workspace import (environment_packages, installed_packages,
+from colcon_mros.ros1.model import ModelBuilder
+from colcon_mros.core.output import is_generated, write_tree
+from colcon_mros.ros1.parse import SpecLoader
+from colcon_mros.core.defaults import DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE, EXPORT_PARTS
+from colcon_mros.mros_v1.render import Renderer
+from colcon_mros.core.storage import storage_for
+from colcon_mros.ros1.workspace import (environment_packages, installed_packages,
                                              msg_search_path, split_msg_paths,
                                              workspace_packages)
 from colcon_mros.mros_v1.aggregates import SOURCE_DIRS, firmware_files
 from colcon_mros.mros_v1.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
 from colcon_mros.mros_v1.fit import Fit
-from colcon_mros.mros_v1.settings import read_settings
+from colcon_mros.mros_v1.names import RESERVED_NAMES
+from colcon_mros.core.settings import read_settings
 
 
 class ExportResult:
@@ -105,7 +106,7 @@ class ExportRequest:
     and ``colcon build --mros-export`` both make one.
 
     prefixes=None searches the ROS environment for packages; only is 'all',
-    'headers' or 'aggregates' (colcon_mros.generator.defaults.EXPORT_PARTS);
+    'headers' or 'aggregates' (colcon_mros.core.defaults.EXPORT_PARTS);
     export_dir: an export dir the types come from, whose headers serve
     where they have the form asked for; record: the run record's path;
     library_settings: the mROS v1 library's and app's settings headers to
@@ -182,8 +183,8 @@ class FirmwareTypes:
 
         search_path = msg_search_path(packages)
         self.storage = storage_for(request.storage_kind, request.option_files, search_path)
-        loader = SpecLoader(search_path)
-        self.storage.check(loader)
+        loader = SpecLoader(search_path, RESERVED_NAMES)
+        self.storage.check(loader.field_shape)
         builder = ModelBuilder(loader, self.storage, request.definition_text)
         roots = [loader.load_message_file(d.path, d.package).full_name for d in selection.messages]
         services = [builder.service(loader.load_service_file(d.path, d.package))

@@ -13,15 +13,15 @@ writes for the ROS 2 packages it built, and what a firmware's
     DIR/mros2/COLCON_IGNORE                  so no tool takes share/<pkg> for packages
 
 The include dir is switched in one step
-(:func:`colcon_mros.generator.output.write_tree`); the definitions are
-written with :func:`colcon_mros.generator.output.write_files`.
+(:func:`colcon_mros.core.output.write_tree`); the definitions are
+written with :func:`colcon_mros.core.output.write_files`.
 """
 
 import os
 
 from colcon_mros.export.export_dir import IGNORE_MARKER
-from colcon_mros.generator.output import write_files
-from colcon_mros.mros2.export import export_firmware
+from colcon_mros.core.output import write_files
+from colcon_mros.export.mros2_export import export_firmware
 from colcon_mros.ros2.interfaces import AMENT_PACKAGE_INDEX
 
 MROS2_DIR = 'mros2'

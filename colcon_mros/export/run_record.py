@@ -7,7 +7,7 @@ again. The output is current when
 
 - the record exists and was written by the same run: the same genmros
   version, templates and arguments (:meth:`Renderer.fingerprint
-  <colcon_mros.generator.render.Renderer.fingerprint>`);
+  <colcon_mros.mros_v1.render.Renderer.fingerprint>`);
 - every input it names has the modification time and size it had when that
   run started: the .msg/.srv and options files the output comes from, and
   the msg/ and srv/ directories a run searched for them (so that a file
@@ -26,7 +26,7 @@ decides.
 
 import os
 
-from colcon_mros.generator.output import GENERATED_MARKER, write_files
+from colcon_mros.core.output import GENERATED_MARKER, write_files
 
 _UNKNOWN = (0, -1)  # the state of a missing file, or of one changed during the run
 _RUN = '# run '

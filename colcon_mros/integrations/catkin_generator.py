@@ -23,14 +23,15 @@ downstream rebuilds for nothing.
 import os
 import time
 
-from colcon_mros.generator.definition import Definition
+from colcon_mros.ros1.definition import Definition
 from colcon_mros.errors import GenmrosError
 from colcon_mros.export.export_dir import ExportDir
 from colcon_mros.export.run_record import RunRecord, snapshot
-from colcon_mros.generator.model import ModelBuilder
-from colcon_mros.generator.output import is_generated, write_files
-from colcon_mros.generator.parse import SpecLoader
-from colcon_mros.generator.render import Renderer
+from colcon_mros.ros1.model import ModelBuilder
+from colcon_mros.core.output import is_generated, write_files
+from colcon_mros.ros1.parse import SpecLoader
+from colcon_mros.mros_v1.names import RESERVED_NAMES
+from colcon_mros.mros_v1.render import Renderer
 
 GENERATED_LOG = 'Generating mROS headers from %s/%s'
 REMOVED_LOG = 'genmros: removed %s'
@@ -106,7 +107,7 @@ def generate_files(paths, package, output_dir, search_path, template_dir=None, e
     all_of_package: paths are all the package has, so the headers and export
     claims of its other (removed) definitions go."""
     started_ns = time.time_ns()
-    loader = SpecLoader(search_path)
+    loader = SpecLoader(search_path, RESERVED_NAMES)
     builder = ModelBuilder(loader)
     renderer = Renderer(template_dir)
     loaded = [_load(loader, builder, Definition(package, path)) for path in paths]

@@ -56,7 +56,7 @@ def _exporting(build_main):
     def main(*, context):
         export_dir = context.args.mros_export
         if export_dir:
-            from colcon_mros.generator.output import check_writable
+            from colcon_mros.core.output import check_writable
             _fail_as_colcon_error(check_writable, os.path.abspath(export_dir))
         rc = build_main(context=context)
         if rc or not export_dir:

@@ -23,7 +23,7 @@ from colcon_mros.errors import GenmrosError
 from colcon_mros.export.export_dir import ExportDir
 from colcon_mros.export.run_record import RunRecord, definition_directories, snapshot
 from colcon_mros.integrations.installed_files import CMAKE_MODULE, installed_file
-from colcon_mros.generator.ros_environment import require_ros_python
+from colcon_mros.ros1.environment import require_ros_python
 
 
 # colcon's package types of the two stacks (colcon-ros).
@@ -74,8 +74,8 @@ def export_built_packages(args, export_dir):
             return
     require_ros_python()
     from colcon_mros.export.firmware_export import ExportRequest, export  # needs genmsg
-    from colcon_mros.generator.render import Renderer  # needs empy
-    from colcon_mros.generator.workspace import environment_packages, workspace_packages
+    from colcon_mros.mros_v1.render import Renderer  # needs empy
+    from colcon_mros.ros1.workspace import environment_packages, workspace_packages
     packages = environment_packages()
     packages.update(workspace_packages(workspace))
 

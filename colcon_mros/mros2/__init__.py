@@ -4,6 +4,6 @@
 (:mod:`colcon_mros.ros2.model`) in C++; the logic-free templates in
 ``templates/`` render it; ``support/mros2_message_wire.hpp``, a static
 header, holds the CDR code every message uses; :mod:`colcon_mros.mros2.render`
-puts them together, and :mod:`colcon_mros.mros2.export` writes what one
+puts them together, and :mod:`colcon_mros.export.mros2_export` writes what one
 firmware needs, templates.hpp included.
 """

@@ -11,8 +11,9 @@ and bounded storage), and default values and constants as C++11 literals.
 import ast
 import os
 
-from colcon_mros.generator.cpp import comment_lines, cpp_constant_literal, cpp_string_literal_lines
-from colcon_mros.generator.names import CPP_KEYWORDS
+from colcon_mros.core.cpp_literals import comment_lines, cpp_number_literal, cpp_string_literal_lines
+from colcon_mros.core.cpp_names import CPP_KEYWORDS
+from colcon_mros.ros2.rosidl import type_file_stem
 
 # rosidl's number types -> C++ (rosidl_generator_cpp's, with octet and char as uint8_t).
 NUMBER_TYPES = {
@@ -21,21 +22,10 @@ NUMBER_TYPES = {
     'uint32': 'uint32_t', 'int64': 'int64_t', 'uint64': 'uint64_t', 'float': 'float',
     'double': 'double',
 }
-# The ROS 1 spelling of a number type, in which the shared literal writer takes it.
-_LITERAL_TYPES = {
-    'boolean': 'bool', 'octet': 'uint8', 'char': 'uint8', 'float': 'float32',
-    'double': 'float64',
-}
 WIRE_HEADER = 'mros2_message_wire.hpp'
 WIRE_VERSION = 1
 # The static headers an mros2 export holds besides the messages.
 SUPPORT_HEADERS = (WIRE_HEADER, 'mros_message_containers.h')
-
-
-def header_stem(name):
-    """rosidl's file name of a type: 'TypeName' -> 'type_name', 'UInt16' -> 'u_int16'."""
-    from rosidl_pycommon import convert_camel_case_to_lower_case_underscore
-    return convert_camel_case_to_lower_case_underscore(name)
 
 
 def identifier(name):
@@ -47,7 +37,7 @@ def identifier(name):
 def _number_literal(number_type, value):
     if number_type == 'boolean':
         return 'true' if value else 'false'
-    return cpp_constant_literal(_LITERAL_TYPES.get(number_type, number_type), value)
+    return cpp_number_literal(NUMBER_TYPES[number_type], value)
 
 
 def _wstring_literal(text):
@@ -147,7 +137,7 @@ class CppMessageName:
         self.cpp_name = '%s::%s::%s' % (message.package, message.kind, message.name)
         self.dds_type_name = '%s::%s::dds_::%s_' % (message.package, message.kind, message.name)
         # A service's halves live in the service's header.
-        stem = header_stem(message.name.rpartition('_')[0] if message.kind == 'srv'
+        stem = type_file_stem(message.name.rpartition('_')[0] if message.kind == 'srv'
                            else message.name)
         self.header = '%s/%s/%s.hpp' % (message.package, message.kind, stem)
 
@@ -175,7 +165,7 @@ class CppService:
         self.kind = 'srv'
         self.name = service.name
         self.cpp_name = '%s::srv::%s' % (service.package, service.name)
-        self.header = '%s/srv/%s.hpp' % (service.package, header_stem(service.name))
+        self.header = '%s/srv/%s.hpp' % (service.package, type_file_stem(service.name))
         self.guard = header_guard(self.header)
         self.source = _source(service)
         self.request = CppMessage(service.request)

@@ -5,30 +5,17 @@ One header per message (``pkg/msg/type_name.hpp``) and per service
 firmware's ``templates.hpp``. Nothing is written here.
 """
 
-import functools
 import os
 
 from colcon_mros import __version__
-from colcon_mros.generator.render import render_template
+from colcon_mros.core.render import render_template, static_text
 from colcon_mros.mros2.cpp import (SUPPORT_HEADERS, WIRE_HEADER, WIRE_VERSION, CppMessage,
                                    CppMessageName, CppService)
 
 TEMPLATE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'templates')
+# The wire header; the containers header is the core's.
 SUPPORT_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'support')
-# The support headers that live with the ROS 1 back end and serve both.
-_SHARED_SUPPORT_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
-                                   'generator', 'support')
 TEMPLATES_HEADER = 'templates.hpp'
-
-
-@functools.lru_cache(maxsize=None)
-def _support_text(name):
-    for directory in (SUPPORT_DIR, _SHARED_SUPPORT_DIR):
-        path = os.path.join(directory, name)
-        if os.path.isfile(path):
-            with open(path) as source:
-                return source.read()
-    raise FileNotFoundError(name)
 
 
 def _render(name, **context):
@@ -37,7 +24,7 @@ def _render(name, **context):
 
 
 def support_headers():
-    return {name: _support_text(name) for name in SUPPORT_HEADERS}
+    return {name: static_text(SUPPORT_DIR, name) for name in SUPPORT_HEADERS}
 
 
 def message_header(message):

@@ -1,9 +1,13 @@
-"""The mROS v1 library: everything genmros knows of it, in one place.
+"""The mROS v1 back end: C++ message headers for the mROS v1 library.
 
-What the library is (its settings, the rule table of what a message type
-needs of them, the fit check and its compile-time rendering, the
-per-firmware aggregates and on-board delivery, its apps), which the export
-uses; and what runs it on top of the export (the fit flow, the fit report,
-the PC target, the patch set). docs/design.md maps the modules and their
-layers.
+:mod:`.cpp` spells the ROS 1 type model in C++, :mod:`.names` hands the
+names its headers own to the core's escaping, :mod:`.render` renders the
+logic-free templates in ``templates/`` beside the static headers in
+``support/``. What the library is, as far as the headers and a firmware's
+aggregates need it, is here too: its settings headers and the rule table
+of what a type needs of them (:mod:`.rules`), the fit check (:mod:`.fit`)
+and its compile-time form (:mod:`.fit_check_header`), the per-firmware
+aggregates (:mod:`.aggregates`) and an app's layout (:mod:`.app`). What runs
+the library (the PC target, its patches, the fit report) is in
+:mod:`colcon_mros.library_tools.mros_v1`.
 """

@@ -1,5 +1,5 @@
 """The mROS v1 choices the command line offers, free of ROS imports like
-:mod:`colcon_mros.generator.defaults`."""
+:mod:`colcon_mros.core.defaults`."""
 
 # PUB_MSG_MAX_SIZE share of a type without a maximum wire size.
 DEFAULT_VARIABLE_SIZE_BUDGET = 1024

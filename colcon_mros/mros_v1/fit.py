@@ -11,6 +11,7 @@ becomes an error. The firmware as a whole is checked against
 :data:`.rules.FRAME_SLOTS` where the library passes delivery no frame size.
 """
 
+from colcon_mros.core.settings import misfit_line
 from colcon_mros.errors import GenmrosError, GenmrosProblems
 from colcon_mros.mros_v1.rules import (FRAME_SLOTS, PEER_NAME_MAX, RULES, TABLES,
                                        TOPIC_NAME_MAX, FirmwareNeeds)
@@ -35,9 +36,7 @@ class Misfit:
         shortest = ('' if self.with_shortest_names is None
                     else '; even with the shortest topic and caller id it needs %d'
                     % self.with_shortest_names)
-        return ('%s: %s: %s needs %s >= %d (it is %d%s)'
-                % (self.setting.where(), self.type_name, self.what, self.setting.name,
-                   self.asked, self.setting.value, shortest))
+        return misfit_line(self.setting, self.type_name, self.what, self.asked, shortest)
 
 
 class FrameSlotsMisfit:

@@ -11,15 +11,13 @@ frames (mros_v1_delivery.h, where the library passes no frame size) to the
 number of blocks the publishing pools have (:data:`.rules.FRAME_SLOTS`).
 """
 
-import os
-
-from colcon_mros.generator.render import render_template
+from colcon_mros.core.render import render_template
+from colcon_mros.mros_v1.render import TEMPLATE_DIR
 from colcon_mros.mros_v1.rules import (FRAME_SLOTS, LIBRARY_HEADER_GUARD,
                                        LIBRARY_PASSES_FRAME_SIZE, POOL_KINDS, RULES,
                                        SETTINGS_HEADERS, FirmwareNeeds)
 
 FIT_CHECK_HEADER = 'mros_v1_fit_check.h'
-TEMPLATE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'templates')
 
 
 class Check:

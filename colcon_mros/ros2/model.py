@@ -4,7 +4,7 @@ Built from rosidl's definitions (:mod:`colcon_mros.ros2.parse`): members and
 constants with their lines and comments, each member's element (a number,
 a string, a wstring or a nested message) and container (none, ``T[N]``,
 ``T[<=N]``, ``T[]``), defaults, and the bounds of bounded storage
-(:mod:`colcon_mros.generator.storage`, the same options files as the ROS 1
+(:mod:`colcon_mros.core.storage`, the same options files as the ROS 1
 side). It also knows the CDR sizes: XCDR1 aligns each number to its size
 from the start of the stream, so the smallest and largest image of a
 message is found by walking its members from position 0, never by adding
@@ -12,7 +12,8 @@ per-type sizes. C++ spelling is :mod:`colcon_mros.mros2.cpp`'s job.
 """
 
 from colcon_mros.errors import GenmrosError, close_match
-from colcon_mros.generator.closure import contained_first
+from colcon_mros.core.closure import contained_first
+from colcon_mros.core.storage import FieldShape
 from colcon_mros.ros2.parse import parse_interface
 
 # rosidl's IDL number types: their CDR size, which is also their alignment.
@@ -183,6 +184,12 @@ def _default_of(member, element):
     return value
 
 
+def _type_text(element, number_type, message, container):
+    """A member's type as a .msg spells it, for an error line: 'string', 'int32[]'."""
+    base = {'number': number_type, 'message': message and message.name}.get(element, element)
+    return base + ('[]' if container == 'sequence' else '')
+
+
 class ModelBuilder:
     """Builds the models of the types of a set of packages, each once, the
     types they contain first."""
@@ -268,6 +275,7 @@ class ModelBuilder:
                        constants)
 
     def _member(self, parsed, full_name, member, section):
+        """The Member of a structure's member, bounded by the storage."""
         from rosidl_parser import definition as idl
         line = parsed.line_of(member.name, section)
         container, count, element_type = None, None, member.type
@@ -298,10 +306,11 @@ class ModelBuilder:
                                parsed.path, line)
         # Bounded storage bounds what rosidl leaves unbounded, from the options files.
         pkg, _, type_name = full_name.split('/')
+        unbounded_string = element in ('string', 'wstring') and string_bound is None
         bounds = self.storage.field_bounds(
             '%s/%s' % (pkg, type_name), member.name,
-            ('string' if element in ('string', 'wstring') and string_bound is None else 'uint8')
-            + ('[]' if container == 'sequence' else ''), parsed.path, line)
+            FieldShape(_type_text(element, number_type, message, container), unbounded_string,
+                       container == 'sequence'), parsed.path, line)
         if string_bound is None:
             string_bound = bounds.max_size
         if container == 'sequence':

@@ -12,7 +12,6 @@ import contextlib
 import io
 import re
 
-from colcon_mros.empy_proxy import allow_new_interpreter
 from colcon_mros.errors import GenmrosError
 
 
@@ -83,7 +82,6 @@ def _adapt(package, kind, name, text):
     """The IDL text rosidl_adapter makes of a .msg or .srv."""
     from rosidl_adapter.parser import parse_message_string, parse_service_string
     from rosidl_adapter.resource import evaluate_template
-    allow_new_interpreter()
     if kind == 'msg':
         return evaluate_template('msg.idl.em', {
             'pkg_name': package, 'relative_input_file': 'msg/%s.msg' % name,

@@ -5,7 +5,7 @@ definition's claim. The catkin side is in test_catkin_incremental.py."""
 
 import os
 
-from colcon_mros.generator.cpp import SUPPORT_HEADERS
+from colcon_mros.mros_v1.cpp import SUPPORT_HEADERS
 from conftest import run_genmros
 
 STD_MSGS = '/usr/share/std_msgs/msg'

@@ -26,8 +26,8 @@ KILLS = 30
 
 LAUNCHER = '''
 import os, signal, sys
-import colcon_mros.generator.output as output
-import colcon_mros.generator.render as render
+import colcon_mros.core.output as output
+import colcon_mros.mros_v1.render as render
 from colcon_mros.cli import main
 
 def die():

@@ -107,7 +107,7 @@ def test_the_pc_target_builds_and_runs_an_app_from_the_installed_package(venv_in
                              venv_install.root)
     # The target's files, and the program, come from the venv's package.
     installed_target = venv_install.run(
-        ['python3', '-c', 'import colcon_mros.mros_v1.pc_target as t, os; '
+        ['python3', '-c', 'import colcon_mros.library_tools.mros_v1.pc_target as t, os; '
                           'print(os.path.dirname(t.__file__))'], venv_install.root).stdout.strip()
     assert installed_target.startswith(venv_install.prefix + os.sep)
     assert '-I%s/asp' % installed_target in built.stdout, built.stdout[-3000:]

@@ -1,9 +1,11 @@
-"""cmake/genmros-names.cmake is what `genmros cmake-names` prints: the names
+"""cmake/genmros-names.cmake is what scripts/make-cmake-names.py writes: the names
 the CMake module and the catkin generator use come from Python, and neither
 CMake file spells them again."""
 
 import os
 import re
+import subprocess
+import sys
 
 from conftest import REPO, run_genmros
 
@@ -17,11 +19,27 @@ def _code(path):
         return re.sub(r'#[^\n]*', '', stream.read())
 
 
-def test_the_committed_names_file_is_genmros_output():
+def test_the_committed_names_file_is_the_scripts_output():
     with open(os.path.join(REPO, 'cmake', 'genmros-names.cmake')) as stream:
         committed = stream.read()
-    assert committed == run_genmros('cmake-names').stdout
+    script = os.path.join(REPO, 'scripts', 'make-cmake-names.py')
+    check = subprocess.run([sys.executable, script, '--check'], capture_output=True, text=True)
+    assert (check.returncode, check.stderr) == (0, '')
     assert 'set(GENMROS_SERVICE_HALVES "Request;Response")' in committed
+
+
+def test_the_names_check_sees_a_stale_file(tmp_path):
+    # The script run from a copy of the checkout whose names file is stale.
+    for tree in ('colcon_mros', 'scripts', 'cmake'):
+        subprocess.run(['cp', '-r', os.path.join(REPO, tree), str(tmp_path)], check=True)
+    names = tmp_path / 'cmake' / 'genmros-names.cmake'
+    names.write_text(names.read_text().replace('Request;Response', 'Request'))
+    script = str(tmp_path / 'scripts' / 'make-cmake-names.py')
+    check = subprocess.run([sys.executable, script, '--check'], capture_output=True, text=True)
+    assert check.returncode == 1
+    assert check.stderr == '%s differs from the names in colcon_mros: run %s\n' % (names, script)
+    assert subprocess.run([sys.executable, script], check=True).returncode == 0
+    assert 'set(GENMROS_SERVICE_HALVES "Request;Response")' in names.read_text()
 
 
 def test_the_cmake_files_take_the_names_from_it():

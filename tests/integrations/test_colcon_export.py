@@ -9,7 +9,7 @@ import os
 
 import pytest
 
-from colcon_mros.generator.cpp import SUPPORT_HEADERS
+from colcon_mros.mros_v1.cpp import SUPPORT_HEADERS
 from fixtures.build_integration.tools import (
     MESSAGE_PACKAGES, TEST_WS_SRC,
     build_firmware_of_whole_export, compile_headers, expected_header_names, genmros_export,

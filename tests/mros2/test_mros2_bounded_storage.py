@@ -10,7 +10,7 @@ import pytest
 from conftest import run_genmros
 from testing import fastcdr, mros2_harness, ros2_messages
 
-from colcon_mros.generator.storage import BoundedStorage
+from colcon_mros.core.storage import BoundedStorage
 from colcon_mros.mros2.cpp import CppMessageName
 from colcon_mros.ros2.interfaces import all_packages
 from colcon_mros.ros2.model import ModelBuilder

@@ -117,7 +117,7 @@ macro(_generate_module_mros ARG_PKG ARG_GEN_OUTPUT_DIR ARG_GENERATED_FILES)
     set(_genmros_export_args "")
     if(MROS_EXPORT_DIR)
       list(APPEND _genmros_records "${_genmros_export_records}/${ARG_PKG}")
-      set(_genmros_export_args --export-dir "${MROS_EXPORT_DIR}"
+      set(_genmros_export_args --add-to-export-dir "${MROS_EXPORT_DIR}"
         --cmake-module "${_GENMROS_CMAKE_DIR}/mros_generate.cmake")
     endif()
     _genmros_devel_headers("${ARG_GEN_OUTPUT_DIR}")

@@ -1,0 +1,122 @@
+"""What one mros2 firmware needs, and what one ROS 2 package's build writes.
+
+:func:`export_firmware` (``genmros mros2-export``, the CMake module's
+``mros2_import_messages()``): the named types of a ROS 2 workspace and the
+installed packages, every type they contain, the support headers and, for
+the types the firmware publishes and subscribes to, mros2's templates.hpp,
+switched into the output directory in one step
+(:func:`colcon_mros.core.output.write_tree`): a bad definition leaves it
+as it was, and headers of types no longer exported leave it.
+
+:func:`generate_package` (``genmros mros2-generate``, run by the rosidl
+generator extension for each interface package colcon builds): the headers
+of one package's interfaces.
+"""
+
+import os
+
+from colcon_mros.errors import GenmrosError
+from colcon_mros.core.output import is_generated, write_files, write_tree
+from colcon_mros.core.storage import storage_for
+from colcon_mros.mros2 import render
+from colcon_mros.ros2.interfaces import all_packages, source_package
+from colcon_mros.ros2.model import ModelBuilder
+
+
+class Mros2Export:
+    """What an export wrote: its messages and services, changed and removed paths."""
+
+    def __init__(self, messages, services, changed, removed):
+        self.messages = messages
+        self.services = services
+        self.changed = changed
+        self.removed = removed
+
+
+def _builder(packages, storage, option_files):
+    # A package's own bounds: msg/genmros.options, as on the ROS 1 side.
+    msg_dirs = {name: [os.path.join(package.root, 'msg')] for name, package in packages.items()}
+    return ModelBuilder(packages, storage_for(storage, option_files, msg_dirs))
+
+
+def _select(builder, package_names, type_names):
+    """The messages and services named: whole packages, or single types
+    ('pkg/msg/Type', 'pkg/Type', 'pkg/srv/Service' or a service's half)."""
+    messages, services = [], []
+    for name in package_names:
+        if name not in builder.packages:
+            raise GenmrosError("unknown ROS 2 package '%s' (not in the workspace or the installed "
+                               'ROS 2 packages)' % name)
+        for kind, type_name in sorted(builder.packages[name].interfaces):
+            if kind == 'msg':
+                messages.append(builder.message('%s/msg/%s' % (name, type_name)))
+            else:
+                services.append(builder.service('%s/srv/%s' % (name, type_name)))
+    for full_name in type_names:
+        parts = full_name.split('/')
+        if len(parts) == 3 and parts[1] == 'srv' and not parts[2].endswith(('_Request',
+                                                                             '_Response')):
+            services.append(builder.service(full_name))
+        else:
+            messages.append(builder.message(full_name))
+    return messages, services
+
+
+def render_types(messages, services):
+    """{path: text} of the headers of messages (service halves among them
+    are their services') and of services."""
+    files = {}
+    for message in messages:
+        if message.kind == 'msg':
+            files.update(render.message_header(message))
+    for service in services:
+        files.update(render.service_header(service))
+    return files
+
+
+def _within(path, directory):
+    return os.path.commonpath([os.path.abspath(path), os.path.abspath(directory)]) == \
+        os.path.abspath(directory)
+
+
+def export_firmware(output_dir, workspaces=(), prefixes=None, package_names=(), type_names=(),
+                    publish=(), subscribe=(), storage='heap', option_files=()):
+    """Write one firmware's mros2 headers under output_dir (see the module)."""
+    packages = all_packages(workspaces, prefixes)
+    builder = _builder(packages, storage, option_files)
+    publish_types = [builder.message(name) for name in publish]
+    subscribe_types = [builder.message(name) for name in subscribe]
+    if not package_names and not type_names and not publish and not subscribe:
+        if not workspaces:
+            raise GenmrosError('name the types to export (--type, --package, --publish, '
+                               '--subscribe) or a --workspace')
+        # A workspace's packages hide installed ones of the same name.
+        package_names = sorted(name for name, package in packages.items()
+                               if any(_within(package.root, w) for w in workspaces))
+    messages, services = _select(builder, package_names, type_names)
+    contained = builder.closure(messages + publish_types + subscribe_types +
+                                [half for service in services for half in service.dependencies])
+    files = render.support_headers()
+    files.update(render_types(contained, services))
+    if publish_types or subscribe_types:
+        files.update(render.templates_header(publish_types, subscribe_types))
+    changed, removed = write_tree(
+        output_dir, files, drop=lambda relative: is_generated(os.path.join(output_dir, relative)))
+    return Mros2Export([m for m in contained if m.kind == 'msg'], services, changed, removed)
+
+
+def generate_package(package_dir, output_dir, prefixes=None):
+    """Write the headers of the interfaces of the package in package_dir
+    under output_dir (``<output_dir>/<pkg>/msg/...``) and the support
+    headers; the types they contain from other packages (found in prefixes)
+    are theirs to generate.
+    Returns the paths it changed."""
+    package = source_package(package_dir)
+    packages = all_packages((), prefixes)
+    packages[package.name] = package
+    builder = _builder(packages, 'heap', ())
+    files = render_types(*_select(builder, [package.name], []))
+    # Every package's install holds the support headers too, so that its
+    # include/mros2 is a whole include root (same text in every package).
+    files.update(render.support_headers())
+    return write_files(output_dir, files)
