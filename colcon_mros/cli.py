@@ -327,26 +327,8 @@ def _add_mros2_export(subparsers):
     parser.set_defaults(run=_mros2_export)
 
 
-def _add_mros2_generate(subparsers):
-    parser = subparsers.add_parser(
-        'mros2-generate', help="[mros2, ROS 2] one package's headers (what colcon build runs "
-                               'through rosidl)',
-        description="mros2 (ROS 2): the headers of one ROS 2 package's interfaces, as the rosidl "
-                    'generator extension runs it for each package rosidl_generate_interfaces() '
-                    'builds.')
-    parser.add_argument('--package-dir', required=True, metavar='DIR',
-                        help="the package's source directory (with package.xml)")
-    parser.add_argument('--prefix', dest='prefixes', action='append', metavar='PREFIX',
-                        help='installed ROS 2 prefix the packages it depends on are in '
-                             '(repeatable; default: AMENT_PREFIX_PATH)')
-    parser.add_argument('-o', dest='output_dir', required=True, metavar='DIR',
-                        help='include root to write to (<DIR>/<pkg>/msg/...)')
-    parser.set_defaults(run=_mros2_generate)
-
-
 SUBCOMMANDS = (_add_generate, _add_export, _add_printers, _add_export_dir_commands,
-               _add_mros_v1_pc, _add_mros_v1_fit, _add_mros_v1_harden, _add_mros2_export,
-               _add_mros2_generate)
+               _add_mros_v1_pc, _add_mros_v1_fit, _add_mros_v1_harden, _add_mros2_export)
 
 
 def build_parser():
@@ -383,13 +365,6 @@ def _mros2_export(options):
     print('genmros: %d mros2 message types, %d services in %s (%d files changed, %d removed)'
           % (len(result.messages), len(result.services), options.output_dir,
              len(result.changed), len(result.removed)))
-
-
-def _mros2_generate(options):
-    from colcon_mros.ros2.environment import require_rosidl
-    require_rosidl()
-    from colcon_mros.export.mros2_export import generate_package
-    generate_package(options.package_dir, options.output_dir, options.prefixes)
 
 
 def _export(options):

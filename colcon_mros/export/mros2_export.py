@@ -7,19 +7,17 @@ the types the firmware publishes and subscribes to, mros2's templates.hpp,
 switched into the output directory in one step
 (:func:`colcon_mros.core.output.write_tree`): a bad definition leaves it
 as it was, and headers of types no longer exported leave it.
-
-:func:`generate_package` (``genmros mros2-generate``, run by the rosidl
-generator extension for each interface package colcon builds): the headers
-of one package's interfaces.
+:func:`render_types` also serves the rosidl generator
+(:mod:`colcon_mros.integrations.rosidl_generator`).
 """
 
 import os
 
 from colcon_mros.errors import GenmrosError
-from colcon_mros.core.output import is_generated, write_files, write_tree
+from colcon_mros.core.output import is_generated, write_tree
 from colcon_mros.core.storage import storage_for
 from colcon_mros.mros2 import render
-from colcon_mros.ros2.interfaces import all_packages, source_package
+from colcon_mros.ros2.interfaces import all_packages
 from colcon_mros.ros2.model import ModelBuilder
 
 
@@ -104,19 +102,3 @@ def export_firmware(output_dir, workspaces=(), prefixes=None, package_names=(), 
         output_dir, files, drop=lambda relative: is_generated(os.path.join(output_dir, relative)))
     return Mros2Export([m for m in contained if m.kind == 'msg'], services, changed, removed)
 
-
-def generate_package(package_dir, output_dir, prefixes=None):
-    """Write the headers of the interfaces of the package in package_dir
-    under output_dir (``<output_dir>/<pkg>/msg/...``) and the support
-    headers; the types they contain from other packages (found in prefixes)
-    are theirs to generate.
-    Returns the paths it changed."""
-    package = source_package(package_dir)
-    packages = all_packages((), prefixes)
-    packages[package.name] = package
-    builder = _builder(packages, 'heap', ())
-    files = render_types(*_select(builder, [package.name], []))
-    # Every package's install holds the support headers too, so that its
-    # include/mros2 is a whole include root (same text in every package).
-    files.update(render.support_headers())
-    return write_files(output_dir, files)

@@ -30,13 +30,15 @@ class Interface:
 
 
 class Package:
-    """A ROS 2 package's interface files, by type name."""
+    """A ROS 2 package's interface files, by type name: those in root's
+    msg/ and srv/, or, where interfaces is given ({(kind, name): Interface}),
+    exactly those (root None: the package has no directory to read)."""
 
-    def __init__(self, name, root):
+    def __init__(self, name, root, interfaces=None):
         self.name = name
         self.root = root
-        self.interfaces = {}
-        for kind in INTERFACE_KINDS:
+        self.interfaces = {} if interfaces is None else dict(interfaces)
+        for kind in INTERFACE_KINDS if interfaces is None else ():
             directory = os.path.join(root, kind)
             if not os.path.isdir(directory):
                 continue
@@ -58,20 +60,18 @@ class Package:
         return found
 
 
+def interface_of_file(package, path):
+    """The Interface of a file at <anything>/<kind>/<Type>.<extension>."""
+    kind = os.path.basename(os.path.dirname(path))
+    return Interface(package, kind, os.path.splitext(os.path.basename(path))[0], path)
+
+
 def _package_name(package_xml):
     from catkin_pkg.package import parse_package
     try:
         return parse_package(package_xml).name
     except Exception as error:  # catkin_pkg raises several types, all for a bad manifest
         raise GenmrosError('bad package manifest: %s' % str(error).splitlines()[0], package_xml)
-
-
-def source_package(directory):
-    """The Package whose package.xml is in directory."""
-    manifest = os.path.join(directory, 'package.xml')
-    if not os.path.isfile(manifest):
-        raise GenmrosError('no package.xml in the package directory', directory)
-    return Package(_package_name(manifest), directory)
 
 
 def workspace_packages(workspace):

@@ -7,7 +7,7 @@ import re
 import subprocess
 import sys
 
-from conftest import REPO, run_genmros
+from conftest import REPO
 
 CMAKE_FILES = [os.path.join(REPO, 'cmake', 'mros_generate.cmake'),
                os.path.join(REPO, 'share', 'genmros', 'cmake', 'genmros-extras.cmake')]
@@ -50,11 +50,3 @@ def test_the_cmake_files_take_the_names_from_it():
             assert name not in code, '%s spells %s' % (path, name)
     assert '${GENMROS_SERVICE_HALVES}' in _code(CMAKE_FILES[1])
     assert '${GENMROS_FIRMWARE_AGGREGATES}' in _code(CMAKE_FILES[0])
-
-
-def test_the_catkin_manifest_carries_genmros_version():
-    # catkin reads the version from share/genmros/package.xml, which cannot
-    # take it from Python: this holds the two equal.
-    with open(os.path.join(REPO, 'share', 'genmros', 'package.xml')) as stream:
-        manifest_version = re.search(r'<version>([^<]*)</version>', stream.read()).group(1)
-    assert 'genmros %s\n' % manifest_version == run_genmros('--version').stdout

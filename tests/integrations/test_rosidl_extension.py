@@ -6,10 +6,13 @@ user builds it: /usr/bin first on PATH, no ROS variables set. The packages
 find_package(rosidl_generator_cpp) and find_package(rosidl_generator_mros2);
 this checkout's generator is used, not an installed one:
 rosidl_generator_mros2_DIR names the checkout's share/rosidl_generator_mros2/cmake
-and GENMROS_BIN a wrapper that runs the checkout's genmros (and logs each
-run). The steps share one workspace and run in file order.
+and rosidl_generator_mros2_BIN a wrapper that runs the checkout's entry
+point (and logs each run). The steps share one workspace and run in file
+order; a package of its own shows that exactly the listed interfaces get
+headers.
 """
 
+import json
 import os
 import re
 import shutil
@@ -38,9 +41,10 @@ class Workspace:
         self.install = os.path.join(root, 'install')
         self.mros2_include = os.path.join(self.install, 'include', 'mros2')
         self.genmros_log = os.path.join(root, 'genmros-runs.log')
-        self.genmros = os.path.join(root, 'genmros')
+        self.genmros = os.path.join(root, 'rosidl_generator_mros2')
         with open(self.genmros, 'w') as stream:
-            stream.write('#!/bin/sh\necho "$*" >> "%s"\nexec /usr/bin/python3 -m colcon_mros "$@"\n'
+            stream.write('#!/bin/sh\necho "$*" >> "%s"\n'
+                         'exec /usr/bin/python3 -m colcon_mros.integrations.rosidl_generator "$@"\n'
                          % self.genmros_log)
         os.chmod(self.genmros, 0o755)
         self.env = {key: value for key, value in os.environ.items() if key not in ROS_VARIABLES}
@@ -53,7 +57,7 @@ class Workspace:
     def colcon_build(self, check=True):
         result = subprocess.run(
             ['colcon', 'build', '--merge-install', '--event-handlers', 'console_direct+',
-             '--cmake-args', '-DGENMROS_BIN=%s' % self.genmros,
+             '--cmake-args', '-Drosidl_generator_mros2_BIN=%s' % self.genmros,
              '-Drosidl_generator_mros2_DIR=%s' % EXTENSION_DIR],
             cwd=self.root, env=self.env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
             text=True)
@@ -63,11 +67,16 @@ class Workspace:
         return result
 
     def genmros_runs(self):
-        """The genmros command lines the builds ran so far."""
+        """The generator's command lines the builds ran so far (configure's
+        --generator-files included)."""
         if not os.path.exists(self.genmros_log):
             return []
         with open(self.genmros_log) as stream:
             return stream.read().splitlines()
+
+    def generator_runs(self):
+        """The runs that generated headers."""
+        return [run for run in self.genmros_runs() if run.startswith('--generator-arguments-file ')]
 
     def mros2_header(self, relative):
         with open(os.path.join(self.mros2_include, relative)) as stream:
@@ -92,12 +101,25 @@ def test_build_used_the_checkouts_generator(workspace):
         # -D without a type: the cache keeps them UNINITIALIZED.
         assert re.search(r'^rosidl_generator_mros2_DIR:\w+=%s$' % re.escape(EXTENSION_DIR),
                          cache, re.M)
-        assert re.search(r'^GENMROS_BIN:\w+=%s$' % re.escape(workspace.genmros), cache, re.M)
-    runs = workspace.genmros_runs()
+        assert re.search(r'^rosidl_generator_mros2_BIN:\w+=%s$' % re.escape(workspace.genmros),
+                         cache, re.M)
+    runs = workspace.generator_runs()
     assert len(runs) == 2, runs
-    assert all(run.startswith('mros2-generate --package-dir ') for run in runs)
-    # mros2_test_msgs' run names the prefix mros2_base_msgs is installed in.
-    assert '--prefix %s' % workspace.install in runs[1]
+    # rosidl's contract: one arguments file per package, as rosidl_generator_cpp's.
+    with open(runs[1].split(' ', 1)[1]) as stream:
+        arguments = json.load(stream)
+    assert arguments['package_name'] == 'mros2_test_msgs'
+    assert sorted(entry.rpartition(':')[2] for entry in arguments['idl_tuples']) == [
+        'msg/Reading.idl', 'srv/Query.idl']
+    assert workspace.source('mros2_test_msgs', 'msg', 'Reading.msg') in \
+        arguments['ros_interface_files']
+    # The types it contains from mros2_base_msgs: that package's installed .idl.
+    assert 'mros2_base_msgs:%s' % os.path.join(workspace.install, 'share', 'mros2_base_msgs',
+                                               'msg', 'Stamp.idl') \
+        in arguments['ros_interface_dependencies']
+    # The templates are dependencies of the rule.
+    assert os.path.join(os.path.dirname(render.__file__), 'templates', 'message_class.hpp.em') \
+        in arguments['target_dependencies']
 
 
 def test_mros2_headers_are_installed(workspace):
@@ -163,14 +185,14 @@ def test_unchanged_rebuild_runs_no_genmros(workspace):
 
 
 def test_edited_message_is_regenerated(workspace):
-    before = len(workspace.genmros_runs())
+    before = len(workspace.generator_runs())
     workspace.append(workspace.source('mros2_test_msgs', 'msg', 'Reading.msg'),
                      'uint32 count  # added after the first build')
     workspace.colcon_build()
     header = workspace.mros2_header(os.path.join('mros2_test_msgs', 'msg', 'reading.hpp'))
     assert 'uint32_t count = 0u;' in header
     assert 'mros2_wire::write(writer, count);' in header
-    assert len(workspace.genmros_runs()) == before + 1, 'only mros2_test_msgs is regenerated'
+    assert len(workspace.generator_runs()) == before + 1, 'only mros2_test_msgs is regenerated'
 
 
 def test_message_genmros_rejects_fails_the_build_naming_the_file(workspace):
@@ -225,7 +247,7 @@ def test_ament_index_discovery_finds_the_generator(workspace, tmp_path):
     env = dict(workspace.env, AMENT_PREFIX_PATH='%s:/usr' % REPO, CMAKE_PREFIX_PATH=REPO)
     result = subprocess.run(
         ['cmake', '-S', str(project), '-B', str(tmp_path / 'build'),
-         '-DGENMROS_BIN=%s' % workspace.genmros],
+         '-Drosidl_generator_mros2_BIN=%s' % workspace.genmros],
         env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     assert result.returncode == 0, result.stdout
     lines = dict(line[3:].split(': ', 1) for line in result.stdout.splitlines()
@@ -234,3 +256,59 @@ def test_ament_index_discovery_finds_the_generator(workspace, tmp_path):
     assert ('rosidl_generator_mros2:rosidl_generator_mros2_generate_interfaces.cmake'
             in lines['extensions'].split(';'))
     assert lines['mros2 dir'] == EXTENSION_DIR
+
+
+LISTED_PACKAGE_CMAKE = '''cmake_minimum_required(VERSION 3.16)
+project(mros2_listed_msgs)
+
+find_package(ament_cmake REQUIRED)
+find_package(rosidl_generator_cpp REQUIRED)
+find_package(rosidl_generator_mros2 REQUIRED)
+
+# A message the build writes, listed as a tuple of its base and its path.
+file(WRITE "${CMAKE_CURRENT_BINARY_DIR}/made/msg/Made.msg" "int32 value\\n")
+# Two of the package's three messages: Left.msg is not an interface.
+rosidl_generate_interfaces(${PROJECT_NAME}
+  "msg/First.msg" "msg/Second.msg" "${CMAKE_CURRENT_BINARY_DIR}/made:msg/Made.msg")
+
+ament_package()
+'''
+
+
+@pytest.fixture(scope='module')
+def listed_workspace(tmp_path_factory):
+    """A workspace of one package that lists some of its .msg files and one
+    the build writes."""
+    workspace = Workspace(str(tmp_path_factory.mktemp('listed_ws')))
+    shutil.rmtree(os.path.join(workspace.root, 'src'))
+    package = os.path.join(workspace.root, 'src', 'mros2_listed_msgs')
+    os.makedirs(os.path.join(package, 'msg'))
+    with open(os.path.join(TEST_WS_ROS2, 'src', 'mros2_base_msgs', 'package.xml')) as stream:
+        manifest = stream.read().replace('mros2_base_msgs', 'mros2_listed_msgs')
+    for name, text in (('package.xml', manifest), ('CMakeLists.txt', LISTED_PACKAGE_CMAKE),
+                       ('msg/First.msg', 'int32 first\n'), ('msg/Second.msg', 'string second\n'),
+                       ('msg/Left.msg', 'float64 left\n')):
+        with open(os.path.join(package, name), 'w') as stream:
+            stream.write(text)
+    workspace.colcon_build()
+    return workspace
+
+
+def _package_headers(workspace, package):
+    directory = os.path.join(workspace.mros2_include, package)
+    return sorted(os.path.relpath(os.path.join(d, name), directory)
+                  for d, _, names in os.walk(directory) for name in names)
+
+
+def test_a_package_gets_headers_for_exactly_the_files_it_lists(listed_workspace):
+    headers = _package_headers(listed_workspace, 'mros2_listed_msgs')
+    assert os.path.join('msg', 'first.hpp') in headers
+    assert os.path.join('msg', 'second.hpp') in headers
+    assert os.path.join('msg', 'left.hpp') not in headers
+
+
+def test_a_message_the_build_writes_and_lists_gets_its_header(listed_workspace):
+    assert _package_headers(listed_workspace, 'mros2_listed_msgs') == [
+        os.path.join('msg', name) for name in ('first.hpp', 'made.hpp', 'second.hpp')]
+    header = listed_workspace.mros2_header(os.path.join('mros2_listed_msgs', 'msg', 'made.hpp'))
+    assert 'int32_t value = 0;' in header

@@ -1,23 +1,38 @@
-# The mros2 generator's registration with rosidl and the genmros it runs.
+# The mros2 generator's registration with rosidl and the program it runs.
 
 # rosidl_generate_interfaces() runs the extensions registered for
 # "rosidl_generate_idl_interfaces" in the order they were registered,
 # including "${<package>_DIR}/<file>" in its own scope (ament_execute_extensions).
 find_package(ament_cmake_core QUIET REQUIRED)
-# What defines rosidl_generate_interfaces() (as rosidl_generator_cpp
-# exports it), so a package needs only this find_package() on Debian 12.
+# What defines rosidl_generate_interfaces() and rosidl_write_generator_arguments()
+# (as rosidl_generator_cpp exports it), so a package needs only this
+# find_package() on Debian 12.
 find_package(rosidl_cmake QUIET REQUIRED)
 ament_register_extension(
   "rosidl_generate_idl_interfaces"
   "rosidl_generator_mros2"
   "rosidl_generator_mros2_generate_interfaces.cmake")
 
-# genmros: the one installed with this file (<prefix>/bin), else on PATH;
-# -DGENMROS_BIN=... names another one (a checkout's wrapper, a venv's).
-find_program(GENMROS_BIN genmros
+# The generator: the rosidl_generator_mros2 installed with this file
+# (<prefix>/bin), else on PATH; -Drosidl_generator_mros2_BIN=... names
+# another one (a checkout's wrapper, a venv's).
+find_program(rosidl_generator_mros2_BIN rosidl_generator_mros2
   HINTS "${rosidl_generator_mros2_IMPORT_PREFIX}/bin"
-  DOC "genmros, the message generator of colcon-mros (runs 'genmros mros2-generate')")
-if(NOT GENMROS_BIN)
-  message(FATAL_ERROR "rosidl_generator_mros2: genmros not found; install colcon-mros "
-    "(scripts/setup.sh) or set GENMROS_BIN")
+  DOC "the mros2 generator of colcon-mros, run over rosidl's generator arguments file")
+if(NOT rosidl_generator_mros2_BIN)
+  message(FATAL_ERROR "rosidl_generator_mros2: its program was not found; install colcon-mros "
+    "(scripts/setup.sh) or set rosidl_generator_mros2_BIN")
 endif()
+# The files the headers are made from besides the interfaces (its code,
+# templates and static headers), as rosidl_generator_cpp's GENERATOR_FILES.
+execute_process(
+  COMMAND "${rosidl_generator_mros2_BIN}" --generator-files
+  OUTPUT_VARIABLE rosidl_generator_mros2_GENERATOR_FILES
+  RESULT_VARIABLE _mros2_result ERROR_VARIABLE _mros2_error
+  OUTPUT_STRIP_TRAILING_WHITESPACE)
+if(NOT _mros2_result EQUAL 0)
+  message(FATAL_ERROR "rosidl_generator_mros2: '${rosidl_generator_mros2_BIN} --generator-files' "
+    "failed: ${_mros2_error}")
+endif()
+string(REPLACE "\n" ";" rosidl_generator_mros2_GENERATOR_FILES
+  "${rosidl_generator_mros2_GENERATOR_FILES}")

@@ -1,0 +1,148 @@
+"""rosidl_generator_mros2's entry point: what rosidl_generate_interfaces()
+runs for the mros2 generator, as rosidl_generator_cpp runs generate_cpp.
+
+rosidl_generator_mros2_generate_interfaces.cmake writes the arguments file
+(``rosidl_write_generator_arguments()``): the package, its interfaces as
+``idl_tuples`` (``<base>:<kind>/<Type>.idl``, rosidl_adapter's forms of its
+``.msg`` and ``.srv`` files), the files the user wrote
+(``ros_interface_files``: the target's sources), the ``.idl`` files of the
+packages it depends on (``ros_interface_dependencies``: ``<pkg>:<path>``)
+and the output directory. Exactly the listed interfaces get a header,
+``<output_dir>/<pkg>/<kind>/<type>.hpp``; an action is skipped with one
+line, as mros2 has none. genmros' own errors name the ``.msg`` or ``.srv``
+the user wrote, with its line.
+
+``--generator-files`` prints the files the headers are made from besides
+the interfaces (this module's code, templates and static headers): the
+rule's dependencies, so that a new genmros regenerates them.
+"""
+
+import argparse
+import os
+import sys
+
+from colcon_mros.errors import GenmrosError
+from colcon_mros.ros2.environment import require_rosidl
+from colcon_mros.ros2.rosidl import read_generator_arguments
+
+PROGRAM = 'rosidl_generator_mros2'
+GENERATED_KINDS = ('msg', 'srv')
+# What rosidl_generate_interfaces() may pass that mros2 cannot carry.
+SKIPPED_KINDS = {'action': 'mros2 has no actions'}
+# The packages the headers' code comes from.
+_GENERATOR_PACKAGES = ('core', 'ros2', 'mros2', 'export', 'integrations')
+
+
+def _split_tuple(entry):
+    """'<base>:<relative>' (or '<pkg>:<path>'), split at the last ':' as rosidl does."""
+    first, _, second = entry.rpartition(':')
+    return first, second
+
+
+def _user_files(ros_interface_files):
+    """{(kind, stem): path} of the .msg and .srv files the user wrote."""
+    files = {}
+    for path in ros_interface_files:
+        stem, extension = os.path.splitext(os.path.basename(path))
+        kind = os.path.basename(os.path.dirname(path))
+        if extension == '.' + kind:
+            files[(kind, stem)] = path
+    return files
+
+
+def generate(arguments):
+    """Write the headers of the interfaces an arguments file (as a dict)
+    lists; returns (the paths written, the notices to print)."""
+    from colcon_mros.core.output import write_files
+    from colcon_mros.core.storage import HeapStorage
+    from colcon_mros.export.mros2_export import render_types
+    from colcon_mros.mros2 import render
+    from colcon_mros.ros2.interfaces import Package, interface_of_file
+    from colcon_mros.ros2.model import ModelBuilder
+
+    name = arguments['package_name']
+    user_files = _user_files(arguments.get('ros_interface_files', []))
+    own, skipped = {}, []
+    for entry in arguments.get('idl_tuples', []):
+        base, relative = _split_tuple(entry)
+        interface = interface_of_file(name, os.path.join(base, relative))
+        if interface.kind in SKIPPED_KINDS:
+            skipped.append(interface)
+            continue
+        if interface.kind not in GENERATED_KINDS:
+            raise GenmrosError('an interface of kind %s, which mros2 does not know'
+                               % interface.kind, interface.path)
+        # genmros' errors name the file the user wrote, at its line.
+        interface.path = user_files.get((interface.kind, interface.name), interface.path)
+        own[(interface.kind, interface.name)] = interface
+    dependencies = {}
+    for entry in arguments.get('ros_interface_dependencies', []):
+        package, path = _split_tuple(entry)
+        interface = interface_of_file(package, path)
+        dependencies.setdefault(package, {})[(interface.kind, interface.name)] = interface
+    packages = {package: Package(package, None, interfaces)
+                for package, interfaces in dependencies.items()}
+    packages[name] = Package(name, None, own)
+    builder = ModelBuilder(packages, HeapStorage())
+    messages = [builder.message('%s/msg/%s' % (name, stem))
+                for kind, stem in sorted(own) if kind == 'msg']
+    services = [builder.service('%s/srv/%s' % (name, stem))
+                for kind, stem in sorted(own) if kind == 'srv']
+    files = render_types(messages, services)
+    # Every package's install holds the support headers too, so that its
+    # include/mros2 is a whole include root (same text in every package).
+    files.update(render.support_headers())
+    notices = []
+    for kind, reason in sorted(SKIPPED_KINDS.items()):
+        names = ['%s/%s/%s' % (name, i.kind, i.name) for i in skipped if i.kind == kind]
+        if names:
+            notices.append('%s: skipped %s: %s' % (PROGRAM, ', '.join(names), reason))
+    return write_files(arguments['output_dir'], files), notices
+
+
+def _read_arguments(path):
+    try:
+        return read_generator_arguments(path)
+    except (OSError, ValueError) as error:
+        raise GenmrosError('cannot read the generator arguments: %s'
+                           % (getattr(error, 'strerror', None) or error), path)
+
+
+def generator_files():
+    """The files the headers come from besides the interfaces."""
+    package = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    found = [os.path.join(package, '__init__.py'), os.path.join(package, 'errors.py')]
+    for subpackage in _GENERATOR_PACKAGES:
+        for directory, subdirs, names in os.walk(os.path.join(package, subpackage)):
+            subdirs[:] = sorted(d for d in subdirs if d != '__pycache__')
+            found += [os.path.join(directory, n) for n in sorted(names)
+                      if n.endswith(('.py', '.em', '.h', '.hpp'))]
+    return found
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(
+        prog=PROGRAM, description='Write the mros2 headers of the interfaces a rosidl '
+                                  'arguments file lists (what rosidl_generate_interfaces() runs).')
+    what = parser.add_mutually_exclusive_group(required=True)
+    what.add_argument('--generator-arguments-file', metavar='FILE',
+                      help='the arguments file rosidl_write_generator_arguments() wrote')
+    what.add_argument('--generator-files', action='store_true',
+                      help="print the generator's own files, the rule's dependencies")
+    options = parser.parse_args(argv)
+    if options.generator_files:
+        print('\n'.join(generator_files()))
+        return 0
+    try:
+        require_rosidl()
+        _, notices = generate(_read_arguments(options.generator_arguments_file))
+    except GenmrosError as error:
+        print('genmros: error: %s' % error, file=sys.stderr)
+        return 1
+    for notice in notices:
+        print(notice)
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
