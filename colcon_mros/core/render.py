@@ -2,8 +2,14 @@
 
 Every back end keeps its templates and static headers in a directory of its
 own; this renders one template with the context a back end's C++ view
-gives it, as genmsg's template_tools does, through empy's public
-interpreter. Nothing is written here: writing is :mod:`.output`'s job.
+gives it, through an empy 3 interpreter as genmsg's template_tools does.
+Nothing is written here: writing is :mod:`.output`'s job.
+
+Scanning a template into empy's tokens is half of an export's time (an
+export renders msg.h.em once per type: bench/README.md), so each template
+is scanned once per process and its tokens run in a new interpreter for
+each render. tests/core/test_render.py pins what this relies on: tokens
+that run again give the same text as the interpreter's own string().
 """
 
 import functools
@@ -23,13 +29,21 @@ def _template_text(path):
         return template.read()
 
 
+@functools.lru_cache(maxsize=None)
+def _template_tokens(path):
+    """The template at path scanned into empy's tokens, once per process."""
+    scanner = em.Scanner(em.DEFAULT_PREFIX, _template_text(path))
+    return tuple(iter(scanner.one, None))
+
+
 def render_template(template_dir, template_name, **context):
     """The text of the empy template template_name in template_dir."""
     output = io.StringIO()
     interpreter = em.Interpreter(output=output, globals=dict(context))
     try:
-        interpreter.string(_template_text(os.path.join(template_dir, template_name)),
-                           template_name)
+        interpreter.contexts.push(em.Context(template_name))
+        for token in _template_tokens(os.path.join(template_dir, template_name)):
+            token.run(interpreter, None)
         interpreter.flush()
         return output.getvalue()
     finally:
