@@ -136,6 +136,8 @@ class CppMessageName:
         self.name = message.name
         self.cpp_name = '%s::%s::%s' % (message.package, message.kind, message.name)
         self.dds_type_name = '%s::%s::dds_::%s_' % (message.package, message.kind, message.name)
+        # What embeddedRTPS' type name field needs: the name and its terminating NUL.
+        self.dds_type_name_size = len(self.dds_type_name) + 1
         # A service's halves live in the service's header.
         stem = type_file_stem(message.name.rpartition('_')[0] if message.kind == 'srv'
                            else message.name)

@@ -143,6 +143,7 @@ class CppMessage(CppType):
         self.type_id = message.type_id
         self.min_size = message.min_size
         self.max_size = message.max_size
+        self.has_max_size = message.max_size is not None
         self.compact_definition = message.compact_definition
         self.includes = [CppType(dependency) for dependency in message.dependencies]
         self.fields = [CppField(f, member_identifier(f.name, self.name)) for f in message.fields]
@@ -168,3 +169,5 @@ class CppService(CppType):
         self.md5sum = service.md5sum
         self.request = CppType(service.request.full_name)
         self.response = CppType(service.response.full_name)
+        # The service and its halves, whose traits the header specializes alike.
+        self.cpp_names = [self.cpp_name, self.request.cpp_name, self.response.cpp_name]

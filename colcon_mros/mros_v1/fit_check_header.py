@@ -14,8 +14,8 @@ number of blocks the publishing pools have (:data:`.rules.FRAME_SLOTS`).
 from colcon_mros.core.render import render_template
 from colcon_mros.mros_v1.render import TEMPLATE_DIR
 from colcon_mros.mros_v1.rules import (FRAME_SLOTS, LIBRARY_HEADER_GUARD,
-                                       LIBRARY_PASSES_FRAME_SIZE, POOL_KINDS, RULES,
-                                       SETTINGS_HEADERS, FirmwareNeeds)
+                                       LIBRARY_PASSES_FRAME_SIZE, PACKET_CONFIG, POOL_KINDS, RULES,
+                                       SETTINGS_HEADERS, USR_CONFIG, FirmwareNeeds)
 
 FIT_CHECK_HEADER = 'mros_v1_fit_check.h'
 
@@ -58,4 +58,5 @@ def fit_check_header(messages):
         TEMPLATE_DIR, FIT_CHECK_HEADER + '.em', needs=needs, pool_kinds=POOL_KINDS,
         types=[CheckedType(needed) for needed in needs.types],
         library_guard=LIBRARY_HEADER_GUARD, settings_headers=SETTINGS_HEADERS,
+        usr_config_header=USR_CONFIG, packet_config_header=PACKET_CONFIG,
         frame_slots=FRAME_SLOTS, frame_size_macro=LIBRARY_PASSES_FRAME_SIZE)}

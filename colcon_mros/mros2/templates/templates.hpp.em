@@ -9,7 +9,7 @@
 // its NUL included (rtps/config.h; mros2.cpp includes it before this file).
 @[for msg in wire_types]@
 static_assert(sizeof("@(msg.dds_type_name)") <= rtps::Config::MAX_TYPENAME_LENGTH,
-              "@(msg.dds_type_name) needs rtps::Config::MAX_TYPENAME_LENGTH >= @(len(msg.dds_type_name) + 1) (rtps/config.h)");
+              "@(msg.dds_type_name) needs rtps::Config::MAX_TYPENAME_LENGTH >= @(msg.dds_type_name_size) (rtps/config.h)");
 @[end for]@
 @[for msg in publish]@
 

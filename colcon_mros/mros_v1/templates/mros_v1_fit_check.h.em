@@ -1,6 +1,7 @@
 @# The rule table (colcon_mros.mros_v1.rules) as compile-time checks. Context:
 @# needs (rules.FirmwareNeeds), pool_kinds (rules.PoolKind), types (fit_check_header.CheckedType),
-@# library_guard (rules.LIBRARY_HEADER_GUARD), settings_headers (rules.SETTINGS_HEADERS),
+@# library_guard (rules.LIBRARY_HEADER_GUARD), settings_headers (rules.SETTINGS_HEADERS) and
+@# each of them (usr_config_header, packet_config_header),
 @# frame_slots (rules.FRAME_SLOTS), frame_size_macro (rules.LIBRARY_PASSES_FRAME_SIZE).
 // mros_v1_fit_check.h: this firmware's message types against the mROS v1
 // library's settings, checked where the library compiles with them: ros.cpp
@@ -41,7 +42,7 @@
 // The mROS v1 library's ros.cpp: its settings are on its include path.
 #define MROS_V1_FIT_CHECK_RUNS
 #elif defined(__has_include)
-#if __has_include("@(settings_headers[0])") && __has_include("@(settings_headers[1])")
+#if __has_include("@(usr_config_header)") && __has_include("@(packet_config_header)")
 #define MROS_V1_FIT_CHECK_RUNS
 #endif
 #endif

@@ -73,7 +73,7 @@ struct @(msg.name) : mros::Message<@(msg.name)>@[if msg.constants], mros::consta
   enum { MROS_TYPE_ID = @(msg.type_id) };
   // Smallest possible wire image; bounds how many elements a count can claim.
   enum { MROS_MIN_SERIALIZED_SIZE = @(msg.min_size) };
-@[if msg.max_size is not None]@
+@[if msg.has_max_size]@
   // Largest possible wire image: a buffer this size takes any @(msg.name).
   enum { MROS_MAX_SERIALIZED_SIZE = @(msg.max_size) };
 @[end if]@

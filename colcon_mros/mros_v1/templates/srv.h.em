@@ -21,7 +21,7 @@ struct @(srv.name) {
 
 namespace service_traits {
 
-@[for service_type in (srv.cpp_name, srv.request.cpp_name, srv.response.cpp_name)]@
+@[for service_type in srv.cpp_names]@
 template <>
 struct MD5Sum<@(service_type)*> {
   static const char* value() { return "@(srv.md5sum)"; }
