@@ -215,7 +215,7 @@ def _add_export_dir_commands(subparsers):
         description="What catkin's configure step asks once when MROS_EXPORT_DIR is set: the "
                     'export dir is checked and prepared, and a CMake file says where the '
                     "packages' run records in it go.")
-    parser.add_argument('--export-dir', required=True, metavar='DIR')
+    parser.add_argument('export_dir', metavar='DIR', help='the export dir to prepare')
     parser.add_argument('--cmake-file', required=True, metavar='FILE')
     _add_cmake_module(parser)
     parser.set_defaults(run=_catkin_export_dir)

@@ -88,7 +88,7 @@ macro(_genmros_configure_export_dir)
   if(NOT _genmros_export_records)
     set(_genmros_answer "${CMAKE_BINARY_DIR}/genmros/export-dir.cmake")
     execute_process(
-      COMMAND "${GENMROS_BIN}" catkin-export-dir --export-dir "${MROS_EXPORT_DIR}"
+      COMMAND "${GENMROS_BIN}" catkin-export-dir "${MROS_EXPORT_DIR}"
         --cmake-file "${_genmros_answer}" --cmake-module "${_GENMROS_CMAKE_DIR}/mros_generate.cmake"
       RESULT_VARIABLE _genmros_result ERROR_VARIABLE _genmros_error)
     if(NOT _genmros_result EQUAL 0)
