@@ -12,9 +12,9 @@ import os
 import sys
 
 from colcon_mros import __version__
-from colcon_mros.errors import GenmrosError
 from colcon_mros.core.defaults import (DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE,
-                                            DEFINITION_TEXTS, EXPORT_PARTS, STORAGE_KINDS)
+                                       DEFINITION_TEXTS, EXPORT_PARTS, STORAGE_KINDS)
+from colcon_mros.errors import GenmrosError
 from colcon_mros.mros_v1.defaults import DEFAULT_VARIABLE_SIZE_BUDGET, PC_TARGETS
 
 DESCRIPTION = '''\
@@ -197,7 +197,8 @@ def _add_printers(subparsers):
             ('catkin-prefix', "print a catkin prefix that holds genmros' generator marker (and "
                               'leads find_package(genmros) to this install): with it on '
                               'CMAKE_PREFIX_PATH, catkin runs genmros (for installs that cannot '
-                              'write /etc/ros/genmsg: ROS Noetic, a user, a venv)', _catkin_prefix)):
+                              'write /etc/ros/genmsg: ROS Noetic, a user, a venv)',
+             _catkin_prefix)):
         parser = subparsers.add_parser(name, help=help_text, description=help_text)
         parser.set_defaults(run=run)
 
@@ -442,8 +443,8 @@ def _mros_v1_fit(options):
     from colcon_mros.ros1.environment import require_ros_python
     require_ros_python()
     from colcon_mros.library_tools.mros_v1 import report
-    from colcon_mros.mros_v1.app import App, find_app
     from colcon_mros.library_tools.mros_v1.fit_flow import app_fit, export_dir_fit  # needs genmsg
+    from colcon_mros.mros_v1.app import App, find_app
     form = (options.storage, options.option_files)
     if options.export_dir:
         fit, settings = export_dir_fit(options.export_dir, options.types,

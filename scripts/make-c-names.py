@@ -36,7 +36,8 @@ import textwrap
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PACKAGE = os.path.join(REPO, 'colcon_mros')
 # The mROS v1 support header and the containers header it includes.
-SUPPORT_DIRS = [os.path.join(PACKAGE, 'mros_v1', 'support'), os.path.join(PACKAGE, 'core', 'support')]
+SUPPORT_DIRS = [os.path.join(PACKAGE, 'mros_v1', 'support'),
+                os.path.join(PACKAGE, 'core', 'support')]
 OUTPUT = os.path.join(PACKAGE, 'core', 'c_names.py')
 
 PARSER = 'clang++'
@@ -146,7 +147,9 @@ def words(names):
 
 def collect(compilers, directory):
     unit = write_translation_unit(directory)
-    include_flags = ['-I', directory] + [flag for support in SUPPORT_DIRS for flag in ('-I', support)]
+    include_flags = ['-I', directory]
+    for support in SUPPORT_DIRS:
+        include_flags += ['-I', support]
     macros, global_names = set(), set()
     for compiler, target, _ in compilers:
         for mode in MODES:

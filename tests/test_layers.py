@@ -122,7 +122,8 @@ def test_the_checks_see_an_upward_and_a_sibling_import(tmp_path):
     module = tmp_path / 'upward.py'
     module.write_text('def f():\n    from colcon_mros.integrations import installed_files\n'
                       'from colcon_mros.ros2.model import ModelBuilder\n')
-    assert sorted(_imports(str(module))) == ['integrations.installed_files', 'ros2.model.ModelBuilder']
+    assert sorted(_imports(str(module))) == ['integrations.installed_files',
+                                             'ros2.model.ModelBuilder']
     assert _level(_unit('integrations.installed_files')) > _level(_unit('ros1.parse'))
     assert _level(_unit('ros2.model')) == _level(_unit('ros1.parse'))
     assert _unit('cli') == _unit('__main__') == 'cli'

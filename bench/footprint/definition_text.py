@@ -7,8 +7,8 @@ Run by bench/footprint/run.sh, or alone:
     PYTHONPATH=. /usr/bin/python3 bench/footprint/definition_text.py
 """
 
-from colcon_mros.ros1.model import gencpp_definition_text
 from colcon_mros.mros_v1.names import RESERVED_NAMES
+from colcon_mros.ros1.model import gencpp_definition_text
 from colcon_mros.ros1.parse import SpecLoader
 from colcon_mros.ros1.workspace import installed_packages, msg_search_path
 

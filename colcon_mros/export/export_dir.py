@@ -35,9 +35,9 @@ import fcntl
 import os
 
 from colcon_mros.core.defaults import DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE
-from colcon_mros.ros1.definition import KINDS, Definition, definitions_in
-from colcon_mros.errors import GenmrosError
 from colcon_mros.core.output import check_writable, write_files
+from colcon_mros.errors import GenmrosError
+from colcon_mros.ros1.definition import KINDS, Definition, definitions_in
 
 # (storage, definition text) of the headers catkin and colcon export.
 HEADER_FORM = (DEFAULT_STORAGE, DEFAULT_DEFINITION_TEXT)

@@ -24,23 +24,23 @@ and genmros are those of the last one does nothing.
 import os
 import time
 
+from colcon_mros.core.defaults import DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE, EXPORT_PARTS
+from colcon_mros.core.output import is_generated, write_tree
+from colcon_mros.core.settings import read_settings
+from colcon_mros.core.storage import storage_for
 from colcon_mros.errors import GenmrosError, close_match
 from colcon_mros.export.export_dir import HEADER_FORM
 from colcon_mros.export.run_record import RunRecord, definition_directories, snapshot
-from colcon_mros.ros1.model import ModelBuilder
-from colcon_mros.core.output import is_generated, write_tree
-from colcon_mros.ros1.parse import SpecLoader
-from colcon_mros.core.defaults import DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE, EXPORT_PARTS
-from colcon_mros.mros_v1.render import Renderer
-from colcon_mros.core.storage import storage_for
-from colcon_mros.ros1.workspace import (environment_packages, installed_packages,
-                                             msg_search_path, split_msg_paths,
-                                             workspace_packages)
 from colcon_mros.mros_v1.aggregates import SOURCE_DIRS, firmware_files
 from colcon_mros.mros_v1.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
 from colcon_mros.mros_v1.fit import Fit
 from colcon_mros.mros_v1.names import RESERVED_NAMES
-from colcon_mros.core.settings import read_settings
+from colcon_mros.mros_v1.render import Renderer
+from colcon_mros.ros1.model import ModelBuilder
+from colcon_mros.ros1.parse import SpecLoader
+from colcon_mros.ros1.workspace import (environment_packages, installed_packages,
+                                        msg_search_path, split_msg_paths,
+                                        workspace_packages)
 
 
 class ExportResult:

@@ -13,9 +13,9 @@ as it was, and headers of types no longer exported leave it.
 
 import os
 
-from colcon_mros.errors import GenmrosError
 from colcon_mros.core.output import is_generated, write_tree
 from colcon_mros.core.storage import storage_for
+from colcon_mros.errors import GenmrosError
 from colcon_mros.mros2 import render
 from colcon_mros.ros2.interfaces import all_packages
 from colcon_mros.ros2.model import ModelBuilder

@@ -19,8 +19,8 @@ written with :func:`colcon_mros.core.output.write_files`.
 
 import os
 
-from colcon_mros.export.export_dir import IGNORE_MARKER
 from colcon_mros.core.output import write_files
+from colcon_mros.export.export_dir import IGNORE_MARKER
 from colcon_mros.export.mros2_export import export_firmware
 from colcon_mros.ros2.interfaces import AMENT_PACKAGE_INDEX
 

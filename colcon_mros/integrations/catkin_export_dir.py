@@ -12,9 +12,9 @@ include it before anything is generated.
 
 import os
 
+from colcon_mros.core.output import write_files
 from colcon_mros.errors import GenmrosError
 from colcon_mros.export.export_dir import ExportDir
-from colcon_mros.core.output import write_files
 
 
 def _check_export_dir(path):

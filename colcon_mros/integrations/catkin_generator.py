@@ -23,15 +23,15 @@ downstream rebuilds for nothing.
 import os
 import time
 
-from colcon_mros.ros1.definition import Definition
+from colcon_mros.core.output import is_generated, write_files
 from colcon_mros.errors import GenmrosError
 from colcon_mros.export.export_dir import ExportDir
 from colcon_mros.export.run_record import RunRecord, snapshot
-from colcon_mros.ros1.model import ModelBuilder
-from colcon_mros.core.output import is_generated, write_files
-from colcon_mros.ros1.parse import SpecLoader
 from colcon_mros.mros_v1.names import RESERVED_NAMES
 from colcon_mros.mros_v1.render import Renderer
+from colcon_mros.ros1.definition import Definition
+from colcon_mros.ros1.model import ModelBuilder
+from colcon_mros.ros1.parse import SpecLoader
 
 GENERATED_LOG = 'Generating mROS headers from %s/%s'
 REMOVED_LOG = 'genmros: removed %s'

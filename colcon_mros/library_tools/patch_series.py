@@ -16,8 +16,8 @@ import dataclasses
 import os
 import re
 
-from colcon_mros.errors import GenmrosError
 from colcon_mros.core.output import write_files
+from colcon_mros.errors import GenmrosError
 
 # The patches' order, one file name a line ('#' starts a comment).
 SERIES = 'series'

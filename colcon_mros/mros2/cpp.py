@@ -11,7 +11,8 @@ and bounded storage), and default values and constants as C++11 literals.
 import ast
 import os
 
-from colcon_mros.core.cpp_literals import comment_lines, cpp_number_literal, cpp_string_literal_lines
+from colcon_mros.core.cpp_literals import (comment_lines, cpp_number_literal,
+                                           cpp_string_literal_lines)
 from colcon_mros.core.cpp_names import CPP_KEYWORDS
 from colcon_mros.ros2.rosidl import type_file_stem
 

@@ -14,8 +14,8 @@ the message types of one firmware, rendered from the templates in
 - ``mros_v1_fit_check.h`` (:mod:`.fit_check_header`).
 """
 
-from colcon_mros.mros_v1.cpp import CppType
 from colcon_mros.core.render import render_template
+from colcon_mros.mros_v1.cpp import CppType
 from colcon_mros.mros_v1.defaults import DEFAULT_VARIABLE_SIZE_BUDGET
 from colcon_mros.mros_v1.fit_check_header import FIT_CHECK_HEADER, fit_check_header
 from colcon_mros.mros_v1.render import TEMPLATE_DIR

@@ -10,7 +10,8 @@ and guards. The model stays free of C++; the templates stay free of logic.
 """
 
 from colcon_mros import __version__
-from colcon_mros.core.cpp_literals import comment_lines, cpp_number_literal, cpp_string_literal_lines
+from colcon_mros.core.cpp_literals import (comment_lines, cpp_number_literal,
+                                           cpp_string_literal_lines)
 from colcon_mros.errors import GenmrosError
 from colcon_mros.mros_v1.names import member_identifier
 

@@ -12,11 +12,11 @@ import zlib
 
 from genmsg.msgs import is_valid_msg_field_name, parse_type
 
-from colcon_mros.errors import GenmrosError
 from colcon_mros.core.closure import contained_first
 from colcon_mros.core.defaults import DEFAULT_DEFINITION_TEXT
-from colcon_mros.ros1.definition import Definition
 from colcon_mros.core.storage import FieldShape, HeapStorage
+from colcon_mros.errors import GenmrosError
+from colcon_mros.ros1.definition import Definition
 
 # .msg built-in type -> bytes on the wire (None: variable).
 BUILTIN_SIZES = {

@@ -12,8 +12,8 @@ same name.
 import os
 import re
 
-from colcon_mros.ros1.definition import Definition
 from colcon_mros.errors import GenmrosError
+from colcon_mros.ros1.definition import Definition
 
 
 class Package:

@@ -11,9 +11,9 @@ message is found by walking its members from position 0, never by adding
 per-type sizes. C++ spelling is :mod:`colcon_mros.mros2.cpp`'s job.
 """
 
-from colcon_mros.errors import GenmrosError, close_match
 from colcon_mros.core.closure import contained_first
 from colcon_mros.core.storage import FieldShape
+from colcon_mros.errors import GenmrosError, close_match
 from colcon_mros.ros2.parse import parse_interface
 
 # rosidl's IDL number types: their CDR size, which is also their alignment.

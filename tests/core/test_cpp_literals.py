@@ -4,7 +4,8 @@ tests/mros_v1/test_cpp.py, tests/mros2)."""
 
 import pytest
 
-from colcon_mros.core.cpp_literals import comment_lines, cpp_number_literal, cpp_string_literal_lines
+from colcon_mros.core.cpp_literals import (comment_lines, cpp_number_literal,
+                                           cpp_string_literal_lines)
 
 
 @pytest.mark.parametrize('text, pieces', [
@@ -19,7 +20,8 @@ def test_string_literals_escape_what_cpp_would_read_otherwise(text, pieces):
 
 
 @pytest.mark.parametrize('cpp_type, value, literal', [
-    ('int64_t', -(1 << 63), '(-static_cast<int64_t>(static_cast<uint64_t>(0x7fffffffu) << 32 | 0xffffffffu) - 1)'),
+    ('int64_t', -(1 << 63),
+     '(-static_cast<int64_t>(static_cast<uint64_t>(0x7fffffffu) << 32 | 0xffffffffu) - 1)'),
     ('uint8_t', 255, '255u'),
     ('float', 1e-40, '9.99994610111476e-41f'),
     ('double', float('nan'), 'std::numeric_limits<double>::quiet_NaN()'),

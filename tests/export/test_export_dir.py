@@ -3,8 +3,8 @@ CMake file, colcon's replacement of packages, and catkin's claims."""
 
 import os
 
-from colcon_mros.ros1.definition import Definition
 from colcon_mros.export.export_dir import ExportDir
+from colcon_mros.ros1.definition import Definition
 from colcon_mros.ros1.workspace import Package
 
 MODULE = '/opt/genmros/mros_generate.cmake'

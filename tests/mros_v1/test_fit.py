@@ -10,12 +10,12 @@ import subprocess
 
 import pytest
 
+from colcon_mros.core.settings import read_settings
 from colcon_mros.errors import GenmrosProblems
 from colcon_mros.export.firmware_export import firmware_messages
 from colcon_mros.mros_v1.fit import Fit
 from colcon_mros.mros_v1.rules import (PEER_NAME_MAX, PUBLISHER_HEADER_FIXED,
                                        SUBSCRIBER_HEADER_FIXED, FirmwareNeeds)
-from colcon_mros.core.settings import read_settings
 from testing.ros_graph import PYTHON, RosGraph
 from testing.tcpros_peer import HostilePublisher, RawSubscriber
 from conftest import TEST_WS

@@ -10,9 +10,9 @@ import subprocess
 
 import pytest
 
+from colcon_mros.core.settings import read_settings
 from colcon_mros.export.firmware_export import firmware_messages
 from colcon_mros.mros_v1.fit import Fit
-from colcon_mros.core.settings import read_settings
 from conftest import TEST_WS, run_genmros
 from settings_headers import header_paths, small_settings
 

@@ -4,8 +4,8 @@ here to what the support headers declare."""
 import os
 import re
 
-from colcon_mros.mros_v1.names import SUPPORT_HEADER_NAMES, SUPPORT_MACROS, member_identifier
 from colcon_mros.mros_v1.aggregates import DELIVERY_HEADER, firmware_files
+from colcon_mros.mros_v1.names import SUPPORT_HEADER_NAMES, SUPPORT_MACROS, member_identifier
 from conftest import REPO
 
 PACKAGE = os.path.join(REPO, 'colcon_mros')

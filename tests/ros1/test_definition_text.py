@@ -22,10 +22,10 @@ import cpp_harness
 from conftest import DEBIAN_MESSAGE_PACKAGES, REPO, TEST_WS, run_genmros
 
 from colcon_mros.export.export_dir import ExportDir
-from colcon_mros.ros1.identity import compact_text
 from colcon_mros.integrations.installed_files import CMAKE_MODULE, installed_file
-from colcon_mros.ros1.model import gencpp_definition_text
 from colcon_mros.mros_v1.names import RESERVED_NAMES
+from colcon_mros.ros1.identity import compact_text
+from colcon_mros.ros1.model import gencpp_definition_text
 from colcon_mros.ros1.parse import SpecLoader
 from colcon_mros.ros1.workspace import installed_packages
 

@@ -8,12 +8,12 @@ For an app (``mros_ws/<app>``) the settings are those its build includes
 the settings headers given. Reading the types' definitions needs genmsg.
 """
 
+from colcon_mros.core.settings import read_settings
 from colcon_mros.errors import GenmrosError
 from colcon_mros.export.export_dir import ExportDir
 from colcon_mros.export.firmware_export import firmware_messages
 from colcon_mros.mros_v1.app import app_settings_headers, passes_frame_size
 from colcon_mros.mros_v1.fit import Fit
-from colcon_mros.core.settings import read_settings
 
 
 def app_fit(app, types, msg_paths, settings_files, storage_kind, option_files, hardened=False):

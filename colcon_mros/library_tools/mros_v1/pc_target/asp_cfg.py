@@ -19,8 +19,8 @@ accepted and have no effect. Anything else, and conditional directives
 import os
 import re
 
-from colcon_mros.errors import GenmrosError
 from colcon_mros.core.output import write_files
+from colcon_mros.errors import GenmrosError
 
 IGNORED_APIS = ('DEF_KMM', 'AID_TSK')
 # Static API -> the fields of its {...} block, in order.

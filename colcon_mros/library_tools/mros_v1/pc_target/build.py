@@ -17,8 +17,8 @@ import subprocess
 import sys
 import tempfile
 
-from colcon_mros.errors import GenmrosError
 from colcon_mros.core.defaults import DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE
+from colcon_mros.errors import GenmrosError
 from colcon_mros.integrations.installed_files import MAKE_FRAGMENT, installed_file
 from colcon_mros.library_tools.mros_v1.pc_target.asp_cfg import read_config, write_kernel_config
 from colcon_mros.mros_v1.app import App, find_app

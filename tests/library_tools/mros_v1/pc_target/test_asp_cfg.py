@@ -8,8 +8,8 @@ import pytest
 
 from conftest import REPO
 from mros_v1_checkout import MROS_V1_ROOT
-from colcon_mros.library_tools.mros_v1.pc_target.asp_cfg import read_config, write_kernel_config
 from colcon_mros.errors import GenmrosError
+from colcon_mros.library_tools.mros_v1.pc_target.asp_cfg import read_config, write_kernel_config
 
 PC_CFG = os.path.join(REPO, 'colcon_mros', 'library_tools', 'mros_v1', 'pc_target', 'cfg', 'asp')
 

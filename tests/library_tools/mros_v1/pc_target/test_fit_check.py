@@ -11,8 +11,8 @@ import subprocess
 
 import pytest
 
-from colcon_mros.mros_v1.app import app_variables
 from colcon_mros.library_tools.mros_v1.pc_target.build import TARGET_DIR
+from colcon_mros.mros_v1.app import app_variables
 from testing.ros_graph import PYTHON
 from conftest import run_genmros
 from mros_v1_checkout import MROS_V1_ROOT

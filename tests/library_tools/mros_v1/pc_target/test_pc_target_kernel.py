@@ -1,7 +1,8 @@
-"""The PC target's TOPPERS/ASP scheduling (colcon_mros/library_tools/mros_v1/pc_target/asp/kernel*.c), on its
-own: a program of ours (tests/fixtures/pc_target_kernel) configured from its
-own .cfg by colcon_mros.library_tools.mros_v1.pc_target.asp_cfg, as an mROS v1 app is
-(tests/stand_in_programs.py), runs scenarios whose
+"""The PC target's TOPPERS/ASP scheduling
+(colcon_mros/library_tools/mros_v1/pc_target/asp/kernel*.c), on its own: a
+program of ours (tests/fixtures/pc_target_kernel) configured from its own
+.cfg by colcon_mros.library_tools.mros_v1.pc_target.asp_cfg, as an mROS v1
+app is (tests/stand_in_programs.py), runs scenarios whose
 traces show ASP's rules: highest priority first and FIFO within one, a
 task whose priority is set going behind its equals, activation and wake-up
 requests queued up to 1, time-outs, delays and cyclic handlers on time, and
