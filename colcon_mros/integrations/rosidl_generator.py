@@ -21,16 +21,21 @@ import argparse
 import os
 import sys
 
+from colcon_mros.core import render as core_render
+from colcon_mros.core.output import write_files
+from colcon_mros.core.storage import HeapStorage
 from colcon_mros.errors import GenmrosError
+from colcon_mros.export.mros2_export import render_types
+from colcon_mros.mros2 import render
 from colcon_mros.ros2.environment import require_rosidl
+from colcon_mros.ros2.interfaces import Package, interface_of_file
+from colcon_mros.ros2.model import ModelBuilder
 from colcon_mros.ros2.rosidl import read_generator_arguments
 
 PROGRAM = 'rosidl_generator_mros2'
 GENERATED_KINDS = ('msg', 'srv')
 # What rosidl_generate_interfaces() may pass that mros2 cannot carry.
 SKIPPED_KINDS = {'action': 'mros2 has no actions'}
-# The packages the headers' code comes from.
-_GENERATOR_PACKAGES = ('core', 'ros2', 'mros2', 'export', 'integrations')
 
 
 def _split_tuple(entry):
@@ -53,13 +58,6 @@ def _user_files(ros_interface_files):
 def generate(arguments):
     """Write the headers of the interfaces an arguments file (as a dict)
     lists; returns (the paths written, the notices to print)."""
-    from colcon_mros.core.output import write_files
-    from colcon_mros.core.storage import HeapStorage
-    from colcon_mros.export.mros2_export import render_types
-    from colcon_mros.mros2 import render
-    from colcon_mros.ros2.interfaces import Package, interface_of_file
-    from colcon_mros.ros2.model import ModelBuilder
-
     name = arguments['package_name']
     user_files = _user_files(arguments.get('ros_interface_files', []))
     own, skipped = {}, []
@@ -109,15 +107,17 @@ def _read_arguments(path):
 
 
 def generator_files():
-    """The files the headers come from besides the interfaces."""
-    package = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    found = [os.path.join(package, '__init__.py'), os.path.join(package, 'errors.py')]
-    for subpackage in _GENERATOR_PACKAGES:
-        for directory, subdirs, names in os.walk(os.path.join(package, subpackage)):
-            subdirs[:] = sorted(d for d in subdirs if d != '__pycache__')
-            found += [os.path.join(directory, n) for n in sorted(names)
-                      if n.endswith(('.py', '.em', '.h', '.hpp'))]
-    return found
+    """The files the headers come from besides the interfaces: the modules
+    this one imports (the rosidl front end, the mros2 back end, the core)
+    and the templates and static headers they render."""
+    modules = {module.__file__ for name, module in sys.modules.items()
+               if name.split('.')[0] == 'colcon_mros' and getattr(module, '__file__', None)}
+    # This module too, when it runs as __main__.
+    modules = sorted(modules | {os.path.abspath(__file__)})
+    data = [os.path.join(directory, name)
+            for directory in (render.TEMPLATE_DIR, render.SUPPORT_DIR, core_render.SUPPORT_DIR)
+            for name in sorted(os.listdir(directory))]
+    return modules + data
 
 
 def main(argv=None):
