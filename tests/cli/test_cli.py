@@ -58,3 +58,20 @@ def test_a_misspelt_option_is_refused_with_the_subcommand_s_usage(capsys):
     error = capsys.readouterr().err.splitlines()
     assert error[0].startswith('usage: genmros export ')
     assert error[-1] == 'genmros export: error: unrecognized arguments: --workspce ws'
+
+
+def test_an_option_name_means_one_thing_in_every_subcommand(capsys):
+    # --export-dir names an export dir to read (export, mros-v1-fit);
+    # generate's output dir is --add-to-export-dir, its old name a hidden alias.
+    with pytest.raises(SystemExit):
+        main(['generate', '--help'])
+    help_text = capsys.readouterr().out
+    assert '--add-to-export-dir DIR' in help_text and '--export-dir' not in help_text
+    generate = build_parser()[1]['generate']
+    for name in ('--add-to-export-dir', '--export-dir'):
+        options = generate.parse_args(['A.msg', '-p', 'demo', '-o', 'out', name, 'exports'])
+        assert options.export_dir == 'exports'
+    for subcommand in ('export', 'mros-v1-fit'):
+        with pytest.raises(SystemExit):
+            main([subcommand, '--help'])
+        assert 'the types come from' in ' '.join(capsys.readouterr().out.split())

@@ -17,7 +17,7 @@ def _generate(tmp_path, name, text):
     (source / name).write_text(text)
     run_genmros('generate', str(source / name), '-p', 'demo', '-o', str(tmp_path / 'devel' / 'demo'),
                 '-I', 'demo:%s' % source, '-I', 'std_msgs:%s' % STD_MSGS,
-                '--export-dir', str(tmp_path / 'export'))
+                '--add-to-export-dir', str(tmp_path / 'export'))
 
 
 def _exported(tmp_path):
