@@ -39,6 +39,9 @@ _AT_FDCWD = -100
 
 def _unchanged(path, text):
     try:
+        if isinstance(text, bytes):
+            with open(path, 'rb') as existing:
+                return existing.read() == text
         with open(path, encoding='utf-8') as existing:
             return existing.read() == text
     except (OSError, UnicodeDecodeError):
@@ -80,11 +83,16 @@ def remove_stale_temporaries(directory):
 
 
 def _stage(path, text):
-    """Write text to a temporary file beside path; returns the temporary's path."""
+    """Write text (str, or bytes as they are) to a temporary file beside
+    path; returns the temporary's path."""
     handle, temporary = tempfile.mkstemp(prefix=_temporary_prefix(), suffix='.tmp',
                                          dir=os.path.dirname(path))
     try:
-        with os.fdopen(handle, 'w', encoding='utf-8') as stream:
+        if isinstance(text, bytes):
+            stream = os.fdopen(handle, 'wb')
+        else:
+            stream = os.fdopen(handle, 'w', encoding='utf-8')
+        with stream:
             stream.write(text)
         os.chmod(temporary, 0o644)
     except BaseException:
@@ -121,7 +129,7 @@ def _write_error(error, root):
 
 
 def write_files(root, files):
-    """Write {relative path: text} under root; returns the paths it changed."""
+    """Write {relative path: text or bytes} under root; returns the paths it changed."""
     check_writable(root)
     staged = {}
     cleaned = set()

@@ -1,27 +1,40 @@
-"""A patch series for a user's library: fixes kept as small unified diffs
-against the library's public sources (``*.patch`` in one directory, applied
-in the order of its ``series`` file, as quilt keeps them), never as a copy
-of the library. Each mROS line's series is a :class:`PatchSeries` (mROS
-v1's: :mod:`colcon_mros.library_tools.mros_v1.patches`).
+"""A patch series for a user's library, applied by GNU patch: fixes kept as
+small unified diffs against the library's public sources (``*.patch`` in one
+directory, applied in the order of its ``series`` file, as quilt keeps
+them), never as a copy of the library. Each mROS line's series is a
+:class:`PatchSeries` (mROS v1's: :mod:`colcon_mros.library_tools.mros_v1.patches`).
 
-A series is applied to a checkout (only files below its library
-directory), checked, or taken out. A hunk applies where its line numbers
-say, or, as GNU patch does without fuzz, at the nearest place where every
-line it expects is there (an earlier patch of the series may have moved
-it); where the checkout differs, nothing is written and the error names the
-file, the line and the patch. A patch already applied is left as it is.
+GNU patch applies each patch without fuzz (``patch -p1 -F0
+--no-backup-if-mismatch -r -``), in series order, to a copy of the files
+the series touches, because several patches change the same file. The
+user's checkout is written, file by file and each one atomically, only once
+the whole series has gone through on the copy; a refusal names the patch,
+the file and the hunk that does not apply, and leaves the checkout as it
+was. A patch whose reverse applies (a reverse dry run) is already in and is
+not applied twice. Taking a series out goes the same way, in reverse order.
 """
 
 import dataclasses
 import os
 import re
+import shutil
+import subprocess
+import tempfile
 
-from colcon_mros.core.output import write_files
 from colcon_mros.errors import GenmrosError
+from colcon_mros.core.output import write_files
 
 # The patches' order, one file name a line ('#' starts a comment).
 SERIES = 'series'
-_HUNK = re.compile(r'^@@ -(\d+)(?:,(\d+))? \+(\d+)(?:,(\d+))? @@')
+# GNU patch as the series wants it: paths below the checkout (-p1), no fuzz,
+# no .orig or .rej files, no question asked (and no reversed patch assumed).
+PATCH = ('patch', '-p1', '-F0', '--no-backup-if-mismatch', '-r', '-', '--force')
+# Its messages in one language, file names as they are.
+_PATCH_ENVIRONMENT = {'LC_ALL': 'C', 'QUOTING_STYLE': 'literal'}
+_FILE_LINE = re.compile(r'^(?:---|\+\+\+) (\S+)')
+_CHECKING = re.compile(r'^(?:checking|patching) file (.+)$')
+_FAILED_HUNK = re.compile(r'^Hunk #(\d+) FAILED')
+_HUNK_HEADER = re.compile(r'^@@ -(\d+)')
 
 
 @dataclasses.dataclass(frozen=True)
@@ -34,82 +47,48 @@ class PatchSeries:
 
 
 @dataclasses.dataclass
-class Hunk:
-    """Lines of one place in a file: before (old) and after (new) the fix,
-    context included, and the lines each starts at."""
-
-    old_start: int
-    new_start: int
-    old: list
-    new: list
-
-
-@dataclasses.dataclass
 class Patch:
-    """One fix: its name, what it fixes (the text before the diff), and its
-    hunks by file (relative to the checkout)."""
+    """One fix: its name, its file, what it fixes (the text before the
+    diff), and the files it changes, added and removed ones included
+    (relative to the checkout)."""
 
     name: str
+    path: str
     description: str
-    files: dict
-
-    def reversed(self):
-        return Patch(self.name, self.description,
-                     {path: [Hunk(hunk.new_start, hunk.old_start, hunk.new, hunk.old)
-                             for hunk in hunks]
-                      for path, hunks in self.files.items()})
-
-
-def _check_counts(hunk, counts, path, line):
-    """A hunk must have the lines its header counts."""
-    if hunk is not None and (len(hunk.old), len(hunk.new)) != counts:
-        raise GenmrosError('the hunk counts %d old and %d new lines but has %d and %d'
-                           % (counts + (len(hunk.old), len(hunk.new))), path, line)
+    files: list
 
 
 def read_patch(path, library_dir):
     """The Patch of a unified diff (``diff -u`` or ``git diff``) at path,
     which may change files below library_dir only."""
-    name = os.path.splitext(os.path.basename(path))[0]
-    files = {}
-    hunk = counts = header_line = None
-    target = None
-    with open(path, encoding='utf-8') as stream:
-        lines = stream.read().splitlines()
-    first_diff = next((index for index, line in enumerate(lines) if line.startswith('--- ')),
-                      len(lines))
+    try:
+        with open(path, encoding='utf-8') as stream:
+            lines = stream.read().splitlines()
+    except (OSError, UnicodeDecodeError) as error:
+        raise GenmrosError('cannot read: %s' % (getattr(error, 'strerror', None) or error), path)
+    first_diff = next((index for index, line in enumerate(lines)
+                       if line.startswith(('--- ', 'diff '))), len(lines))
     description = ' '.join(' '.join(lines[:first_diff]).split())
+    files = []
+    old = None
     for number, line in enumerate(lines, 1):
-        header = _HUNK.match(line)
-        in_hunk = hunk is not None and (len(hunk.old), len(hunk.new)) != counts
-        if in_hunk and line[:1] in (' ', '-', '+', ''):
-            if line[:1] != '+':
-                hunk.old.append(line[1:])
-            if line[:1] != '-':
-                hunk.new.append(line[1:])
+        match = _FILE_LINE.match(line)
+        if not match:
             continue
-        if line.startswith('\\'):  # "\ No newline at end of file"
+        if line.startswith('--- '):
+            old = (match.group(1), number)
             continue
-        _check_counts(hunk, counts, path, header_line)
-        hunk = None
-        if line.startswith('+++ '):
-            target = re.sub(r'^b/', '', line[4:].split('\t')[0].strip())
-            if not target.startswith(library_dir + '/'):
-                raise GenmrosError('patches may change %s/ only, not %s' % (library_dir, target),
-                                   path, number)
-            files[target] = []
-        elif header:
-            if target is None:
-                raise GenmrosError('a hunk before its file\'s +++ line', path, number)
-            hunk = Hunk(int(header.group(1)), int(header.group(3)), [], [])
-            counts = tuple(1 if count is None else int(count)
-                           for count in (header.group(2), header.group(4)))
-            header_line = number
-            files[target].append(hunk)
-    _check_counts(hunk, counts, path, header_line)
+        # A file's +++ line names it; a removed file's (+++ /dev/null), its --- line.
+        name, number = old if match.group(1) == '/dev/null' else (match.group(1), number)
+        target = name.split('/', 1)[-1]  # -p1: without a/ or b/
+        if not target.startswith(library_dir + '/'):
+            raise GenmrosError('patches may change %s/ only, not %s' % (library_dir, target),
+                               path, number)
+        if target not in files:
+            files.append(target)
     if not files:
         raise GenmrosError('no file changes in this patch', path)
-    return Patch(name, description, files)
+    return Patch(os.path.splitext(os.path.basename(path))[0], path, description, files)
 
 
 def read_series(patch_series):
@@ -134,108 +113,158 @@ def read_series(patch_series):
                       - set(names))
     if unlisted:
         raise GenmrosError('patches not in the series: %s' % ', '.join(unlisted), series)
-    return [read_patch(os.path.join(directory, name), patch_series.library_dir) for name in names]
+    return [read_patch(os.path.join(directory, name), patch_series.library_dir)
+            for name in names]
 
 
-class _Mismatch(Exception):
-    def __init__(self, path, line):
-        super().__init__(path, line)
-        self.path = path
-        self.line = line
+def _run_patch(directory, patch, reverse=False, dry_run=False):
+    """GNU patch over the copy in directory; the CompletedProcess."""
+    argv = list(PATCH) + ['-d', directory, '-i', os.path.abspath(patch.path)]
+    argv += ['-R'] if reverse else []
+    argv += ['--dry-run'] if dry_run else []
+    try:
+        return subprocess.run(argv, capture_output=True, text=True,
+                              env=dict(os.environ, **_PATCH_ENVIRONMENT))
+    except OSError as error:
+        raise GenmrosError('cannot run GNU patch (Debian: apt-get install patch): %s'
+                           % error.strerror)
 
 
-def _nearest_match(lines, hunk, expected):
-    """The start of the place nearest to expected (0-based) where lines hold
-    every line of the hunk, as GNU patch looks for it; or None."""
-    wanted = hunk.old
-    for distance in range(len(lines) + 1):
-        for start in (expected - distance, expected + distance):
-            if 0 <= start <= len(lines) - len(wanted) and [
-                    line.rstrip('\r\n') for line in lines[start:start + len(wanted)]] == wanted:
-                return start
+def _hunk_start(patch, path, number):
+    """The line hunk #number of patch's changes to path starts at, in the
+    file as the patch expects it (its @@ -LINE header)."""
+    current, count = None, 0
+    with open(patch.path, encoding='utf-8') as stream:
+        for line in stream:
+            match = _FILE_LINE.match(line)
+            if line.startswith('+++ ') and match:
+                current, count = match.group(1).split('/', 1)[-1], 0
+            elif current == path and _HUNK_HEADER.match(line):
+                count += 1
+                if count == number:
+                    return int(_HUNK_HEADER.match(line).group(1))
     return None
 
 
-def patched_text(text, hunks, path):
-    """text with hunks applied, in order, each at its line (moved by the
-    lines the hunks before it added or took away) or at the nearest place
-    its lines are; _Mismatch at the first differing line of the file where
-    a hunk's lines are nowhere."""
-    lines = text.splitlines(keepends=True)
-    # Lines the hunks applied so far added (or took away), and how far the
-    # last hunk was from its line: GNU patch looks for the next one there.
-    grown = offset = 0
-    for hunk in hunks:
-        at_its_line = max(hunk.old_start - 1, 0) + grown
-        expected = at_its_line + offset
-        start = _nearest_match(lines, hunk, expected)
-        if start is None:
-            found = [line.rstrip('\r\n') for line in lines[expected:expected + len(hunk.old)]]
-            mismatch = next((index for index, (have, want) in enumerate(zip(found, hunk.old))
-                             if have != want), len(found))
-            raise _Mismatch(path, expected - grown + mismatch + 1)
-        offset = start - at_its_line
-        ending = '\r\n' if lines and lines[min(start, len(lines) - 1)].endswith('\r\n') else '\n'
-        lines[start:start + len(hunk.old)] = [line + ending for line in hunk.new]
-        grown += len(hunk.new) - len(hunk.old)
-    return ''.join(lines)
+def _refusal(root, patch, result):
+    """The one-line error for a patch GNU patch would not apply: the file,
+    the hunk and the line it starts at."""
+    current = None
+    for line in result.stdout.splitlines():
+        checking = _CHECKING.match(line)
+        if checking:
+            current = checking.group(1)
+        failed = _FAILED_HUNK.match(line)
+        if failed and current:
+            number = int(failed.group(1))
+            return GenmrosError(
+                'differs from what hunk #%d of patch %s expects from here on (another version of '
+                'the library, or changed by hand): nothing is changed' % (number, patch.name),
+                os.path.join(root, current), _hunk_start(patch, current, number))
+        if line.startswith("can't find file to patch") or 'No such file' in line:
+            missing = next((path for path in patch.files
+                            if not os.path.exists(os.path.join(root, path))), None)
+            if missing:
+                return GenmrosError('patch %s changes this file, which is not there: nothing is '
+                                    'changed' % patch.name, os.path.join(root, missing))
+    detail = (result.stdout + result.stderr).strip().splitlines()
+    return GenmrosError('GNU patch refuses patch %s (%s): nothing is changed'
+                        % (patch.name, detail[-1] if detail else 'exit %d' % result.returncode),
+                        patch.path)
 
 
-def _read(root, path):
-    full = os.path.join(root, path)
-    try:
-        with open(full, encoding='utf-8', newline='') as stream:
-            return stream.read()
-    except OSError as error:
-        raise GenmrosError('cannot read: %s' % error.strerror, full)
-    except UnicodeDecodeError:
-        raise GenmrosError('not UTF-8 text, which the patches expect', full)
+class _Copy:
+    """The files a series touches, copied from the checkout at root into a
+    temporary directory, where GNU patch changes them."""
+
+    def __init__(self, root, patches):
+        self.root = root
+        self.files = sorted({path for patch in patches for path in patch.files})
+        self._temporary = tempfile.TemporaryDirectory(prefix='genmros-patches-')
+        self.directory = self._temporary.name
+        for path in self.files:
+            source = os.path.join(root, path)
+            if os.path.isfile(source):
+                os.makedirs(os.path.dirname(os.path.join(self.directory, path)), exist_ok=True)
+                shutil.copy2(source, os.path.join(self.directory, path))
+
+    def apply(self, patch, reverse=False):
+        """Apply patch (reverse: take it out) on the copy, if it goes in
+        whole; returns whether it did, else the refusal GenmrosError."""
+        check = _run_patch(self.directory, patch, reverse, dry_run=True)
+        if check.returncode != 0:
+            return _refusal(self.root, patch, check)
+        done = _run_patch(self.directory, patch, reverse)
+        if done.returncode != 0:
+            return _refusal(self.root, patch, done)
+        return None
+
+    def refusal_of(self, patch):
+        """The refusal GenmrosError if patch does not apply to the copy, else None."""
+        check = _run_patch(self.directory, patch, dry_run=True)
+        return None if check.returncode == 0 else _refusal(self.root, patch, check)
+
+    def is_in(self, patch):
+        """Whether patch is already in the copy: its reverse applies."""
+        return _run_patch(self.directory, patch, reverse=True, dry_run=True).returncode == 0
+
+    def write_back(self):
+        """Write every file the copy changed into the checkout (each file
+        whole, atomically), and remove those the series removed."""
+        changed, removed = {}, []
+        for path in self.files:
+            copy, original = os.path.join(self.directory, path), os.path.join(self.root, path)
+            if os.path.isfile(copy):
+                with open(copy, 'rb') as stream:
+                    changed[path] = stream.read()
+            elif os.path.isfile(original):
+                removed.append(original)
+        write_files(self.root, changed)
+        for path in removed:
+            os.unlink(path)
+
+    def close(self):
+        self._temporary.cleanup()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exception):
+        self.close()
 
 
-def _changed_texts(root, patch, texts):
-    """{path: text} after patch, from texts (read from root where absent)."""
-    changed = {}
-    for path, hunks in patch.files.items():
-        text = texts[path] if path in texts else _read(root, path)
-        changed[path] = patched_text(text, hunks, path)
-    return changed
+def _go_through(copy, patches, revert):
+    """[(patch, was it in)] for patches in series order, each put in (or,
+    with revert, taken out in reverse order) on the copy where it is not
+    there yet; a GenmrosError for the first that neither way applies."""
+    states = []
+    for patch in reversed(patches) if revert else patches:
+        is_in = copy.is_in(patch)
+        if is_in == revert:
+            refusal = copy.apply(patch, reverse=revert)
+        else:
+            # Neither to do nor undone: it must apply where it is not in.
+            refusal = None if is_in else copy.refusal_of(patch)
+        if refusal is not None:
+            raise refusal
+        states.append((patch, is_in))
+    return list(reversed(states)) if revert else states
 
 
 def patch_states(root, patches):
-    """[(patch, applied)] for the checkout at root: True where the patch's
-    changes are there, False where the lines it changes are as it expects;
-    a GenmrosError naming the file, line and patch where neither is so."""
-    states = []
-    for patch in patches:
-        try:
-            _changed_texts(root, patch, {})
-            states.append((patch, False))
-            continue
-        except _Mismatch as unapplied:
-            try:
-                _changed_texts(root, patch.reversed(), {})
-            except _Mismatch:
-                raise GenmrosError(
-                    'differs from what patch %s expects (another version of the library, or '
-                    'changed by hand): nothing is changed' % patch.name,
-                    os.path.join(root, unapplied.path), unapplied.line)
-        states.append((patch, True))
-    return states
+    """[(patch, applied)] for the checkout at root, in series order; a
+    GenmrosError naming the file, the hunk and the patch where a patch is
+    neither in nor applies."""
+    with _Copy(root, patches) as copy:
+        return _go_through(copy, patches, revert=False)
 
 
 def apply_patches(root, patches, revert=False):
-    """Applies patches to the checkout at root (revert: takes them out);
-    returns the names of the patches it applied (or took out). Every file
-    is checked before any is written; each is written whole, atomically."""
-    texts = {}
-    done = []
-    states = patch_states(root, patches)
-    # Taken out in the reverse order: each from the text it was applied to.
-    for patch, applied in reversed(states) if revert else states:
-        if applied != revert:
-            continue
-        texts.update(_changed_texts(root, patch.reversed() if revert else patch, texts))
-        done.append(patch.name)
-    write_files(root, texts)
-    return done
-
+    """Applies patches to the checkout at root (revert: takes them out),
+    once all of them went through on a copy; returns the names of the
+    patches it applied (or took out), in the order it did."""
+    with _Copy(root, patches) as copy:
+        states = _go_through(copy, patches, revert)
+        copy.write_back()
+    done = [patch.name for patch, was_in in states if was_in == revert]
+    return list(reversed(done)) if revert else done

@@ -9,13 +9,13 @@ import subprocess
 
 import pytest
 
+from colcon_mros.errors import GenmrosError
 from colcon_mros.library_tools.mros_v1.patches import MROS_V1_SERIES, mros_v1_patches
 from colcon_mros.library_tools.patch_series import apply_patches, read_patch
-
-PATCH_DIR = MROS_V1_SERIES.directory
-from colcon_mros.errors import GenmrosError
 from conftest import run_genmros
 from mros_v1_checkout import MROS_V1_ROOT
+
+PATCH_DIR = MROS_V1_SERIES.directory
 
 pytestmark = [pytest.mark.needs_mros_v1]
 
@@ -58,10 +58,11 @@ def test_apply_check_revert_on_a_checkout(checkout):
     assert sorted(os.path.basename(path) for path in _touched_files()) == sorted(
         os.path.basename(path) for path in changed)
     for patch in mros_v1_patches():
-        for path, hunks in patch.files.items():
-            text = (checkout / path).read_text()
-            for hunk in hunks:
-                assert '\n'.join(hunk.new) in text, (patch.name, path)
+        texts = ''.join((checkout / path).read_text() for path in patch.files)
+        with open(patch.path) as stream:
+            added = [line[1:] for line in stream.read().splitlines()
+                     if line.startswith('+') and not line.startswith('+++')]
+        assert added and all(line in texts for line in added), patch.name
     assert not filecmp.dircmp(os.path.join(MROS_V1_ROOT, 'mros_ws', 'string_pubsub'),
                               str(checkout / 'mros_ws' / 'string_pubsub')).diff_files
 
@@ -77,21 +78,37 @@ def test_apply_check_revert_on_a_checkout(checkout):
     assert _same_as_original(checkout) == []
 
 
+def _first_hunk(patch):
+    """(path, the line the first hunk starts at, its lines as the library has
+    them) of a patch, read from its text."""
+    with open(patch.path) as stream:
+        lines = stream.read().splitlines()
+    path = next(line[4:].split('/', 1)[1] for line in lines if line.startswith('+++ '))
+    header = next(index for index, line in enumerate(lines) if line.startswith('@@ -'))
+    start = int(lines[header].split()[1][1:].split(',')[0])
+    body = []
+    for line in lines[header + 1:]:
+        if line.startswith('@@') or line.startswith('--- '):
+            break
+        if line[:1] in (' ', '-'):
+            body.append(line[1:])
+    return path, start, body
+
+
 def test_a_checkout_that_differs_is_refused_and_left_as_it_is(checkout):
-    # A line the last patch's hunk expects, changed by hand.
+    # A line the last patch's first hunk expects, changed by hand.
     patch = mros_v1_patches()[-1]
-    path, hunks = sorted(patch.files.items())[0]
+    path, start, expected = _first_hunk(patch)
     lines = (checkout / path).read_text().splitlines(keepends=True)
-    expected_line = hunks[0].old_start + next(
-        index for index, line in enumerate(hunks[0].old) if line.strip())
-    lines[expected_line - 1] = '/* changed by hand */\n'
+    changed = start + next(index for index, line in enumerate(expected) if line.strip())
+    lines[changed - 1] = '/* changed by hand */\n'
     (checkout / path).write_text(''.join(lines))
     result = run_genmros('mros-v1-harden', str(checkout), check=False)
     assert result.returncode == 1 and result.stdout == ''
     assert result.stderr == (
-        'genmros: error: %s:%d: differs from what patch %s expects (another version of the '
-        'library, or changed by hand): nothing is changed\n'
-        % (checkout / path, expected_line, patch.name))
+        'genmros: error: %s:%d: differs from what hunk #1 of patch %s expects from here on '
+        '(another version of the library, or changed by hand): nothing is changed\n'
+        % (checkout / path, start, patch.name))
     # The other patches, which would apply, were not applied either.
     assert _same_as_original(checkout) == [os.path.basename(path)]
     assert run_genmros('mros-v1-harden', str(checkout), '--check', check=False).returncode == 1
@@ -123,19 +140,6 @@ def test_every_patch_is_named_for_what_it_fixes_and_applies_alone(checkout):
         assert apply_patches(str(checkout), [patch]) == [patch.name]
         assert apply_patches(str(checkout), [patch], revert=True) == [patch.name]
     assert _same_as_original(checkout) == []
-
-
-def test_every_hunk_has_one_place_in_the_library():
-    # A hunk that another patch moved is found by its lines; they must not
-    # also fit somewhere else (where a change by hand would then land it).
-    for patch in mros_v1_patches():
-        for path, hunks in patch.files.items():
-            with open(os.path.join(MROS_V1_ROOT, path), encoding='utf-8') as stream:
-                lines = stream.read().splitlines()
-            for hunk in hunks:
-                places = [index + 1 for index in range(len(lines))
-                          if lines[index:index + len(hunk.old)] == hunk.old]
-                assert places == [hunk.old_start], (patch.name, path, places)
 
 
 def test_gnu_patch_applies_the_series_as_genmros_does(checkout, tmp_path):
