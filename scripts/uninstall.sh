@@ -23,5 +23,5 @@ if [[ "$location" == /usr/local/* ]]; then
 fi
 
 if [ "${1:-}" != --legacy-only ] && dpkg-query -W -f='${Status}' colcon-mros 2>/dev/null | grep -q installed; then
-  as_root dpkg --purge colcon-mros >/dev/null
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get purge -y -qq colcon-mros >/dev/null
 fi

@@ -1,6 +1,7 @@
 """The version is written once, in Python (colcon_mros.__version__): the
-catkin and ament manifests keep theirs, held equal to it here, and the CMake
-version file of rosidl_generator_mros2 is written from it at install."""
+catkin and ament manifests and the Debian changelog keep theirs, held equal
+to it here, and the CMake version file of rosidl_generator_mros2 is written
+from it at install."""
 
 import os
 import re
@@ -35,3 +36,9 @@ def test_the_installed_cmake_version_file_is_written_from_it():
     assert '@' not in text
     # The source tree holds only its template.
     assert not os.path.exists(os.path.join(REPO, VERSION_FILE))
+
+
+def test_the_debian_changelog_carries_the_version():
+    with open(os.path.join(REPO, 'debian', 'changelog')) as stream:
+        first = stream.readline()
+    assert re.match(r'^colcon-mros \(([^)]+)\) ', first).group(1) == __version__
