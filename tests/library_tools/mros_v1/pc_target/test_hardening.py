@@ -185,10 +185,13 @@ def test_subscribers_that_left_give_their_room_back_when_hardened(request, libra
     with RosGraph() as graph:
         board = Board(graph, program, str(tmp_path))
         graph.wait_for_graph(publishers=[('/mros_msg', '/mros_node')])
-        for _ in range(12):
-            RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5).close()
-            time.sleep(0.3)  # the publisher task has added it to its tables
-        last = RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5)
+        try:
+            for _ in range(12):
+                RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5).close()
+                time.sleep(0.3)  # the publisher task has added it to its tables
+            last = RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5)
+        except AssertionError as error:
+            raise AssertionError('%s\nthe board:\n%s' % (error, board.process.output()))
         board.set_inputs(P6_0=0)
         last.connection.settimeout(10)
         if library == 'hardened':
