@@ -19,11 +19,12 @@ from conftest import REPO
 TREE = os.path.join(REPO, 'tests', 'fixtures', 'patch_tree')
 
 
-def patch_set(directory):
+def series_in(directory):
+    """The patches of a series directory of the fixture's kind."""
     return read_series(PatchSeries(directory, 'mros-lib'))
 
 
-PATCHES = patch_set(os.path.join(TREE, 'patches'))
+PATCHES = series_in(os.path.join(TREE, 'patches'))
 FILES = ('mros-lib/api/ros.cpp', 'mros-lib/comm/socket.c')
 
 
@@ -70,13 +71,13 @@ def _patch_dir(tmp_path, series, **texts):
 def test_a_patch_outside_the_series_or_a_name_it_lacks_is_refused(tmp_path):
     directory = _patch_dir(tmp_path, 'bound-received-lengths.patch\n')
     with pytest.raises(GenmrosError) as refused:
-        patch_set(directory)
+        series_in(directory)
     assert str(refused.value) == '%s: patches not in the series: publish-without-memory.patch' \
         % os.path.join(directory, 'series')
     directory = _patch_dir(tmp_path / 'again', '# comment\nbound-received-lengths.patch\n'
                            'publish-without-memory.patch\nmissing.patch\n')
     with pytest.raises(GenmrosError) as refused:
-        patch_set(directory)
+        series_in(directory)
     assert str(refused.value) == '%s:4: missing.patch: no such patch' % os.path.join(
         directory, 'series')
 
@@ -162,7 +163,7 @@ def _series(tmp_path, **patches):
     (directory / 'series').write_text(''.join('%s.patch\n' % name for name in patches))
     for name, text in patches.items():
         (directory / (name + '.patch')).write_text(text)
-    return patch_set(str(directory))
+    return series_in(str(directory))
 
 
 def test_a_patch_adds_and_removes_files_and_keeps_a_last_line_without_newline(library, tmp_path):
