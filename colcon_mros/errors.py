@@ -1,4 +1,4 @@
-"""The one exception type the generator reports to users."""
+"""The one exception type genmros reports to users."""
 
 import difflib
 

@@ -66,7 +66,7 @@ class MaxSize:
 
 def firmware_files(messages, variable_budget=DEFAULT_VARIABLE_SIZE_BUDGET):
     """{FIRMWARE_FILES name: text} for a firmware's message types (the
-    generator's models)."""
+    ROS 1 front end's models)."""
     context = {'messages': [CppType(message.full_name) for message in messages],
                'sizes': MaxSize(messages, variable_budget),
                'delivery_header': DELIVERY_HEADER,

@@ -106,7 +106,7 @@ class Requirement:
 
 
 class Fit:
-    """A firmware's message types (the generator's models) against settings
+    """A firmware's message types (the ROS 1 front end's models) against settings
     ({name: Setting}): the misfits (errors) and the warnings, and each
     type's requirements (type_requirements: (TypeNeeds, [Requirement]) in
     the types' order, one Requirement per rule and rule_settings' setting).

@@ -4,7 +4,7 @@ The library keeps each TCPROS connection header a ROS node sends in a
 buffer of fixed size, copies each type name into a field of fixed size and
 takes each message from memory pools of fixed sizes, and checks none of them
 against what a peer sends (docs/pc-target.md, "The library's own limits").
-Each :class:`Rule` here is one such need, counted from what the generator
+Each :class:`Rule` here is one such need, counted from what genmros
 knows of a type (:class:`TypeNeeds`: its full definition text, its name, its
 largest frame); :data:`FRAME_SLOTS` is the one rule of the firmware as a
 whole. The Python fit check (:mod:`.fit`) and the compile-time check
@@ -86,7 +86,7 @@ POOL_KINDS = (PUBLISHING_POOLS, RECEIVING_POOLS)
 
 class TypeNeeds:
     """The numbers of one message type the rules count with, from the
-    generator's model of it."""
+    ROS 1 front end's model of it."""
 
     def __init__(self, message):
         self.full_name = message.full_name
