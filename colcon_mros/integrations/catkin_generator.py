@@ -27,6 +27,7 @@ from colcon_mros.core.output import is_generated, write_files
 from colcon_mros.errors import GenmrosError
 from colcon_mros.export.export_dir import ExportDir
 from colcon_mros.export.run_record import RunRecord, snapshot
+from colcon_mros.integrations.installed_files import CMAKE_MODULE, installed_file
 from colcon_mros.mros_v1.names import RESERVED_NAMES
 from colcon_mros.mros_v1.render import Renderer
 from colcon_mros.ros1.definition import Definition
@@ -138,7 +139,6 @@ def generate_files(paths, package, output_dir, search_path, template_dir=None, e
 
     include_root = os.path.dirname(os.path.abspath(output_dir))
     if exports and cmake_module is None:
-        from colcon_mros.integrations.installed_files import CMAKE_MODULE, installed_file
         cmake_module = installed_file(CMAKE_MODULE)
     if all_of_package:
         definitions = [generated.definition for generated in loaded]

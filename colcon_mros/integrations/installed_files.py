@@ -1,20 +1,22 @@
 """Where the files genmros installs beside its Python package are.
 
-pip installs the CMake package (genmrosConfig.cmake), the CMake module
-(mros_generate.cmake) and the make fragment (genmros.mk) under
-``share/genmros/cmake/`` of whatever prefix the install used (/usr for
-setup.sh's Debian package, /usr/local, ~/.local, a venv); the
-distribution's own record of its files says where, so no prefix is
-assumed. A source checkout has the module and the fragment in ``cmake/``.
+An install puts the CMake package (genmrosConfig.cmake), the CMake module
+(mros_generate.cmake), the make fragment (genmros.mk) and the catkin prefix
+under ``share/genmros/`` of the prefix its Python package went into: /usr
+for setup.sh's Debian package (``/usr/lib/python3/dist-packages``),
+/usr/local, ~/.local, a venv (``<prefix>/lib/pythonX.Y/site-packages``).
+The prefix is found from where this package is, three directories above
+its site directory, so no prefix is assumed and no install record is
+needed (the Debian package, built by pybuild, keeps none). A source
+checkout has the module and the fragment in ``cmake/``.
 """
 
 import os
-from importlib import metadata
 
 from colcon_mros.errors import GenmrosError
 
-DISTRIBUTION = 'colcon-mros'
-# A source checkout: the directory that holds the colcon_mros package.
+# A source checkout: the directory that holds the colcon_mros package; in
+# an install, its site directory.
 REPOSITORY_ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 MAKE_FRAGMENT = 'genmros.mk'
 CMAKE_MODULE = 'mros_generate.cmake'
@@ -24,6 +26,15 @@ CMAKE_CONFIG = 'genmrosConfig.cmake'
 # etc/ros/genmsg/genmros registers the catkin generator once the prefix is
 # on CMAKE_PREFIX_PATH.
 CATKIN_MARKER = '.catkin'
+# Where each is below the install prefix.
+INSTALLED_PATHS = {
+    MAKE_FRAGMENT: ('share', 'genmros', 'cmake', MAKE_FRAGMENT),
+    CMAKE_MODULE: ('share', 'genmros', 'cmake', CMAKE_MODULE),
+    CMAKE_CONFIG: ('share', 'genmros', 'cmake', CMAKE_CONFIG),
+    CATKIN_MARKER: ('share', 'genmros', 'catkin_prefix', CATKIN_MARKER),
+}
+# <prefix>/lib/python3/dist-packages, <prefix>/lib/pythonX.Y/site-packages.
+_SITE_DEPTH = 3
 
 
 def _checkout_file(name):
@@ -32,16 +43,11 @@ def _checkout_file(name):
 
 
 def _installed_file(name):
-    try:
-        files = metadata.files(DISTRIBUTION) or []
-    except metadata.PackageNotFoundError:
-        return None
-    for record in files:
-        if record.name == name:
-            path = os.path.normpath(str(record.locate()))
-            if os.path.isfile(path):
-                return path
-    return None
+    prefix = REPOSITORY_ROOT
+    for _ in range(_SITE_DEPTH):
+        prefix = os.path.dirname(prefix)
+    path = os.path.join(prefix, *INSTALLED_PATHS[name])
+    return path if os.path.isfile(path) else None
 
 
 def installed_file(name):

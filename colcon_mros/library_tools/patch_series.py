@@ -21,8 +21,8 @@ import shutil
 import subprocess
 import tempfile
 
-from colcon_mros.errors import GenmrosError
 from colcon_mros.core.output import write_files
+from colcon_mros.errors import GenmrosError
 
 # The patches' order, one file name a line ('#' starts a comment).
 SERIES = 'series'

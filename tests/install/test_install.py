@@ -125,3 +125,14 @@ def test_nothing_test_only_is_installed():
     assert repository_only == []
     assert not any(os.path.basename(path) in ('ros_graph.py', 'tcpros_peer.py')
                    for path in python_files)
+
+
+def test_the_debian_packages_genmros_finds_its_cmake_and_make_files():
+    # pybuild installs the package without an install record: genmros finds
+    # share/genmros from where its Python package is (/usr/lib/python3/dist-packages).
+    environment = {'PATH': '/usr/bin:/bin', 'HOME': os.environ.get('HOME', '/root')}
+    for subcommand, expected in (('cmake-dir', '/usr/share/genmros/cmake'),
+                                 ('make-fragment', '/usr/share/genmros/cmake/genmros.mk'),
+                                 ('catkin-prefix', '/usr/share/genmros/catkin_prefix')):
+        result = _run(['/usr/bin/genmros', subcommand], '/', env=environment)
+        assert result.stdout == expected + '\n'
