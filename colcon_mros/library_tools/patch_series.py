@@ -188,21 +188,13 @@ class _Copy:
                 os.makedirs(os.path.dirname(os.path.join(self.directory, path)), exist_ok=True)
                 shutil.copy2(source, os.path.join(self.directory, path))
 
-    def apply(self, patch, reverse=False):
-        """Apply patch (reverse: take it out) on the copy, if it goes in
-        whole; returns whether it did, else the refusal GenmrosError."""
-        check = _run_patch(self.directory, patch, reverse, dry_run=True)
-        if check.returncode != 0:
-            return _refusal(self.root, patch, check)
-        done = _run_patch(self.directory, patch, reverse)
-        if done.returncode != 0:
-            return _refusal(self.root, patch, done)
-        return None
-
-    def refusal_of(self, patch):
-        """The refusal GenmrosError if patch does not apply to the copy, else None."""
-        check = _run_patch(self.directory, patch, dry_run=True)
-        return None if check.returncode == 0 else _refusal(self.root, patch, check)
+    def apply(self, patch, reverse=False, dry_run=False):
+        """Apply patch (reverse: take it out) on the copy; None if it went
+        in whole, else the refusal GenmrosError. A refused patch may leave
+        some of its hunks on the copy: the refusal ends the run, and the
+        copy goes with it."""
+        result = _run_patch(self.directory, patch, reverse, dry_run)
+        return None if result.returncode == 0 else _refusal(self.root, patch, result)
 
     def is_in(self, patch):
         """Whether patch is already in the copy: its reverse applies."""
@@ -244,7 +236,7 @@ def _go_through(copy, patches, revert):
             refusal = copy.apply(patch, reverse=revert)
         else:
             # Neither to do nor undone: it must apply where it is not in.
-            refusal = None if is_in else copy.refusal_of(patch)
+            refusal = None if is_in else copy.apply(patch, dry_run=True)
         if refusal is not None:
             raise refusal
         states.append((patch, is_in))

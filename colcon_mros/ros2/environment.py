@@ -1,7 +1,7 @@
 """What the ROS 2 front end needs of the installation, checked with a clear message.
 
 rosidl's Python packages (rosidl_adapter, rosidl_parser, and rosidl's
-helpers: rosidl_pycommon from rosidl 3.2 on, rosidl_cmake in Humble's 3.1)
+helpers: rosidl_pycommon from rosidl 3.3 on, rosidl_cmake in Humble's 3.1)
 and empy 3 come with ROS 2's build side: Debian's python3-rosidl, or a
 sourced ROS 2 setup (Humble's /opt/ros/humble/setup.bash puts them on
 PYTHONPATH).

@@ -1,6 +1,6 @@
 """rosidl's Python helpers, from whichever rosidl line is installed.
 
-rosidl 3.2 and later (Debian 12's 3.3.1, the ROS 2 wheels' 4.x) keep them
+rosidl 3.3 and later (Debian 12's 3.3.1, the ROS 2 wheels' 4.x) keep them
 in ``rosidl_pycommon``; Humble's rosidl 3.1 keeps the same functions in
 ``rosidl_cmake``. Everything the package takes from them goes through here.
 """
@@ -12,12 +12,11 @@ HELPER_MODULES = ('rosidl_pycommon', 'rosidl_cmake')
 
 
 def _helpers():
-    for name in HELPER_MODULES[:-1]:
-        try:
-            return importlib.import_module(name)
-        except ImportError:
-            continue
-    return importlib.import_module(HELPER_MODULES[-1])
+    newest, humbles = HELPER_MODULES
+    try:
+        return importlib.import_module(newest)
+    except ImportError:
+        return importlib.import_module(humbles)
 
 
 def type_file_stem(name):
