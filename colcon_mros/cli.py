@@ -31,7 +31,9 @@ Export mode, what one firmware needs:
 
 mros2 (ROS 2), what one firmware needs, with its templates.hpp:
   genmros mros2-export [--workspace WS ...] [--type PKG/msg/TYPE ...]
-                       [--publish T ...] [--subscribe T ...] -o DIR
+                       [--publish [TOPIC:]T ...] [--subscribe [TOPIC:]T ...] -o DIR
+  genmros mros2-fit --rtps-config rtps/config.h [--receive-limit N] [--mros2-root DIR]
+                    [--publish [TOPIC:]T ...] [--subscribe [TOPIC:]T ...]
 
 Every subcommand has --help.'''
 
@@ -297,39 +299,82 @@ def _add_mros_v1_harden(subparsers):
     parser.set_defaults(run=_mros_v1_harden)
 
 
-def _add_mros2_export(subparsers):
-    parser = subparsers.add_parser(
-        'mros2-export', help='[mros2, ROS 2] the headers one mros2 firmware needs, and its '
-                             'templates.hpp',
-        description='mros2 (ROS 2): the headers of the selected ROS 2 types and every type they '
-                    'contain, read with rosidl from a workspace and the installed ROS 2 packages; '
-                    "with --publish/--subscribe also mros2's templates.hpp for those types.")
+def _add_mros2_sources(parser):
     parser.add_argument('--workspace', dest='workspaces', action='append', default=[], metavar='WS',
                         help='ROS 2 workspace or source tree, searched for package.xml '
                              '(repeatable)')
     parser.add_argument('--prefix', dest='prefixes', action='append', metavar='PREFIX',
                         help='installed ROS 2 prefix (share/<pkg>/msg, ament index), or an '
                              "export dir's mros2/ (repeatable; default: AMENT_PREFIX_PATH)")
+
+
+def _add_mros2_endpoints(parser, instantiated):
+    for flag, what in (('--publish', 'publishes'), ('--subscribe', 'subscribes to')):
+        parser.add_argument(flag, dest=flag[2:], action='append', default=[],
+                            metavar='[TOPIC:]PKG/msg/TYPE',
+                            help='a topic and message type the firmware %s%s; a type alone '
+                                 'skips the topic rules of the fit check (repeatable)'
+                                 % (what, instantiated))
+
+
+def _add_mros2_board(parser, required):
+    parser.add_argument('--rtps-config', required=required, metavar='FILE',
+                        help="the board's rtps/config.h, the one the firmware compiles with"
+                             + ('' if required else ': check the endpoints against it first'))
+    parser.add_argument('--receive-limit', metavar='BYTES|FILE:NAME',
+                        help="the largest datagram the board's network stack takes: bytes, or "
+                             "the setting NAME in FILE (a #define or a constant); checked "
+                             'against the largest sample of each subscribed type')
+    parser.add_argument('--mros2-root', metavar='DIR',
+                        help="the firmware's mros2 checkout: whether its Publisher has a writer "
+                             'of its own')
+
+
+def _add_mros2_export(subparsers):
+    parser = subparsers.add_parser(
+        'mros2-export', help='[mros2, ROS 2] the headers one mros2 firmware needs, and its '
+                             'templates.hpp',
+        description='mros2 (ROS 2): the headers of the selected ROS 2 types and every type they '
+                    'contain, read with rosidl from a workspace and the installed ROS 2 packages; '
+                    "with --publish/--subscribe also mros2's templates.hpp for those types, with "
+                    "the fit check's static_asserts; with --rtps-config the fit check runs first "
+                    '(genmros mros2-fit) and a misfit writes nothing.')
+    _add_mros2_sources(parser)
     parser.add_argument('--package', dest='packages', action='append', default=[],
                         metavar='PKG', help='export every type of PKG (repeatable)')
     parser.add_argument('--type', dest='types', action='append', default=[],
                         metavar='PKG/msg/TYPE',
                         help='a message (PKG/msg/TYPE or PKG/TYPE), a service (PKG/srv/NAME) or '
                              'one half of one (repeatable)')
-    for flag, what in (('--publish', 'publishes'), ('--subscribe', 'subscribes to')):
-        parser.add_argument(flag, dest=flag[2:], action='append', default=[],
-                            metavar='PKG/msg/TYPE',
-                            help='a message type the firmware %s: exported, and instantiated in '
-                                 'templates.hpp (repeatable)' % what)
+    _add_mros2_endpoints(parser, ': exported, and instantiated in templates.hpp')
     parser.add_argument('-o', dest='output_dir', required=True, metavar='DIR',
                         help='include root to write to')
+    _add_mros2_board(parser, required=False)
     _add_storage(parser, 'unbounded strings and sequences (string<=N and T[<=N] are always '
                          'bounded)', "; each package's msg/genmros.options is read too")
     parser.set_defaults(run=_mros2_export)
 
 
+def _add_mros2_fit(subparsers):
+    parser = subparsers.add_parser(
+        'mros2-fit', help="[mros2, ROS 2] a firmware's endpoints against its board's settings",
+        description="mros2 (ROS 2): a firmware's endpoints against its board's rtps/config.h "
+                    "(type and topic name lengths, the participant's writers and readers), "
+                    "its network stack's receive limit (each subscribed type's largest sample) "
+                    "and its mros2 (more than one publisher). One line per problem, naming the "
+                    'setting, its file and line and the value it needs. Exits 1 if a build '
+                    'would stop.')
+    _add_mros2_sources(parser)
+    _add_mros2_endpoints(parser, '')
+    _add_mros2_board(parser, required=True)
+    _add_storage(parser, 'unbounded strings and sequences (string<=N and T[<=N] are always '
+                         'bounded)', "; each package's msg/genmros.options is read too")
+    parser.set_defaults(run=_mros2_fit)
+
+
 SUBCOMMANDS = (_add_generate, _add_export, _add_printers, _add_export_dir_commands,
-               _add_mros_v1_pc, _add_mros_v1_fit, _add_mros_v1_harden, _add_mros2_export)
+               _add_mros_v1_pc, _add_mros_v1_fit, _add_mros_v1_harden, _add_mros2_export,
+               _add_mros2_fit)
 
 
 def build_parser():
@@ -356,16 +401,36 @@ def _generate(options):
                    options.all_of_package)
 
 
+def _mros2_board(options):
+    from colcon_mros.export.mros2_export import Board
+    return Board(options.rtps_config, options.receive_limit, options.mros2_root)
+
+
 def _mros2_export(options):
     from colcon_mros.ros2.environment import require_rosidl
     require_rosidl()
     from colcon_mros.export.mros2_export import export_firmware
     result = export_firmware(options.output_dir, options.workspaces, options.prefixes,
                              options.packages, options.types, options.publish, options.subscribe,
-                             options.storage, options.option_files)
+                             options.storage, options.option_files, _mros2_board(options))
+    if result.fit:
+        for line in result.fit.warnings:
+            print('genmros: warning: %s' % line, file=sys.stderr)
     print('genmros: %d mros2 message types, %d services in %s (%d files changed, %d removed)'
           % (len(result.messages), len(result.services), options.output_dir,
              len(result.changed), len(result.removed)))
+
+
+def _mros2_fit(options):
+    from colcon_mros.ros2.environment import require_rosidl
+    require_rosidl()
+    from colcon_mros.export.mros2_export import firmware_fit
+    if not options.publish and not options.subscribe:
+        raise GenmrosError('name the endpoints: --publish/--subscribe [TOPIC:]PKG/msg/TYPE')
+    fit = firmware_fit(_mros2_board(options), options.workspaces, options.prefixes,
+                       options.publish, options.subscribe, options.storage, options.option_files)
+    sys.stdout.write(fit.report())
+    return 1 if fit.misfits else 0
 
 
 def _export(options):

@@ -16,19 +16,24 @@ import os
 from colcon_mros.core.output import is_generated, write_tree
 from colcon_mros.core.storage import storage_for
 from colcon_mros.errors import GenmrosError
+from colcon_mros.core.settings import read_settings
 from colcon_mros.mros2 import render
+from colcon_mros.mros2.endpoints import PUBLISH, SUBSCRIBE, Endpoint, split_endpoint
+from colcon_mros.mros2.fit import Fit, PublisherWriter, receive_limit
 from colcon_mros.ros2.interfaces import all_packages
 from colcon_mros.ros2.model import ModelBuilder
 
 
 class Mros2Export:
-    """What an export wrote: its messages and services, changed and removed paths."""
+    """What an export wrote: its messages and services, changed and removed
+    paths, and the fit check's Fit where the board was given."""
 
-    def __init__(self, messages, services, changed, removed):
+    def __init__(self, messages, services, changed, removed, fit=None):
         self.messages = messages
         self.services = services
         self.changed = changed
         self.removed = removed
+        self.fit = fit
 
 
 def _builder(packages, storage, option_files):
@@ -77,13 +82,49 @@ def _within(path, directory):
         os.path.abspath(directory)
 
 
+class Board:
+    """What the fit check reads of the board: its rtps/config.h (None: no
+    check), the receive limit as given (--receive-limit: bytes or
+    FILE:NAME) and the user's mros2 checkout (or None)."""
+
+    def __init__(self, rtps_config=None, receive_limit_text=None, mros2_root=None):
+        self.rtps_config = rtps_config
+        self.receive_limit_text = receive_limit_text
+        self.mros2_root = mros2_root
+
+    def fit(self, endpoints):
+        """The Fit of endpoints to this board."""
+        return Fit(endpoints, read_settings([self.rtps_config]),
+                   receive_limit(self.receive_limit_text),
+                   PublisherWriter(self.mros2_root) if self.mros2_root else None)
+
+
+def _endpoints(builder, publish, subscribe):
+    endpoints = []
+    for direction, texts in ((PUBLISH, publish), (SUBSCRIBE, subscribe)):
+        for text in texts:
+            topic, type_name = split_endpoint(text)
+            endpoints.append(Endpoint(direction, topic, builder.message(type_name)))
+    return endpoints
+
+
+def firmware_fit(board, workspaces=(), prefixes=None, publish=(), subscribe=(), storage='heap',
+                 option_files=()):
+    """The Fit of a firmware's endpoints (TOPIC:TYPE or TYPE texts) to a Board."""
+    builder = _builder(all_packages(workspaces, prefixes), storage, option_files)
+    return board.fit(_endpoints(builder, publish, subscribe))
+
+
 def export_firmware(output_dir, workspaces=(), prefixes=None, package_names=(), type_names=(),
-                    publish=(), subscribe=(), storage='heap', option_files=()):
-    """Write one firmware's mros2 headers under output_dir (see the module)."""
+                    publish=(), subscribe=(), storage='heap', option_files=(), board=None):
+    """Write one firmware's mros2 headers under output_dir (see the module);
+    with a Board whose rtps_config is given, refuse the misfits first."""
     packages = all_packages(workspaces, prefixes)
     builder = _builder(packages, storage, option_files)
-    publish_types = [builder.message(name) for name in publish]
-    subscribe_types = [builder.message(name) for name in subscribe]
+    endpoints = _endpoints(builder, publish, subscribe)
+    fit = board.fit(endpoints) if board and board.rtps_config else None
+    if fit:
+        fit.refuse()
     if not package_names and not type_names and not publish and not subscribe:
         if not workspaces:
             raise GenmrosError('name the types to export (--type, --package, --publish, '
@@ -92,13 +133,13 @@ def export_firmware(output_dir, workspaces=(), prefixes=None, package_names=(), 
         package_names = sorted(name for name, package in packages.items()
                                if any(_within(package.root, w) for w in workspaces))
     messages, services = _select(builder, package_names, type_names)
-    contained = builder.closure(messages + publish_types + subscribe_types +
+    contained = builder.closure(messages + [e.message for e in endpoints] +
                                 [half for service in services for half in service.dependencies])
     files = render.support_headers()
     files.update(render_types(contained, services))
-    if publish_types or subscribe_types:
-        files.update(render.templates_header(publish_types, subscribe_types))
+    if endpoints:
+        files.update(render.templates_header(endpoints))
     changed, removed = write_tree(
         output_dir, files, drop=lambda relative: is_generated(os.path.join(output_dir, relative)))
-    return Mros2Export([m for m in contained if m.kind == 'msg'], services, changed, removed)
-
+    return Mros2Export([m for m in contained if m.kind == 'msg'], services, changed, removed,
+                       fit)

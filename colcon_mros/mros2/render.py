@@ -11,6 +11,9 @@ from colcon_mros import __version__
 from colcon_mros.core.render import render_template, static_text
 from colcon_mros.mros2.cpp import (SUPPORT_HEADERS, WIRE_HEADER, WIRE_VERSION, CppMessage,
                                    CppMessageName, CppService)
+from colcon_mros.mros2.endpoints import PUBLISH, SUBSCRIBE, messages
+from colcon_mros.mros2.rules import (READER_STACK_MARGIN, READER_STACK_MARGIN_MACRO,
+                                     requirements)
 
 TEMPLATE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'templates')
 # The wire header; the containers header is the core's.
@@ -44,12 +47,14 @@ def service_header(service):
         traits_text=_render('type_name.hpp.em', messages=[view.request, view.response]))}
 
 
-def templates_header(publish, subscribe):
+def templates_header(endpoints):
     """mros2's templates.hpp: the explicit instantiations of its publish and
-    subscribe calls for the message types a firmware uses."""
-    wire_types = {m.full_name: CppMessageName(m) for m in publish + subscribe}
+    subscribe calls for the message types a firmware's endpoints use, and
+    the rules' static_asserts on the board's rtps::Config."""
+    publish = [CppMessageName(m) for m in messages(endpoints, PUBLISH)]
+    subscribe = [CppMessageName(m) for m in messages(endpoints, SUBSCRIBE)]
     return {TEMPLATES_HEADER: _render(
-        'templates.hpp.em', headers=sorted({name.header for name in wire_types.values()}),
-        wire_types=[wire_types[name] for name in sorted(wire_types)],
-        publish=[CppMessageName(m) for m in publish],
-        subscribe=[CppMessageName(m) for m in subscribe])}
+        'templates.hpp.em', headers=sorted({name.header for name in publish + subscribe}),
+        requirements=[r for r in requirements(endpoints) if r.cpp_needed is not None],
+        stack_margin_macro=READER_STACK_MARGIN_MACRO, stack_margin=READER_STACK_MARGIN,
+        publish=publish, subscribe=subscribe)}

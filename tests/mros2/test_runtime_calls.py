@@ -10,6 +10,7 @@ network is left out.
 """
 
 import os
+import re
 import subprocess
 
 import pytest
@@ -108,9 +109,36 @@ def test_a_type_name_too_long_for_embedded_rtps_stops_the_build(export, tmp_path
     result = compile_with(40)
     assert result.returncode != 0
     for dds_name in dds_names:
-        assert '%s needs rtps::Config::MAX_TYPENAME_LENGTH >= %d (rtps/config.h)' % (
-            dds_name, len(dds_name) + 1) in result.stderr
+        assert ('%s: its DDS type name and its NUL needs rtps::Config::MAX_TYPENAME_LENGTH >= %d '
+                '(rtps/config.h)' % (dds_name, len(dds_name) + 1)) in result.stderr
     assert compile_with(max(len(name) for name in dds_names) + 1).returncode == 0
+
+
+def test_a_subscribed_message_too_large_for_the_reader_stack_stops_the_build(export, tmp_path):
+    """mros2's callback_handler holds the message on the reader thread's
+    stack: templates.hpp holds sizeof(T) and the margin (512 unless the
+    firmware defines it) against THREAD_POOL_READER_STACKSIZE, for the
+    subscribed types only (the published MultiNested holds three Arrays)."""
+    def compile_with(stack, margin=None):
+        defines = ['-DSTAND_IN_THREAD_POOL_READER_STACKSIZE=%d' % stack]
+        if margin is not None:
+            defines.append('-DMROS2_READER_STACK_MARGIN=%d' % margin)
+        return subprocess.run(['g++'] + FLAGS + defines + [
+            '-I', export, '-I', RUNTIME, '-c', os.path.join(RUNTIME, 'mros2_runtime_check.cpp'),
+            '-o', str(tmp_path / 'check.o')], capture_output=True, text=True)
+    result = compile_with(600)
+    assert result.returncode != 0
+    reasons = re.findall(r'static assertion failed: (.*)', result.stderr)
+    assert reasons == [
+        "test_interface_files::msg::%s: mros2's callback_handler holding the message on the "
+        "reader thread's stack, with MROS2_READER_STACK_MARGIN bytes for the frames below it "
+        'needs rtps::Config::THREAD_POOL_READER_STACKSIZE >= sizeof(test_interface_files::msg::%s)'
+        ' + MROS2_READER_STACK_MARGIN (rtps/config.h)' % (name, name)
+        for name in ('Arrays',)], result.stderr[-3000:]  # BasicTypes fits in 600
+    # g++ says what sizeof(Arrays) + the margin came to; exactly that much builds.
+    needed = int(re.search(r'\((\d+) <= 600\)', result.stderr).group(1))
+    assert compile_with(needed).returncode == 0
+    assert compile_with(needed, margin=513).returncode != 0
 
 
 def test_the_runtime_sends_what_fastcdr_writes(export, tmp_path):

@@ -5,11 +5,17 @@
 #include "@(header)"
 @[end for]@
 
-// embeddedRTPS keeps a type name in rtps::Config::MAX_TYPENAME_LENGTH bytes,
-// its NUL included (rtps/config.h; mros2.cpp includes it before this file).
-@[for msg in wire_types]@
-static_assert(sizeof("@(msg.dds_type_name)") <= rtps::Config::MAX_TYPENAME_LENGTH,
-              "@(msg.dds_type_name) needs rtps::Config::MAX_TYPENAME_LENGTH >= @(msg.dds_type_name_size) (rtps/config.h)");
+// What this firmware's endpoints need of the board's rtps::Config
+// (rtps/config.h; mros2.cpp includes it before this file), as genmros
+// mros2-fit counts it. A name's field holds its NUL too.
+#ifndef @(stack_margin_macro)
+// The reader thread's stack besides a subscribed message: embeddedRTPS'
+// receive path and mros2's callback frame. Define a measured value to replace it.
+#define @(stack_margin_macro) @(stack_margin)
+#endif
+@[for requirement in requirements]@
+static_assert(@(requirement.cpp_needed) <= rtps::Config::@(requirement.setting),
+              "@(requirement.assertion_message)");
 @[end for]@
 @[for msg in publish]@
 

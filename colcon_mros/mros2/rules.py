@@ -1,0 +1,130 @@
+"""The rule table: what a firmware's endpoints need of its board's mros2 settings.
+
+mros2 runs on embeddedRTPS, which keeps its endpoints, names and threads in
+room fixed by the board's ``rtps/config.h`` (namespace ``rtps::Config``) and
+checks a name only after copying it (``Domain::createWriter`` lets a name of
+exactly ``MAX_*NAME_LENGTH`` bytes through and ``strcpy`` writes its NUL past
+the field). Each :class:`Requirement` here is one need of one endpoint, type
+or the firmware as a whole, counted from what genmros knows of it. The
+Python fit check (:mod:`.fit`) compares the numbers with the settings it
+reads; mros2's ``templates.hpp`` (:mod:`.render`) renders the same
+requirements as ``static_assert``s on ``rtps::Config``, which is where the
+one need Python cannot count lives: a subscribed message on the reader
+thread's stack, whose ``sizeof`` only the target's compiler knows.
+"""
+
+from colcon_mros.mros2.cpp import CppMessageName
+from colcon_mros.mros2.endpoints import PUBLISH, SUBSCRIBE, count, messages, topics_known
+
+# rtps::Config's settings the rules read (rtps/config.h).
+CONFIG_HEADER = 'rtps/config.h'
+TYPENAME_MAX = 'MAX_TYPENAME_LENGTH'
+TOPICNAME_MAX = 'MAX_TOPICNAME_LENGTH'
+WRITERS_PER_PARTICIPANT = 'NUM_WRITERS_PER_PARTICIPANT'
+READERS_PER_PARTICIPANT = 'NUM_READERS_PER_PARTICIPANT'
+STATELESS_WRITERS = 'NUM_STATELESS_WRITERS'
+STATELESS_READERS = 'NUM_STATELESS_READERS'
+READER_STACK = 'THREAD_POOL_READER_STACKSIZE'
+SETTINGS = (TYPENAME_MAX, TOPICNAME_MAX, WRITERS_PER_PARTICIPANT, READERS_PER_PARTICIPANT,
+            STATELESS_WRITERS, STATELESS_READERS, READER_STACK)
+
+# mros2 names a topic's DDS endpoints 'rt/<topic>', as rmw does.
+TOPIC_PREFIX = 'rt/'
+# embeddedRTPS gives each participant a writer and a reader for SPDP, SEDP
+# publications and SEDP subscriptions, out of its per-participant tables
+# (Participant::addBuiltInEndpoints); mros2 makes one participant.
+BUILTIN_ENDPOINTS = 3
+# Of the domain's stateless (best-effort) writers and readers, the
+# participant's SPDP writer and reader take one each; mros2's own endpoints
+# are all best-effort (createWriter/createReader with reliable false).
+BUILTIN_STATELESS = 1
+# What arrives in one datagram around a sample, as a Fast DDS or rmw writer
+# sends a DATA to one reader: RTPS header 20, INFO_DST 16, INFO_TS 12, the
+# DATA submessage's header and fields 24, the encapsulation header 4.
+DATAGRAM_OVERHEAD = 20 + 16 + 12 + 24 + 4
+# The reader thread's stack below the message: embeddedRTPS' receive path
+# (the thread pool's loop, the domain, the participant, the message
+# receiver, the reader) and mros2's callback frame besides its T msg. A
+# firmware that measured its own (-fstack-usage) defines the macro.
+READER_STACK_MARGIN = 512
+READER_STACK_MARGIN_MACRO = 'MROS2_READER_STACK_MARGIN'
+
+
+class Requirement:
+    """One need: subject (a type, a topic, the firmware) needs setting
+    >= needed, because of what. cpp_needed is the need as a C++ constant
+    expression for templates.hpp's static_assert (None: checked here only);
+    needed is None where only the target's compiler can count it."""
+
+    def __init__(self, setting, subject, what, needed, cpp_needed=None):
+        self.setting = setting
+        self.subject = subject
+        self.what = what
+        self.needed = needed
+        self.cpp_needed = cpp_needed if cpp_needed is not None else (
+            None if needed is None else str(needed))
+
+        # The static_assert's message: the misfit's line without the file
+        # and the value the setting has.
+        self.assertion_message = '%s: %s needs rtps::Config::%s >= %s (%s)' % (
+            subject, what, setting, needed if needed is not None else cpp_needed, CONFIG_HEADER)
+
+
+def name_requirements(endpoints):
+    """Each endpoint type's DDS type name and each topic's name, with NULs."""
+    requirements = []
+    for name in sorted({e.wire_name.dds_type_name for e in endpoints}):
+        requirements.append(Requirement(
+            TYPENAME_MAX, name, 'its DDS type name and its NUL', len(name) + 1))
+    for topic in sorted({e.topic for e in endpoints if e.topic is not None}):
+        requirements.append(Requirement(
+            TOPICNAME_MAX, 'topic %s' % topic, "'%s%s' and its NUL" % (TOPIC_PREFIX, topic),
+            len((TOPIC_PREFIX + topic).encode('utf-8')) + 1))
+    return requirements
+
+
+def endpoint_count_requirements(endpoints):
+    """The participant's writers and readers, and the domain's stateless ones."""
+    counted_how = 'one per topic' if topics_known(endpoints) else 'at least one per type'
+    publishers, subscribers = count(endpoints, PUBLISH), count(endpoints, SUBSCRIBE)
+    requirements = []
+    for number, kind, per_participant, stateless in (
+            (publishers, 'publisher', WRITERS_PER_PARTICIPANT, STATELESS_WRITERS),
+            (subscribers, 'subscriber', READERS_PER_PARTICIPANT, STATELESS_READERS)):
+        if not number:
+            continue
+        counted = '%d %s%s (%s)' % (number, kind, '' if number == 1 else 's', counted_how)
+        requirements.append(Requirement(
+            per_participant, 'the firmware', "its %s and the participant's %d built-in ones "
+            '(SPDP, SEDP publications, SEDP subscriptions)' % (counted, BUILTIN_ENDPOINTS),
+            number + BUILTIN_ENDPOINTS))
+        requirements.append(Requirement(
+            stateless, 'the firmware', "its %s, best-effort, and the participant's SPDP one"
+            % counted, number + BUILTIN_STATELESS))
+    return requirements
+
+
+def reader_stack_requirements(endpoints):
+    """A subscribed message on the reader thread's stack (templates.hpp only)."""
+    subscribed = [CppMessageName(message) for message in messages(endpoints, SUBSCRIBE)]
+    return [Requirement(
+        READER_STACK, name.cpp_name,
+        "mros2's callback_handler holding the message on the reader thread's stack, with %s "
+        'bytes for the frames below it' % READER_STACK_MARGIN_MACRO,
+        None, 'sizeof(%s) + %s' % (name.cpp_name, READER_STACK_MARGIN_MACRO))
+        for name in subscribed]
+
+
+def requirements(endpoints):
+    """Every requirement of a firmware's endpoints."""
+    return (name_requirements(endpoints) + endpoint_count_requirements(endpoints) +
+            reader_stack_requirements(endpoints))
+
+
+def largest_datagram(message):
+    """The most bytes a sample of message takes in one datagram (None:
+    no largest): the image padded to 4, as mros2 and Fast DDS send it,
+    and the RTPS submessages around it."""
+    if message.max_size is None:
+        return None
+    return DATAGRAM_OVERHEAD + message.max_size + (-message.max_size % 4)
