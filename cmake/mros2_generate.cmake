@@ -3,9 +3,12 @@
 # genmros).
 #
 #   mros2_import_messages(TARGET t EXPORT_DIR dir
-#                         [PUBLISH pkg/msg/Type ...] [SUBSCRIBE pkg/msg/Type ...]
+#                         [PUBLISH [topic:]pkg/msg/Type ...]
+#                         [SUBSCRIBE [topic:]pkg/msg/Type ...]
 #                         [TYPES pkg/msg/Type|pkg/srv/Name ...]
-#                         [STORAGE heap|bounded] [OPTIONS file ...])
+#                         [STORAGE heap|bounded] [OPTIONS file ...]
+#                         [RTPS_CONFIG rtps/config.h [RECEIVE_LIMIT bytes|file:NAME]
+#                          [MROS2_ROOT dir]])
 #     Use the ROS 2 types a `colcon build --mros-export dir` exported
 #     (dir/mros2): the headers of the PUBLISH, SUBSCRIBE and TYPES types and
 #     of every type they contain, and mros2's templates.hpp with the explicit
@@ -17,9 +20,14 @@
 #     includes templates.hpp) gets it as an include directory. STORAGE
 #     bounded holds unbounded strings and sequences in the message, with the
 #     maxima of the OPTIONS files (genmros mros2-export --storage bounded
-#     --options). A bad definition or an unknown type stops the configure
-#     step with genmros' one line; editing a definition or an options file
-#     configures again.
+#     --options). RTPS_CONFIG, the board's rtps/config.h, runs the fit check
+#     first (genmros mros2-fit): type and topic names, the participant's
+#     writers and readers, with RECEIVE_LIMIT each subscribed type's largest
+#     sample, with MROS2_ROOT (the firmware's mros2) more than one publisher;
+#     templates.hpp's static_asserts hold the same rules and the reader
+#     thread's stack wherever mros2.cpp compiles. A bad definition, an
+#     unknown type or a misfit stops the configure step with genmros' lines;
+#     editing a definition, an options file or the config configures again.
 # Installed beside mros_generate.cmake; find_package(genmros) includes both.
 
 find_program(GENMROS_BIN genmros
@@ -27,8 +35,8 @@ find_program(GENMROS_BIN genmros
   DOC "genmros, the mROS message generator of colcon-mros")
 
 function(mros2_import_messages)
-  cmake_parse_arguments(ARG "" "TARGET;EXPORT_DIR;STORAGE" "TYPES;PUBLISH;SUBSCRIBE;OPTIONS"
-    ${ARGN})
+  cmake_parse_arguments(ARG "" "TARGET;EXPORT_DIR;STORAGE;RTPS_CONFIG;RECEIVE_LIMIT;MROS2_ROOT"
+    "TYPES;PUBLISH;SUBSCRIBE;OPTIONS" ${ARGN})
   if(ARG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "mros2_import_messages(): unknown arguments: ${ARG_UNPARSED_ARGUMENTS}")
   endif()
@@ -66,15 +74,32 @@ function(mros2_import_messages)
     get_filename_component(options "${options}" ABSOLUTE)
     list(APPEND genmros_args --options "${options}")
   endforeach()
+  set(board_files)
+  if(ARG_RTPS_CONFIG)
+    get_filename_component(config "${ARG_RTPS_CONFIG}" ABSOLUTE)
+    list(APPEND genmros_args --rtps-config "${config}")
+    list(APPEND board_files "${config}")
+  endif()
+  if(ARG_RECEIVE_LIMIT)
+    list(APPEND genmros_args --receive-limit "${ARG_RECEIVE_LIMIT}")
+  endif()
+  if(ARG_MROS2_ROOT)
+    get_filename_component(mros2_root "${ARG_MROS2_ROOT}" ABSOLUTE)
+    list(APPEND genmros_args --mros2-root "${mros2_root}")
+    list(APPEND board_files "${mros2_root}/include/mros2.h")
+  endif()
 
   execute_process(COMMAND "${GENMROS_BIN}" ${genmros_args}
     RESULT_VARIABLE result ERROR_VARIABLE error OUTPUT_QUIET)
+  string(STRIP "${error}" error)
   if(NOT result EQUAL 0)
-    string(STRIP "${error}" error)
     message(FATAL_ERROR "mros2_import_messages(): ${error}")
+  elseif(error)
+    message(WARNING "mros2_import_messages(): ${error}")
   endif()
   file(GLOB_RECURSE definitions "${prefix}/share/*.msg" "${prefix}/share/*.srv"
     "${prefix}/share/*.idl")
-  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${definitions} ${ARG_OPTIONS})
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${definitions} ${ARG_OPTIONS}
+    ${board_files})
   target_include_directories(${ARG_TARGET} PUBLIC "${output_dir}")
 endfunction()

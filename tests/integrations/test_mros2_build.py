@@ -19,7 +19,7 @@ import shutil
 import pytest
 
 from conftest import REPO
-from fixtures.build_integration.tools import run
+from fixtures.build_integration.tools import run, unwrapped
 from testing import fastcdr
 
 pytestmark = pytest.mark.slow
@@ -35,8 +35,22 @@ add_executable(firmware main.cpp {runtime}/mros2_runtime_check.cpp)
 target_include_directories(firmware PRIVATE {runtime})
 target_compile_options(firmware PRIVATE -Wall -Wextra -Werror)
 mros2_import_messages(TARGET firmware EXPORT_DIR {export}
-                      PUBLISH mros2_test_msgs/msg/Reading SUBSCRIBE mros2_base_msgs/msg/Stamp
-                      TYPES mros2_test_msgs/srv/Query)
+                      PUBLISH reading:mros2_test_msgs/msg/Reading
+                      SUBSCRIBE stamp:mros2_base_msgs/msg/Stamp
+                      TYPES mros2_test_msgs/srv/Query RTPS_CONFIG rtps/config.h)
+'''
+# The board's rtps/config.h as embeddedRTPS writes its configs; mros2-posix'
+# keeps type names in 40 bytes.
+RTPS_CONFIG = '''namespace rtps {
+namespace Config {
+const uint8_t NUM_STATELESS_WRITERS = 3;
+const uint8_t NUM_STATELESS_READERS = 3;
+const uint8_t NUM_WRITERS_PER_PARTICIPANT = 4;
+const uint8_t NUM_READERS_PER_PARTICIPANT = 4;
+const uint8_t MAX_TYPENAME_LENGTH = 40;
+const uint8_t MAX_TOPICNAME_LENGTH = 20;
+}
+}
 '''
 FIRMWARE_MAIN = r'''#include <stdio.h>
 #include "mros2.h"
@@ -72,7 +86,13 @@ class Ros2Workspace:
         os.makedirs(self.firmware)
         with open(os.path.join(self.firmware, 'CMakeLists.txt'), 'w') as stream:
             stream.write(FIRMWARE_CMAKE.format(runtime=RUNTIME, export=self.export_dir))
+        self.write_config(RTPS_CONFIG)
         self.write_main('')
+
+    def write_config(self, text):
+        os.makedirs(os.path.join(self.firmware, 'rtps'), exist_ok=True)
+        with open(os.path.join(self.firmware, 'rtps', 'config.h'), 'w') as stream:
+            stream.write(text)
 
     def write_main(self, new_field_line):
         with open(os.path.join(self.firmware, 'main.cpp'), 'w') as stream:
@@ -131,3 +151,21 @@ def test_a_field_added_reaches_the_export_and_the_firmware(workspace):
     workspace.write_main('reading.sequence_number = 0x01020304u;')
     _, sent = workspace.build_firmware()
     assert sent.endswith('04030201')
+
+
+def test_a_board_config_too_small_stops_the_configure_step(workspace):
+    """The fit check runs in mros2_import_messages(); the config is a
+    configure dependency, so editing it configures again."""
+    workspace.write_config(RTPS_CONFIG.replace('MAX_TYPENAME_LENGTH = 40', 'MAX_TYPENAME_LENGTH = 30'))
+    try:
+        result = run(['cmake', '--build', os.path.join(workspace.firmware, 'build')],
+                     workspace.root, check=False)
+    finally:
+        workspace.write_config(RTPS_CONFIG)
+    assert result.returncode != 0
+    config = os.path.join(workspace.firmware, 'rtps', 'config.h')
+    for name, needed in (('mros2_base_msgs::msg::dds_::Stamp_', 35),
+                         ('mros2_test_msgs::msg::dds_::Reading_', 37)):
+        assert ('%s:7: %s: its DDS type name and its NUL needs MAX_TYPENAME_LENGTH >= %d (it is '
+                '30)' % (config, name, needed)) in unwrapped(result.stdout), result.stdout[-3000:]
+    workspace.build_firmware()

@@ -1,0 +1,156 @@
+"""The mros2 fit check (colcon_mros.mros2.fit, genmros mros2-fit): each rule
+with its exact line, a firmware that fits, and mros2-export refusing a
+misfit before it writes anything.
+
+The board's rtps/config.h here is written as embeddedRTPS' configs are
+(namespace rtps::Config, const members, a value on the next line), with
+small values so that each rule has a misfit.
+"""
+
+import os
+
+from colcon_mros.export.mros2_export import Board, firmware_fit
+
+from conftest import run_genmros
+
+CONFIG = '''\
+#ifndef RTPS_CONFIG_H
+#define RTPS_CONFIG_H
+namespace rtps {
+namespace Config {
+const uint8_t MAX_NUM_PARTICIPANTS = 1;
+const uint8_t NUM_STATELESS_WRITERS =
+    MAX_NUM_PARTICIPANTS + 1; // Required + Additional
+const uint8_t NUM_STATELESS_READERS = MAX_NUM_PARTICIPANTS + 1;
+const uint8_t NUM_WRITERS_PER_PARTICIPANT = 4;
+const uint8_t NUM_READERS_PER_PARTICIPANT = 5;
+const uint8_t MAX_TYPENAME_LENGTH = 40;
+const uint8_t MAX_TOPICNAME_LENGTH = 20;
+const int THREAD_POOL_READER_STACKSIZE = 1600; // byte
+}  // namespace Config
+}  // namespace rtps
+#endif
+'''
+ROOMY = {'= 4;': '= 8;', '= 5;': '= 8;', '= 40;': '= 64;', '= 20;': '= 32;',
+         'MAX_NUM_PARTICIPANTS + 1;': 'MAX_NUM_PARTICIPANTS + 4;'}
+# mros2 v0.5.4's Publisher (include/mros2.h) has a topic name and no writer.
+PUBLISHER_WITHOUT_WRITER = '''\
+namespace mros2 {
+  class Publisher;
+  class Publisher
+  {
+  public:
+    std::string topic_name;
+    template <class T>
+    void publish(T &msg);
+  };
+}
+'''
+TIF = 'test_interface_files/msg/'
+
+
+def _write(path, text):
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text)
+    return str(path)
+
+
+def _fit(tmp_path, publish, subscribe, config=CONFIG, limit=None, publisher=None):
+    mros2_root = None
+    if publisher is not None:
+        _write(tmp_path / 'mros2' / 'include' / 'mros2.h', publisher)
+        mros2_root = str(tmp_path / 'mros2')
+    board = Board(_write(tmp_path / 'rtps' / 'config.h', config), limit, mros2_root)
+    return firmware_fit(board, prefixes=['/usr'], publish=publish, subscribe=subscribe)
+
+
+def _roomy():
+    config = CONFIG
+    for small, roomy in ROOMY.items():
+        config = config.replace(small, roomy)
+    return config
+
+
+def test_each_rule_names_the_setting_its_line_and_the_value_it_needs(tmp_path):
+    config = str(tmp_path / 'rtps' / 'config.h')
+    header = str(tmp_path / 'mros2' / 'include' / 'mros2.h')
+    fit = _fit(tmp_path, ['chatter:%sEmpty' % TIF, 'eighteen_bytes_abc:%sEmpty' % TIF],
+               ['state:%sBasicTypes' % TIF, 'samples:%sUnboundedSequences' % TIF],
+               limit='100', publisher=PUBLISHER_WITHOUT_WRITER)
+    assert fit.misfits == [
+        '%s:11: test_interface_files::msg::dds_::BasicTypes_: its DDS type name and its NUL '
+        'needs MAX_TYPENAME_LENGTH >= 45 (it is 40)' % config,
+        '%s:11: test_interface_files::msg::dds_::UnboundedSequences_: its DDS type name and its '
+        'NUL needs MAX_TYPENAME_LENGTH >= 53 (it is 40)' % config,
+        "%s:12: topic eighteen_bytes_abc: 'rt/eighteen_bytes_abc' and its NUL needs "
+        'MAX_TOPICNAME_LENGTH >= 22 (it is 20)' % config,
+        "%s:9: the firmware: its 2 publishers (one per topic) and the participant's 3 built-in "
+        'ones (SPDP, SEDP publications, SEDP subscriptions) needs NUM_WRITERS_PER_PARTICIPANT '
+        '>= 5 (it is 4)' % config,
+        "%s:6: the firmware: its 2 publishers (one per topic), best-effort, and the "
+        "participant's SPDP one needs NUM_STATELESS_WRITERS >= 3 (it is 2)" % config,
+        "%s:8: the firmware: its 2 subscribers (one per topic), best-effort, and the "
+        "participant's SPDP one needs NUM_STATELESS_READERS >= 3 (it is 2)" % config,
+        # 48 bytes of BasicTypes, RTPS' 76 around them.
+        '--receive-limit 100: test_interface_files/msg/BasicTypes: a sample of up to 48 bytes '
+        'in one datagram, RTPS around it needs the receive limit >= 124 (it is 100)',
+        "%s:3: the firmware: its 2 publishers need a Publisher with a writer of its own; this "
+        "mros2's sends every message through the last one created (mros2::pub_ptr): apply "
+        "genmros' mros2 patch set (genmros mros2-patches)" % header,
+    ]
+    assert fit.warnings == [
+        '--receive-limit 100: test_interface_files/msg/UnboundedSequences: a sample has no '
+        'largest size (unbounded): one larger than the receive limit 100 does not arrive; '
+        'bounded storage gives the exact need']
+    assert fit.notes == []
+
+
+def test_a_firmware_that_fits_has_no_line(tmp_path):
+    fit = _fit(tmp_path, ['chatter:%sEmpty' % TIF, 'eighteen_bytes_abc:%sEmpty' % TIF],
+               ['state:%sBasicTypes' % TIF], config=_roomy(), limit='124',
+               publisher=PUBLISHER_WITHOUT_WRITER.replace(
+                   'std::string topic_name;', 'std::string topic_name;\n    rtps::Writer* writer;'))
+    assert (fit.misfits, fit.warnings, fit.notes) == ([], [], [])
+    assert 'Every endpoint fits.' in fit.report()
+
+
+def test_types_alone_skip_the_topic_rules_and_say_what_was_not_checked(tmp_path):
+    fit = _fit(tmp_path, [TIF + 'Empty', TIF + 'Nested', TIF + 'Empty'], [TIF + 'Empty'],
+               config=_roomy())
+    assert fit.misfits == []
+    assert fit.notes == [
+        'topics not given for every endpoint (--publish/--subscribe TOPIC:TYPE): topic names not '
+        'checked, one endpoint counted per type',
+        'no receive limit given (--receive-limit): the largest samples not checked',
+        '2 publishers: whether this mros2 gives each its own writer is not known here '
+        '(--mros2-root)']
+
+
+def test_the_receive_limit_is_read_from_the_ports_setting(tmp_path):
+    options = _write(tmp_path / 'port' / 'lwipopts.h', '#define PBUF_POOL_BUFSIZE 1024\n'
+                                                         '#define RECEIVE_BUFFER_SIZE 64\n')
+    fit = _fit(tmp_path, [], ['state:%sBasicTypes' % TIF],
+               config=CONFIG.replace('= 40;', '= 64;'), limit=options + ':RECEIVE_BUFFER_SIZE')
+    assert fit.misfits == [
+        '%s:2: test_interface_files/msg/BasicTypes: a sample of up to 48 bytes in one datagram, '
+        'RTPS around it needs RECEIVE_BUFFER_SIZE >= 124 (it is 64)' % options]
+
+
+def test_genmros_mros2_fit_and_mros2_export_refuse_a_misfit(tmp_path):
+    config = _write(tmp_path / 'rtps' / 'config.h', CONFIG)
+    endpoints = ['--prefix', '/usr', '--rtps-config', config,
+                 '--subscribe', 'state:%sBasicTypes' % TIF]
+    result = run_genmros('mros2-fit', *endpoints, check=False)
+    assert result.returncode == 1
+    assert ('error: %s:11: test_interface_files::msg::dds_::BasicTypes_: its DDS type name and '
+            'its NUL needs MAX_TYPENAME_LENGTH >= 45 (it is 40)\n' % config) in result.stdout
+    output = tmp_path / 'export'
+    result = run_genmros('mros2-export', '-o', str(output), *endpoints, check=False)
+    assert result.returncode != 0
+    assert result.stderr == ('genmros: error: %s:11: test_interface_files::msg::dds_::'
+                             'BasicTypes_: its DDS type name and its NUL needs '
+                             'MAX_TYPENAME_LENGTH >= 45 (it is 40)\n' % config)
+    assert not os.path.exists(str(output))
+    run_genmros('mros2-export', '-o', str(output), *endpoints[:-2], '--subscribe',
+                'state:%sEmpty' % TIF)
+    assert os.path.exists(str(output / 'templates.hpp'))
