@@ -284,6 +284,13 @@ def _add_mros_v1_fit(subparsers):
     parser.set_defaults(run=_mros_v1_fit)
 
 
+def _add_harden_actions(parser):
+    action = parser.add_mutually_exclusive_group()
+    action.add_argument('--check', action='store_true',
+                        help='say which patches are applied; exit 0 if all are, 1 if not')
+    action.add_argument('--revert', action='store_true', help='take the patches out')
+
+
 def _add_mros_v1_harden(subparsers):
     parser = subparsers.add_parser(
         'mros-v1-harden', help="apply genmros' patch set to an mROS v1 checkout's library",
@@ -292,11 +299,21 @@ def _add_mros_v1_harden(subparsers):
                     'Only mros-lib/ is changed, and only where every file is as the patches '
                     'expect; a patch already applied is left as it is.')
     parser.add_argument('mros_root', metavar='MROS_ROOT', help='the mROS v1 checkout')
-    action = parser.add_mutually_exclusive_group()
-    action.add_argument('--check', action='store_true',
-                        help='say which patches are applied; exit 0 if all are, 1 if not')
-    action.add_argument('--revert', action='store_true', help='take the patches out')
+    _add_harden_actions(parser)
     parser.set_defaults(run=_mros_v1_harden)
+
+
+def _add_mros2_harden(subparsers):
+    parser = subparsers.add_parser(
+        'mros2-harden', help="[mros2] apply genmros' patch set to an mros2 checkout",
+        description="Apply genmros' patch set for mros2 (made for v0.5.4: one writer per "
+                    'publisher; the checked receive, which drops and counts a sample that does '
+                    "not decode, with genmros' message headers) to a checkout. Only include/ "
+                    'and src/ are changed, and only where every file is as the patches expect; '
+                    'a patch already applied is left as it is.')
+    parser.add_argument('mros2_root', metavar='MROS2_ROOT', help='the mros2 checkout')
+    _add_harden_actions(parser)
+    parser.set_defaults(run=_mros2_harden)
 
 
 def _add_mros2_sources(parser):
@@ -374,7 +391,7 @@ def _add_mros2_fit(subparsers):
 
 SUBCOMMANDS = (_add_generate, _add_export, _add_printers, _add_export_dir_commands,
                _add_mros_v1_pc, _add_mros_v1_fit, _add_mros_v1_harden, _add_mros2_export,
-               _add_mros2_fit)
+               _add_mros2_fit, _add_mros2_harden)
 
 
 def build_parser():
@@ -525,11 +542,9 @@ def _mros_v1_fit(options):
     return 1 if stops else 0
 
 
-def _mros_v1_harden(options):
-    from colcon_mros.library_tools.mros_v1.patches import check_root, mros_v1_patches
+def _harden(root, patches, options):
+    """Apply, check (--check) or take out (--revert) a patch series on root."""
     from colcon_mros.library_tools.patch_series import apply_patches, patch_states
-    root = check_root(options.mros_root)
-    patches = mros_v1_patches()
     if options.check:
         states = patch_states(root, patches)
         for patch, applied in states:
@@ -541,6 +556,16 @@ def _mros_v1_harden(options):
     print('genmros: %s %s' % (verb, ', '.join(done)) if done else
           'genmros: nothing to do: the patches are %s' % ('out' if options.revert else 'in'))
     return 0
+
+
+def _mros_v1_harden(options):
+    from colcon_mros.library_tools.mros_v1.patches import check_root, mros_v1_patches
+    return _harden(check_root(options.mros_root), mros_v1_patches(), options)
+
+
+def _mros2_harden(options):
+    from colcon_mros.library_tools.mros2.patches import check_root, mros2_patches
+    return _harden(check_root(options.mros2_root), mros2_patches(), options)
 
 
 def main(argv=None):

@@ -39,11 +39,11 @@ _HUNK_HEADER = re.compile(r'^@@ -(\d+)')
 
 @dataclasses.dataclass(frozen=True)
 class PatchSeries:
-    """A series: the directory of its patches and series file, and the one
-    directory of the checkout its patches may change."""
+    """A series: the directory of its patches and series file, and the
+    directories of the checkout its patches may change."""
 
     directory: str
-    library_dir: str
+    library_dirs: tuple
 
 
 @dataclasses.dataclass
@@ -58,9 +58,9 @@ class Patch:
     files: list
 
 
-def read_patch(path, library_dir):
+def read_patch(path, library_dirs):
     """The Patch of a unified diff (``diff -u`` or ``git diff``) at path,
-    which may change files below library_dir only."""
+    which may change files below library_dirs only."""
     try:
         with open(path, encoding='utf-8') as stream:
             lines = stream.read().splitlines()
@@ -81,9 +81,9 @@ def read_patch(path, library_dir):
         # A file's +++ line names it; a removed file's (+++ /dev/null), its --- line.
         name, number = old if match.group(1) == '/dev/null' else (match.group(1), number)
         target = name.split('/', 1)[-1]  # -p1: without a/ or b/
-        if not target.startswith(library_dir + '/'):
-            raise GenmrosError('patches may change %s/ only, not %s' % (library_dir, target),
-                               path, number)
+        if not target.startswith(tuple(directory + '/' for directory in library_dirs)):
+            raise GenmrosError('patches may change %s only, not %s' % (
+                ', '.join(directory + '/' for directory in library_dirs), target), path, number)
         if target not in files:
             files.append(target)
     if not files:
@@ -113,7 +113,7 @@ def read_series(patch_series):
                       - set(names))
     if unlisted:
         raise GenmrosError('patches not in the series: %s' % ', '.join(unlisted), series)
-    return [read_patch(os.path.join(directory, name), patch_series.library_dir)
+    return [read_patch(os.path.join(directory, name), patch_series.library_dirs)
             for name in names]
 
 

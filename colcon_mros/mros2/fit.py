@@ -111,7 +111,7 @@ class Fit:
             self.misfits.append(
                 "%s:%d: the firmware: its %d publishers need a Publisher with a writer of its "
                 "own; this mros2's sends every message through the last one created "
-                "(mros2::pub_ptr): apply genmros' mros2 patch set (genmros mros2-patches)"
+                "(mros2::pub_ptr): apply genmros' mros2 patch set (genmros mros2-harden)"
                 % (publisher_writer.path, publisher_writer.line, count))
 
     def refuse(self):

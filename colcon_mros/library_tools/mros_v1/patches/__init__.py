@@ -11,7 +11,7 @@ from colcon_mros.library_tools.patch_series import PatchSeries, read_series
 
 # Every path a patch names lies below this directory of the checkout.
 LIBRARY_DIR = 'mros-lib'
-MROS_V1_SERIES = PatchSeries(os.path.dirname(os.path.abspath(__file__)), LIBRARY_DIR)
+MROS_V1_SERIES = PatchSeries(os.path.dirname(os.path.abspath(__file__)), (LIBRARY_DIR,))
 
 
 def mros_v1_patches():

@@ -21,7 +21,7 @@ TREE = os.path.join(REPO, 'tests', 'fixtures', 'patch_tree')
 
 def series_in(directory):
     """The patches of a series directory of the fixture's kind."""
-    return read_series(PatchSeries(directory, 'mros-lib'))
+    return read_series(PatchSeries(directory, ('mros-lib',)))
 
 
 PATCHES = series_in(os.path.join(TREE, 'patches'))

@@ -126,7 +126,7 @@ def test_a_patch_may_change_the_library_only(tmp_path):
     outside.write_text('Changes an app.\n\n--- a/mros_ws/app/app.cpp\n+++ b/mros_ws/app/app.cpp\n'
                        '@@ -1,1 +1,1 @@\n-a\n+b\n')
     with pytest.raises(GenmrosError) as error:
-        read_patch(str(outside), MROS_V1_SERIES.library_dir)
+        read_patch(str(outside), MROS_V1_SERIES.library_dirs)
     assert str(error.value) == '%s:4: patches may change mros-lib/ only, not mros_ws/app/app.cpp' \
         % outside
 
