@@ -8,8 +8,8 @@
 //   - the checked copyFromBuf(image, size) on a fresh message reads only
 //     within size, whatever the counts and lengths in the image claim;
 //   - what it accepts, copyToBuf writes in exactly calcRawTotalSize() bytes
-//     (into a buffer of that size, so ASan sees a byte more), and
-//     calcTotalSize() and getTotalSize() agree with that size: the runtime
+//     (into a heap block of that size: ASan reports a byte written past it),
+//     and calcTotalSize() and getPubCnt() agree with that size: the runtime
 //     allocates and sends by them;
 //   - that image is a fixed point: the checked copyFromBuf accepts it and
 //     copyToBuf writes the same bytes again. The first image may differ
