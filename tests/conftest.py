@@ -7,6 +7,7 @@ import sys
 import pytest
 
 import built_workspace
+import mros2_checkout
 from mros_v1_checkout import checkout_found, missing_reason
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -29,13 +30,17 @@ pytest_plugins = ['mros2_corpus']
 
 
 def pytest_collection_modifyitems(config, items):
-    """Tests marked needs_mros_v1 are skipped, saying why, without a checkout."""
-    if checkout_found():
-        return
-    skip = pytest.mark.skip(reason=missing_reason())
-    for item in items:
-        if 'needs_mros_v1' in item.keywords:
-            item.add_marker(skip)
+    """Tests that need a user's checkout (needs_mros_v1, needs_mros2) are
+    skipped, saying why, without one."""
+    for marker, found, reason in (('needs_mros_v1', checkout_found(), missing_reason()),
+                                  ('needs_mros2', mros2_checkout.checkout_found(),
+                                   mros2_checkout.missing_reason())):
+        if found:
+            continue
+        skip = pytest.mark.skip(reason=reason)
+        for item in items:
+            if marker in item.keywords:
+                item.add_marker(skip)
 
 
 @pytest.fixture(autouse=True)

@@ -1,0 +1,135 @@
+// A stand-in of what mros2's src/mros2.cpp and include/mros2.h use of
+// embeddedRTPS (mROS-base/embeddedRTPS de70e01: rtps/rtps.h, the Domain,
+// Participant, Writer and Reader entities and rtps/config.h), for a unit
+// check of the real mros2.cpp on the host: a writer records what is
+// published through it, with its topic and type name, and a reader keeps
+// the callback mros2 registers so that the check can deliver samples. The
+// network is left out; the names and signatures are embeddedRTPS'.
+#ifndef MROS2_LIBRARY_STAND_IN_RTPS_H
+#define MROS2_LIBRARY_STAND_IN_RTPS_H
+
+#include <stdint.h>
+#include <string.h>
+
+#include <array>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rtps {
+
+typedef uint16_t DataSize_t;
+typedef uint32_t FragDataSize_t;
+enum class ChangeKind_t { ALIVE };
+
+namespace Config {
+const uint8_t MAX_TYPENAME_LENGTH = 64;
+const uint8_t MAX_TOPICNAME_LENGTH = 64;
+const uint8_t NUM_WRITERS_PER_PARTICIPANT = 16;
+const uint8_t NUM_READERS_PER_PARTICIPANT = 16;
+const uint8_t NUM_STATELESS_WRITERS = 16;
+const uint8_t NUM_STATELESS_READERS = 16;
+const int THREAD_POOL_READER_STACKSIZE = 8192;
+}  // namespace Config
+
+struct CacheChange {
+  typedef std::pair<uint8_t*, DataSize_t> SerializedBuf;
+  typedef std::function<SerializedBuf()> SerializerCallback;
+};
+
+// One sample as a writer sent it.
+struct Sent {
+  std::string topic;
+  std::string type_name;
+  std::vector<uint8_t> bytes;
+};
+std::vector<Sent>& sent_samples();
+
+class Writer {
+ public:
+  Writer(const char* topic, const char* type_name) : topic_(topic), type_name_(type_name) {}
+  const CacheChange* newChange(ChangeKind_t, const uint8_t* data, DataSize_t size) {
+    record(std::vector<uint8_t>(data, data + size));
+    return nullptr;
+  }
+  // As embeddedRTPS' writer thread does: fragments until the announced
+  // size is out, then the call that ends the image.
+  const CacheChange* newChangeCallback(ChangeKind_t, CacheChange::SerializerCallback func,
+                                       FragDataSize_t size) {
+    std::vector<uint8_t> bytes;
+    while (bytes.size() < size) {
+      CacheChange::SerializedBuf fragment = func();
+      if (fragment.second == 0) break;
+      bytes.insert(bytes.end(), fragment.first, fragment.first + fragment.second);
+    }
+    func();
+    record(bytes);
+    return nullptr;
+  }
+
+ private:
+  void record(const std::vector<uint8_t>& bytes) {
+    Sent sent = {topic_, type_name_, bytes};
+    sent_samples().push_back(sent);
+  }
+  std::string topic_;
+  std::string type_name_;
+};
+
+class ReaderCacheChange {
+ public:
+  ReaderCacheChange(const uint8_t* data, DataSize_t size) : data_(data), size_(size) {}
+  const uint8_t* getData() const { return data_; }
+  const DataSize_t getDataSize() const { return size_; }
+
+ private:
+  const uint8_t* data_;
+  DataSize_t size_;
+};
+
+typedef void (*ddsReaderCallback_fp)(void* callee, const ReaderCacheChange& cacheChange);
+
+class Reader {
+ public:
+  void registerCallback(ddsReaderCallback_fp cb, void* callee) {
+    callback = cb;
+    this->callee = callee;
+  }
+  // Delivers a sample as embeddedRTPS' reader thread does.
+  void deliver(const uint8_t* data, DataSize_t size) {
+    ReaderCacheChange change(data, size);
+    callback(callee, change);
+  }
+  ddsReaderCallback_fp callback = nullptr;
+  void* callee = nullptr;
+};
+
+class Participant {
+ public:
+  bool registerOnNewPublisherMatchedCallback(void (*)(void*), void*) { return true; }
+  bool registerOnNewSubscriberMatchedCallback(void (*)(void*), void*) { return true; }
+};
+
+class Domain {
+ public:
+  bool completeInit() { return true; }
+  Participant* createParticipant() { return &participant_; }
+  Writer* createWriter(Participant&, const char* topic, const char* type_name, bool) {
+    writers_.push_back(new Writer(topic, type_name));
+    return writers_.back();
+  }
+  Reader* createReader(Participant&, const char*, const char*, bool) {
+    readers().push_back(new Reader());
+    return readers().back();
+  }
+  static std::vector<Reader*>& readers();
+
+ private:
+  Participant participant_;
+  std::vector<Writer*> writers_;
+};
+
+}  // namespace rtps
+
+#endif  // MROS2_LIBRARY_STAND_IN_RTPS_H

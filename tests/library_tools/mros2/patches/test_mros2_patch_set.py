@@ -1,0 +1,118 @@
+"""colcon_mros.library_tools.mros2.patches: the opt-in patch set for a user's
+mros2, applied with genmros mros2-harden to a copy of the real checkout
+(MROS2_ROOT), and mros2's real src/mros2.cpp compiled, as it is and
+patched, against a stand-in of embeddedRTPS (testing/mros2_library): two
+publishers, and samples that do not decode."""
+
+import filecmp
+import os
+import shutil
+import subprocess
+
+import pytest
+
+from conftest import REPO, run_genmros
+from mros2_checkout import MROS2_ROOT
+
+pytestmark = [pytest.mark.needs_mros2, pytest.mark.slow]
+
+STAND_IN = os.path.join(REPO, 'testing', 'mros2_library')
+TIF = 'test_interface_files/msg/'
+ENDPOINTS = ['--publish', 'alpha:%sBasicTypes' % TIF, '--publish', 'beta:%sStrings' % TIF,
+             '--subscribe', 'gamma:%sBasicTypes' % TIF, '--subscribe', 'delta:%sStrings' % TIF]
+
+
+def _copy(root):
+    for part in ('include', 'src'):
+        shutil.copytree(os.path.join(MROS2_ROOT, part), str(root / part))
+    return root
+
+
+def _differing(left, right):
+    comparison = filecmp.dircmp(left, right)
+
+    def walk(node, prefix):
+        return [os.path.join(prefix, name)
+                for name in node.diff_files + node.left_only + node.right_only] + [
+            name for sub, child in node.subdirs.items() for name in walk(child, os.path.join(prefix, sub))]
+    return sorted(walk(comparison, ''))
+
+
+def test_apply_check_revert_on_a_checkout(tmp_path):
+    checkout = _copy(tmp_path / 'mros2')
+    before = run_genmros('mros2-harden', str(checkout), '--check', check=False)
+    assert before.returncode == 1
+    assert [line.split(':')[0] for line in before.stdout.splitlines()] == [
+        'not applied   one-writer-per-publisher', 'not applied   checked-receive']
+    applied = run_genmros('mros2-harden', str(checkout))
+    assert applied.stdout == 'genmros: applied one-writer-per-publisher, checked-receive\n'
+    for part in ('include', 'src'):
+        assert _differing(os.path.join(MROS2_ROOT, part), str(checkout / part)) == (
+            ['mros2.h'] if part == 'include' else ['mros2.cpp'])
+    assert run_genmros('mros2-harden', str(checkout), '--check').returncode == 0
+    assert run_genmros('mros2-harden', str(checkout)).stdout == \
+        'genmros: nothing to do: the patches are in\n'
+    run_genmros('mros2-harden', str(checkout), '--revert')
+    for part in ('include', 'src'):
+        assert _differing(os.path.join(MROS2_ROOT, part), str(checkout / part)) == []
+
+
+@pytest.fixture(scope='module')
+def export(tmp_path_factory):
+    root = str(tmp_path_factory.mktemp('mros2_library_export'))
+    run_genmros('mros2-export', '--prefix', '/usr', '-o', root, *ENDPOINTS)
+    return root
+
+
+def _run_check(checkout, export, out, patched):
+    program = str(out / 'library_check')
+    command = ['g++', '-std=c++14', '-g', '-fsanitize=address,undefined',
+               '-fno-sanitize-recover=all', '-DMROS2_LOG_MIN_SEVERITY=5',
+               '-I', STAND_IN, '-I', str(checkout / 'include'), '-I', export,
+               str(checkout / 'src' / 'mros2.cpp'), os.path.join(STAND_IN, 'stand_in.cpp'),
+               os.path.join(STAND_IN, 'library_check.cpp'), '-pthread', '-o', program]
+    if patched:
+        command.insert(1, '-DCHECK_DROPPED_SAMPLES')
+    result = subprocess.run(command, capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr[-4000:]
+    result = subprocess.run([program], capture_output=True, text=True, timeout=60)
+    assert result.returncode == 0 and result.stderr == '', result.stderr[-4000:]
+    return result.stdout.splitlines()
+
+
+def _sent(lines):
+    return [tuple(line.split()[1:3]) for line in lines if line.startswith('sent ')]
+
+
+def test_as_it_is_one_publisher_sends_for_both_and_bad_samples_are_delivered(tmp_path, export):
+    lines = _run_check(_copy(tmp_path / 'mros2'), export, tmp_path, patched=False)
+    strings = 'test_interface_files::msg::dds_::Strings_'
+    assert _sent(lines) == [('rt/beta', strings), ('rt/beta', strings)]
+    assert lines[-1] == 'delivered 5'
+
+
+def test_patched_each_publisher_has_its_topic_and_bad_samples_are_dropped(tmp_path, export):
+    checkout = _copy(tmp_path / 'mros2')
+    run_genmros('mros2-harden', str(checkout))
+    lines = _run_check(checkout, export, tmp_path, patched=True)
+    assert _sent(lines) == [('rt/alpha', 'test_interface_files::msg::dds_::BasicTypes_'),
+                            ('rt/beta', 'test_interface_files::msg::dds_::Strings_')]
+    assert lines[-2:] == ['delivered 1', 'dropped 4']
+
+
+def test_the_fit_check_reads_the_checkouts_publisher(tmp_path, export):
+    """The as-is Publisher has no writer: two publishers are a misfit; patched, none."""
+    checkout = _copy(tmp_path / 'mros2')
+    config = tmp_path / 'config.h'
+    config.write_text('const uint8_t MAX_TYPENAME_LENGTH = 64;\nconst uint8_t '
+                      'MAX_TOPICNAME_LENGTH = 64;\nconst uint8_t NUM_WRITERS_PER_PARTICIPANT = '
+                      '8;\nconst uint8_t NUM_READERS_PER_PARTICIPANT = 8;\nconst uint8_t '
+                      'NUM_STATELESS_WRITERS = 8;\nconst uint8_t NUM_STATELESS_READERS = 8;\n')
+    arguments = ['mros2-fit', '--prefix', '/usr', '--rtps-config', str(config), '--mros2-root',
+                 str(checkout)] + ENDPOINTS
+    as_it_is = run_genmros(*arguments, check=False)
+    assert as_it_is.returncode == 1
+    assert ('error: %s:66: the firmware: its 2 publishers need a Publisher with a writer of its '
+            'own' % (checkout / 'include' / 'mros2.h')) in as_it_is.stdout
+    run_genmros('mros2-harden', str(checkout))
+    assert 'Every endpoint fits.' in run_genmros(*arguments).stdout
