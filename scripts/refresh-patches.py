@@ -68,8 +68,8 @@ def main():
         with open(patch.path, 'w', encoding='utf-8') as stream:
             stream.write(text)
     with tempfile.TemporaryDirectory(prefix='refresh-patches-') as scratch:
-        shutil.copytree(os.path.join(root, MROS_V1_SERIES.library_dir),
-                        os.path.join(scratch, MROS_V1_SERIES.library_dir))
+        for directory in MROS_V1_SERIES.library_dirs:
+            shutil.copytree(os.path.join(root, directory), os.path.join(scratch, directory))
         apply_patches(scratch, mros_v1_patches())
     print('refreshed the patches of %s' % MROS_V1_SERIES.directory)
     return 0
