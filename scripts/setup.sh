@@ -50,13 +50,14 @@ as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --reinstall \
 # ROS 2 serializer the mros2 tests compare with) goes into the checkout's
 # build/test-python, which tests/conftest.py puts on the path, not into a
 # Python of the system.
-# The ROS 2 wheels' rosidl (scripts/test-requirements-rosidl-wheels.txt) get a
-# venv of their own, build/rosidl-wheels, made again when the list changes.
+# The ROS 2 wheels (scripts/test-requirements-ros2-wheels.txt: rosidl, rclpy
+# and message packages) get a venv of their own, build/ros2-wheels, made
+# again when the list changes.
 if [ "${1:-}" = --tests ]; then
   /usr/bin/python3 -m pip install --quiet --disable-pip-version-check --upgrade \
     --target "$here/build/test-python" -r "$here/scripts/test-requirements.txt"
-  wheels="$here/build/rosidl-wheels"
-  wheel_list="$here/scripts/test-requirements-rosidl-wheels.txt"
+  wheels="$here/build/ros2-wheels"
+  wheel_list="$here/scripts/test-requirements-ros2-wheels.txt"
   if ! cmp -s "$wheel_list" "$wheels/requirements.txt"; then
     rm -rf "$wheels"
     /usr/bin/python3 -m venv "$wheels"

@@ -1,6 +1,6 @@
 """The rosidl generator on the newer rosidl of the ROS 2 wheels on PyPI (4.9):
 mros2_base_msgs of test_ws_ros2 built with CMake against the rosidl that
-scripts/setup.sh --tests installs into build/rosidl-wheels (its
+scripts/setup.sh --tests installs into build/ros2-wheels (its
 rosidl_write_generator_arguments(), rosidl_find_package_idl(), Python and
 rosidl_pycommon), with this checkout's rosidl_generator_mros2. Its header is
 the one genmros writes for the same message with Debian's rosidl (3.3)."""
@@ -14,7 +14,7 @@ from conftest import REPO, run_genmros
 
 pytestmark = pytest.mark.slow
 
-VENV = os.path.join(REPO, 'build', 'rosidl-wheels')
+VENV = os.path.join(REPO, 'build', 'ros2-wheels')
 PACKAGE = os.path.join(REPO, 'test_ws_ros2', 'src', 'mros2_base_msgs')
 EXTENSION_DIR = os.path.join(REPO, 'share', 'rosidl_generator_mros2', 'cmake')
 STAMP = os.path.join('mros2_base_msgs', 'msg', 'stamp.hpp')
