@@ -2,7 +2,7 @@
 # cross-compiling welcome: nothing of ROS is needed but the export dir and
 # genmros).
 #
-#   mros2_import_messages(TARGET t EXPORT_DIR dir
+#   mros2_import_messages(TARGET t EXPORT_DIR dir [PREFIXES prefix ...]
 #                         [PUBLISH [topic:]pkg/msg/Type ...]
 #                         [SUBSCRIBE [topic:]pkg/msg/Type ...]
 #                         [TYPES pkg/msg/Type|pkg/srv/Name ...]
@@ -10,7 +10,8 @@
 #                         [RTPS_CONFIG rtps/config.h [RECEIVE_LIMIT bytes|file:NAME]
 #                          [MROS2_ROOT dir]])
 #     Use the ROS 2 types a `colcon build --mros-export dir` exported
-#     (dir/mros2): the headers of the PUBLISH, SUBSCRIBE and TYPES types and
+#     (dir/mros2), and those of installed ROS 2 prefixes (PREFIXES, e.g.
+#     /opt/ros/humble for std_msgs): the headers of the PUBLISH, SUBSCRIBE and TYPES types and
 #     of every type they contain, and mros2's templates.hpp with the explicit
 #     instantiations of its publish and subscribe calls for the PUBLISH and
 #     SUBSCRIBE types (genmros mros2-export --publish/--subscribe), so no
@@ -36,7 +37,7 @@ find_program(GENMROS_BIN genmros
 
 function(mros2_import_messages)
   cmake_parse_arguments(ARG "" "TARGET;EXPORT_DIR;STORAGE;RTPS_CONFIG;RECEIVE_LIMIT;MROS2_ROOT"
-    "TYPES;PUBLISH;SUBSCRIBE;OPTIONS" ${ARGN})
+    "TYPES;PUBLISH;SUBSCRIBE;OPTIONS;PREFIXES" ${ARGN})
   if(ARG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "mros2_import_messages(): unknown arguments: ${ARG_UNPARSED_ARGUMENTS}")
   endif()
@@ -58,6 +59,9 @@ function(mros2_import_messages)
 
   set(output_dir "${CMAKE_CURRENT_BINARY_DIR}/mros2_messages/${ARG_TARGET}")
   set(genmros_args mros2-export --prefix "${prefix}" -o "${output_dir}")
+  foreach(installed ${ARG_PREFIXES})
+    list(APPEND genmros_args --prefix "${installed}")
+  endforeach()
   foreach(kind PUBLISH SUBSCRIBE TYPES)
     string(TOLOWER "${kind}" flag)
     if(kind STREQUAL "TYPES")

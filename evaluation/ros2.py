@@ -1,0 +1,228 @@
+"""The main job's ROS 2 part: mros2 firmware against real rclpy nodes.
+
+1. colcon build --mros-export of test_ws_ros2 with the ROS 2 wheels'
+   rosidl (rosidl_default_generators: C, C++, Python; the mros2 generator
+   beside them, found through rosidl's generator group): the export dir's
+   mros2/ and rclpy's own classes of the same types.
+2. evaluation/firmware_ros2 (find_package(genmros), mros2_import_messages()
+   on that export and on the wheels' std_msgs, geometry_msgs, sensor_msgs,
+   with the fit check on its rtps/config.h) for 32-bit ARM Linux and
+   Cortex-M4F, with their sizes.
+3. genmros mros2-fit's verdict on the firmware's endpoints (from the board
+   itself: board --describe).
+4. The ARM program under qemu-arm; evaluation/ros2_bridge.py (rclpy) carries
+   its samples to and from the ROS 2 graph unread, and
+   evaluation/ros2_peer.py (rclpy) checks them byte for byte.
+5. In sync by construction: a field added to Reading.msg reaches the
+   firmware's header and rclpy's class with the next colcon and firmware
+   builds.
+
+The ROS 2 nodes run in the venv build/ros2-wheels (scripts/setup.sh
+--tests), on Fast DDS over loopback only, in a DDS domain of their own.
+"""
+
+import glob
+import os
+import re
+import shutil
+import signal
+import subprocess
+import time
+
+from board import TARGETS, Failure, run_logged, sizes
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(HERE)
+WHEELS = os.path.join(REPO, 'build', 'ros2-wheels')
+TEST_WS_ROS2_SRC = os.path.join(REPO, 'test_ws_ros2', 'src')
+FIRMWARE = os.path.join(HERE, 'firmware_ros2')
+RTPS_CONFIG = os.path.join(FIRMWARE, 'rtps', 'config.h')
+# lwIP's receive limit on mros2-posix (lwip-posix src/core/udp.c: MAX_RECV_PACKET_SIZE).
+RECEIVE_LIMIT = 4096
+FIRMWARE_TARGETS = [target for target in TARGETS
+                    if target.name in ('arm-linux-gnueabihf', 'cortex-m4')]
+BRIDGE = os.path.join(HERE, 'ros2_bridge.py')
+PEER = os.path.join(HERE, 'ros2_peer.py')
+PEER_TIMEOUT = 120
+# What the board publishes of each type (board_ros2.cpp, kSamples), and what the peer sends.
+SAMPLES = 20
+ADDED_FIELD = 'uint32 sequence_number  # added by the main job: the firmware must follow'
+TRANSPORT = ("samples carried between qemu-arm and the ROS 2 graph by evaluation/ros2_bridge.py: "
+             "an rclpy node that relays the board's bytes unread, under the DDS type names of "
+             "the board's genmros headers")
+
+
+def wheels_found():
+    return os.path.isfile(os.path.join(WHEELS, 'bin', 'python'))
+
+
+class Ros2Workspace:
+    """A copy of test_ws_ros2, built with the ROS 2 wheels."""
+
+    def __init__(self, root):
+        self.root = root
+        self.export_dir = os.path.join(root, 'mros_export')
+        shutil.copytree(TEST_WS_ROS2_SRC, os.path.join(root, 'src'))
+
+    def environment(self, domain=None):
+        """A ROS 2 user's environment: the wheels, then the workspace's install."""
+        installs = sorted(glob.glob(os.path.join(self.root, 'install', '*', '')))
+        environment = dict(
+            os.environ, PATH='%s/bin:/usr/bin:/bin' % WHEELS,
+            AMENT_PREFIX_PATH=':'.join([path.rstrip('/') for path in installs] + [WHEELS, '/usr']),
+            CMAKE_PREFIX_PATH=WHEELS, RMW_IMPLEMENTATION='rmw_fastrtps_cpp',
+            ROS_AUTOMATIC_DISCOVERY_RANGE='LOCALHOST',
+            PYTHONPATH=':'.join(glob.glob(os.path.join(self.root, 'install', '*', 'lib',
+                                                       'python3*', 'site-packages'))),
+            LD_LIBRARY_PATH=':'.join(os.path.join(path, 'lib') for path in installs))
+        if domain is not None:
+            environment['ROS_DOMAIN_ID'] = str(domain)
+        return environment
+
+    def build(self, log_path):
+        run_logged(['colcon', 'build', '--mros-export', self.export_dir], log_path,
+                   cwd=self.root, env=self.environment())
+
+
+def colcon_build(root):
+    """Step 1: the workspace, built; (Ros2Workspace, detail)."""
+    workspace = Ros2Workspace(root)
+    workspace.build(os.path.join(root, 'colcon_build.log'))
+    headers = sorted(os.path.relpath(path, os.path.join(workspace.export_dir, 'mros2', 'include'))
+                     for path in glob.glob(os.path.join(workspace.export_dir, 'mros2', 'include',
+                                                        '*', '*', '*.hpp')))
+    python = glob.glob(os.path.join(root, 'install', 'mros2_test_msgs', 'lib', 'python3*',
+                                    'site-packages', 'mros2_test_msgs', 'msg', '_reading.py'))
+    if 'mros2_test_msgs/msg/reading.hpp' not in headers or not python:
+        raise Failure('no mros2 header or no Python class of Reading: see %s'
+                      % os.path.join(root, 'colcon_build.log'))
+    return workspace, ('export dir %s: %s; rclpy\'s classes of the same types installed'
+                       % (workspace.export_dir, ', '.join(headers)))
+
+
+def build_firmware(workspace, build_dir, target):
+    """Step 2: the firmware for target; (program, its sizes)."""
+    os.makedirs(os.path.dirname(build_dir), exist_ok=True)
+    genmros_dir = subprocess.run(['genmros', 'cmake-dir'], check=True, capture_output=True,
+                                 text=True).stdout.strip()
+    run_logged(['cmake', '-S', FIRMWARE, '-B', build_dir,
+                '-DMROS2_EXPORT_DIR=' + workspace.export_dir, '-DROS2_PREFIX=' + WHEELS,
+                '-DBOARD_PORT=' + target.port,
+                '-DCMAKE_TOOLCHAIN_FILE=%s/../firmware/toolchains/%s.cmake' % (FIRMWARE,
+                                                                               target.name),
+                '-Dgenmros_DIR=' + genmros_dir], build_dir + '.configure.log')
+    run_logged(['cmake', '--build', build_dir, '-j2'], build_dir + '.build.log')
+    program = os.path.join(build_dir, 'board')
+    return program, sizes(target, program)
+
+
+def board_endpoints(program):
+    """[(topic, pkg/msg/Type, 'P' or 'S')] as the firmware's headers give them."""
+    output = subprocess.run(['qemu-arm', program, '--describe'], check=True,
+                            capture_output=True, text=True).stdout
+    endpoints = []
+    for line in output.splitlines():
+        topic, dds_type_name, _, role = line.split(' ')
+        package, kind, _, name = dds_type_name.split('::')
+        endpoints.append((topic, '%s/%s/%s' % (package, kind, name[:-1]), role))
+    return endpoints
+
+
+def fit_verdict(workspace, program):
+    """Step 3: genmros mros2-fit on the board's endpoints; (report, detail)."""
+    arguments = ['genmros', 'mros2-fit', '--prefix', os.path.join(workspace.export_dir, 'mros2'),
+                 '--prefix', WHEELS, '--rtps-config', RTPS_CONFIG,
+                 '--receive-limit', str(RECEIVE_LIMIT)]
+    endpoints = board_endpoints(program)
+    for topic, type_name, role in endpoints:
+        arguments += ['--publish' if role == 'P' else '--subscribe', '%s:%s' % (topic, type_name)]
+    result = subprocess.run(arguments, capture_output=True, text=True)
+    if result.returncode != 0 or 'Every endpoint fits.' not in result.stdout:
+        raise Failure('genmros mros2-fit: %s' % ' | '.join(
+            line for line in (result.stdout + result.stderr).splitlines()
+            if line.startswith(('error', 'genmros')))[:600])
+    settings = re.search(r'^Settings \(rtps/config.h\): (.*)$', result.stdout, re.M).group(1)
+    return result.stdout, ('every one of the %d endpoints fits: %s; receive limit %d'
+                           % (len(endpoints), settings, RECEIVE_LIMIT))
+
+
+def _start(argv, log_path, environment):
+    log = open(log_path, 'w')
+    return subprocess.Popen(argv, stdout=log, stderr=subprocess.STDOUT, env=environment,
+                            start_new_session=True), log
+
+
+def _stop(process):
+    if process.poll() is None:
+        os.killpg(process.pid, signal.SIGTERM)
+        try:
+            process.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            os.killpg(process.pid, signal.SIGKILL)
+            process.wait()
+
+
+def free_domain():
+    """A DDS domain for this run: derived from the process id, within ROS 2's 0..101."""
+    return 1 + os.getpid() % 100
+
+
+def exchange(workspace, program, log_dir):
+    """Step 4: the board and the rclpy nodes; [(title, detail, problem)], one per topic."""
+    environment = workspace.environment(free_domain())
+    python = os.path.join(WHEELS, 'bin', 'python')
+    peer, peer_log = _start([python, PEER, '--count', str(SAMPLES)],
+                            os.path.join(log_dir, 'ros2_peer.log'), environment)
+    bridge, bridge_log = _start([python, BRIDGE, 'qemu-arm', program],
+                                os.path.join(log_dir, 'ros2_bridge.log'), environment)
+    try:
+        peer.wait(timeout=PEER_TIMEOUT)
+    except subprocess.TimeoutExpired:
+        pass
+    finally:
+        _stop(peer)
+        _stop(bridge)
+        peer_log.close()
+        bridge_log.close()
+    with open(peer_log.name) as stream:
+        lines = [line[len('peer: '):].strip() for line in stream if line.startswith('peer: ')]
+    if not lines:
+        raise Failure('the rclpy peer reported nothing: see %s and %s'
+                      % (peer_log.name, bridge_log.name))
+    results = []
+    for line in lines:
+        match = re.match(r'(\S+): (\d+) of (\d+) samples came, (\d+) byte for byte', line)
+        if not match:
+            raise Failure('the rclpy peer said: %s' % line)
+        topic = match.group(1)
+        came, expected, exact = map(int, match.group(2, 3, 4))
+        direction = 'rclpy -> board -> rclpy' if topic.endswith('_echo') else 'board -> rclpy'
+        problem = None if came == exact == expected else line
+        results.append(('%s: %s' % (direction, topic), line, problem))
+    return results
+
+
+def in_sync(workspace, firmware_build, log_path):
+    """Step 5: a field added to Reading.msg; what the next builds showed."""
+    definition = os.path.join(workspace.root, 'src', 'mros2_test_msgs', 'msg', 'Reading.msg')
+    with open(definition, 'a') as stream:
+        stream.write(ADDED_FIELD + '\n')
+    started = time.monotonic()
+    workspace.build(log_path + '.colcon')
+    rebuilt = run_logged(['cmake', '--build', firmware_build, '-j2'], log_path + '.firmware')
+    seconds = time.monotonic() - started
+    header = os.path.join(firmware_build, 'mros2_messages', 'board', 'mros2_test_msgs', 'msg',
+                          'reading.hpp')
+    with open(header) as stream:
+        in_header = 'uint32_t sequence_number = 0u;' in stream.read()
+    if 'board_ros2.cpp.o' not in rebuilt or not in_header:
+        raise Failure('the firmware did not follow the new field: see %s.firmware' % log_path)
+    script = ('from mros2_test_msgs.msg import Reading; '
+              'print("sequence_number" in Reading.get_fields_and_field_types())')
+    rclpy_has = subprocess.run([os.path.join(WHEELS, 'bin', 'python'), '-c', script],
+                               env=workspace.environment(), capture_output=True, text=True)
+    if rclpy_has.stdout.strip() != 'True':
+        raise Failure("rclpy's Reading has no sequence_number: %s" % rclpy_has.stderr[-300:])
+    return ("field 'uint32 sequence_number' added to Reading.msg: in the firmware's "
+            "reading.hpp and in rclpy's Reading (colcon build + firmware rebuild %.0f s)"
+            % seconds)
