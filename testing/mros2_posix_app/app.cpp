@@ -2,14 +2,14 @@
  * An mros2-posix app on genmros' message headers, answering a ROS 2 peer.
  *
  * It subscribes to std_msgs/String requests on "requests" and answers each one:
- * - "image N" publishes the test image N (make_test_image) on "images": N * 17 bytes of
+ * - "image N" publishes the test image N (fill_test_image) on "images": N * 17 bytes of
  *   data, so images from N = 3 on are over mros2's 100-byte buffer and go out in fragments;
  * - any other text is echoed: on "echo" as a String when built with APP_ECHO_PUBLISHER
  *   (a second publisher: needs genmros' mros2 patch set), otherwise as an Image on
  *   "images" whose header.frame_id is the text (mros2 0.4 has one writer for all
  *   publishers).
  * An answer's frame_id (or String) is the request's text, so the peer can tell which
- * request it answers. testing/mros2_posix.py holds the same image in Python.
+ * request it answers. testing/mros2_posix.py holds the same test image in Python.
  */
 #include "mros2.h"
 #include "sensor_msgs/msg/image.hpp"
@@ -33,9 +33,35 @@ mros2::Publisher image_publisher;
 mros2::Publisher echo_publisher;
 #endif
 
-sensor_msgs::msg::Image make_test_image(uint32_t index, const std::string &frame_id)
+/* mros2 sends a message over its 100-byte buffer later, from embeddedRTPS' writer thread,
+ * through a reference to it (Publisher::publish hands the writer a lambda capturing &msg):
+ * a message must outlive publish() until it is sent. So each one published is kept in a
+ * ring, which the peer (it waits for each answer before the next request) never laps. */
+template <class Message>
+class PublishedMessages
 {
-  sensor_msgs::msg::Image image;
+public:
+  Message &fresh()
+  {
+    Message &slot = slots_[next_];
+    next_ = (next_ + 1) % kCount;
+    slot = Message();
+    return slot;
+  }
+
+private:
+  static const size_t kCount = 8;
+  Message slots_[kCount];
+  size_t next_ = 0;
+};
+
+PublishedMessages<sensor_msgs::msg::Image> published_images;
+#ifdef APP_ECHO_PUBLISHER
+PublishedMessages<std_msgs::msg::String> published_strings;
+#endif
+
+void fill_test_image(sensor_msgs::msg::Image &image, uint32_t index, const std::string &frame_id)
+{
   image.header.stamp.sec = static_cast<int32_t>(index);
   image.header.stamp.nanosec = 1000003u * index;
   image.header.frame_id = frame_id;
@@ -47,22 +73,29 @@ sensor_msgs::msg::Image make_test_image(uint32_t index, const std::string &frame
   for (uint32_t i = 0; i < image.width; ++i) {
     image.data.push_back(static_cast<uint8_t>(7 * index + i));
   }
-  return image;
+}
+
+/* The size is printed before publish(): afterwards the writer thread may be reading the
+ * message, and calcTotalSize() restarts its fragment count. */
+template <class Message>
+void publish(mros2::Publisher &publisher, Message &message, const char *what)
+{
+  printf("publishing %s: %u bytes on the wire\n", what, (unsigned)message.calcTotalSize());
+  fflush(stdout);
+  publisher.publish(message);
 }
 
 void echo(const std::string &text)
 {
 #ifdef APP_ECHO_PUBLISHER
-  std_msgs::msg::String answer;
+  std_msgs::msg::String &answer = published_strings.fresh();
   answer.data = text;
-  echo_publisher.publish(answer);
-  printf("echoed as String: %u bytes on the wire\n", (unsigned)answer.calcTotalSize());
+  publish(echo_publisher, answer, "an echo as String");
 #else
-  sensor_msgs::msg::Image answer;
+  sensor_msgs::msg::Image &answer = published_images.fresh();
   answer.header.frame_id = text;
   answer.encoding = "echo";
-  image_publisher.publish(answer);
-  printf("echoed as Image: %u bytes on the wire\n", (unsigned)answer.calcTotalSize());
+  publish(image_publisher, answer, "an echo as Image");
 #endif
 }
 
@@ -74,14 +107,12 @@ void on_request(std_msgs::msg::String *request)
   if (text.compare(0, kImageRequest.size(), kImageRequest) == 0) {
     uint32_t index = static_cast<uint32_t>(strtoul(text.c_str() + kImageRequest.size(),
                                                    NULL, 10));
-    sensor_msgs::msg::Image image = make_test_image(index, text);
-    image_publisher.publish(image);
-    printf("published image %u: %u bytes on the wire\n", (unsigned)index,
-           (unsigned)image.calcTotalSize());
+    sensor_msgs::msg::Image &image = published_images.fresh();
+    fill_test_image(image, index, text);
+    publish(image_publisher, image, text.c_str());
   } else {
     echo(text);
   }
-  fflush(stdout);
 }
 
 #ifdef APP_SETS_RTPS_ADDRESS
@@ -113,7 +144,6 @@ int main()
 #endif
   mros2::Subscriber requests =
       node.create_subscription<std_msgs::msg::String>("requests", 10, on_request);
-  (void)requests;
   printf("app ready\n");
   fflush(stdout);
   mros2::spin();

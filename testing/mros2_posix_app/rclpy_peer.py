@@ -7,7 +7,7 @@ serialized String, "text": its text, "topic": the answer's topic, "type": "Image
 RESEND_PERIOD until an answer whose text (Image header.frame_id, String data) is the
 request's arrives: the app's writers are best-effort, and the first requests also wait
 for discovery. stdout: JSON {"answers": [{"sample": hex of the answer as received, "sent":
-how often the request went out} or null], "unmatched": answers no request was waiting for}.
+how often the request went out} or null], "unmatched": hex of the answers no request was waiting for}.
 """
 
 import json
@@ -24,8 +24,13 @@ RESEND_PERIOD = 0.5
 MESSAGE_TYPES = {'Image': Image, 'String': String}
 
 
-def answer_text(message):
-    return message.header.frame_id if isinstance(message, Image) else message.data
+def answer_text(raw, message_type):
+    """The text an answer carries, or None if rclpy cannot read it."""
+    try:
+        message = deserialize_message(raw, message_type)
+    except Exception:  # rclpy raises a bare RMWError for a sample Fast CDR cannot read
+        return None
+    return message.header.frame_id if message_type is Image else message.data
 
 
 def main():
@@ -39,11 +44,10 @@ def main():
         message_type = MESSAGE_TYPES[type_name]
         node.create_subscription(
             message_type, topic,
-            lambda raw, t=message_type: received.append(
-                (answer_text(deserialize_message(raw, t)), bytes(raw))),
+            lambda raw, t=message_type: received.append((answer_text(raw, t), bytes(raw))),
             qos, raw=True)
     publisher = node.create_publisher(String, 'requests', qos)
-    answers, unmatched = [], 0
+    answers, unmatched = [], []
     timeout = job['first_timeout']
     for request in job['requests']:
         deadline, answer, sent = time.monotonic() + timeout, None, 0
@@ -58,7 +62,7 @@ def main():
                     if text == request['text']:
                         answer = {'sample': raw.hex(), 'sent': sent}
                     else:
-                        unmatched += 1
+                        unmatched.append(raw.hex())
         answers.append(answer)
         timeout = job['timeout']
     json.dump({'answers': answers, 'unmatched': unmatched}, sys.stdout)
