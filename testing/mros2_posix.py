@@ -9,7 +9,8 @@ workspace/<app>; :func:`build_app` builds it as mros2-posix' build.bash does, mi
 downloads and mros2's templates generator. :class:`NetworkPair` gives the app its address
 (192.168.11.3, in a network namespace of its own) and the peer a second one (192.168.11.2);
 :func:`run_peer` runs testing/mros2_posix_app/rclpy_peer.py there in the ROS 2 wheels' venv.
-:func:`requested_image`, :func:`echo_image` and :func:`wire_bytes` are what the app should send, from rosbags.
+:func:`requested_image`, :func:`echo_image` and :func:`wire_bytes` are what the app should
+send, from rosbags.
 """
 
 import json

@@ -7,7 +7,8 @@ serialized String, "text": its text, "topic": the answer's topic, "type": "Image
 RESEND_PERIOD until an answer whose text (Image header.frame_id, String data) is the
 request's arrives: the app's writers are best-effort, and the first requests also wait
 for discovery. stdout: JSON {"answers": [{"sample": hex of the answer as received, "sent":
-how often the request went out} or null], "unmatched": hex of the answers no request was waiting for}.
+how often the request went out} or null], "unmatched": hex of the answers no request was
+waiting for}.
 """
 
 import json
@@ -40,7 +41,8 @@ def main():
     # mros2's writers and readers are best-effort; a reliable reader would not match.
     qos = QoSProfile(depth=100, reliability=ReliabilityPolicy.BEST_EFFORT)
     received = []
-    for topic, type_name in sorted({(r['topic'], r['type']) for r in job['requests']}):
+    for topic, type_name in sorted({(request['topic'], request['type'])
+                                    for request in job['requests']}):
         message_type = MESSAGE_TYPES[type_name]
         node.create_subscription(
             message_type, topic,
