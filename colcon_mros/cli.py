@@ -308,9 +308,10 @@ def _add_mros2_harden(subparsers):
         'mros2-harden', help="[mros2] apply genmros' patch set to an mros2 checkout",
         description="Apply genmros' patch set for mros2 (made for v0.5.4: one writer per "
                     'publisher; the checked receive, which drops and counts a sample that does '
-                    "not decode, with genmros' message headers) to a checkout. Only include/ "
-                    'and src/ are changed, and only where every file is as the patches expect; '
-                    'a patch already applied is left as it is.')
+                    "not decode, with genmros' message headers; embeddedRTPS discovering Fast "
+                    'DDS 3) to a checkout. Only include/, src/ and embeddedRTPS/ are changed, '
+                    'and only where every file is as the patches expect; a patch already '
+                    'applied is left as it is.')
     parser.add_argument('mros2_root', metavar='MROS2_ROOT', help='the mros2 checkout')
     _add_harden_actions(parser)
     parser.set_defaults(run=_mros2_harden)

@@ -23,6 +23,9 @@ import sys
 
 import numpy
 
+from colcon_mros.library_tools.mros2.patches import mros2_patches
+from colcon_mros.library_tools.patch_series import apply_patches
+
 APP_SOURCES = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'mros2_posix_app')
 PEER_SCRIPT = os.path.join(APP_SOURCES, 'rclpy_peer.py')
 APP_NAME = 'genmros_app'
@@ -35,6 +38,7 @@ IMAGE_BYTES_PER_INDEX = 17
 BUILD_JOBS = '2'
 # Build products of a checkout that was built before: a copy starts from sources.
 BUILD_DIRECTORIES = ('cmake_build', 'public')
+FAST_DDS_3_PATCH = 'accept-fast-dds-3-discovery'
 
 
 def checkout_problem(root):
@@ -52,37 +56,13 @@ def checkout_problem(root):
     return None
 
 
-def _replace_once(path, old, new):
-    with open(path) as stream:
-        text = stream.read()
-    if text.count(old) != 1:
-        raise AssertionError('%s: expected %r once, found it %d times'
-                             % (path, old, text.count(old)))
-    with open(path, 'w') as stream:
-        stream.write(text.replace(old, new))
-
-
 def accept_fast_dds_3_discovery(mros2_dir):
     """What embeddedRTPS (as mros2 v0.4.1 and v0.5.4 pin it) needs to discover a
-    participant of Fast DDS 3 (rclpy 9.1 on rmw_fastrtps_cpp); without it the app never
-    answers, as the runs that found these showed:
-
-    - an SPDP parameter it does not know makes it drop the participant, against RTPS
-      9.6.2.2.1 (ignore it): Fast DDS 3 sends PID_PRODUCT_VERSION (0x8000), PID_DOMAIN_ID
-      (0x000f) and more;
-    - it takes SPDP samples into 400 bytes and SEDP ones into 600; Fast DDS 3's are about
-      500 (a property list) and, with type information, over 600.
-    """
-    rtps = os.path.join(mros2_dir, 'embeddedRTPS')
-    _replace_once(os.path.join(rtps, 'src', 'discovery', 'ParticipantProxyData.cpp'),
-                  '    default: { return false; }',
-                  '    default: {\n      buffer.iterator += length;\n'
-                  '      buffer.last_data_size = 1;\n      break;\n    }')
-    _replace_once(os.path.join(rtps, 'include', 'rtps', 'discovery', 'SPDPAgent.h'),
-                  'std::array<uint8_t, 400> m_inputBuffer{};',
-                  'std::array<uint8_t, 1024> m_inputBuffer{};')
-    _replace_once(os.path.join(rtps, 'include', 'rtps', 'discovery', 'SEDPAgent.h'),
-                  'uint8_t m_buffer[600];', 'uint8_t m_buffer[2048];')
+    participant of Fast DDS 3 (rclpy 9.1 on rmw_fastrtps_cpp), without which the app
+    never answers: genmros' patch accept-fast-dds-3-discovery, the one of its mros2
+    series that applies to v0.4.1 too, applied alone by the series' driver."""
+    patches = [patch for patch in mros2_patches() if patch.name == FAST_DDS_3_PATCH]
+    apply_patches(mros2_dir, patches)
 
 
 def prepare_checkout(root, destination, mros2_root=None):
@@ -97,7 +77,7 @@ def prepare_checkout(root, destination, mros2_root=None):
         mros2_dir = os.path.join(destination, 'mros2')
         shutil.rmtree(mros2_dir)
         shutil.copytree(mros2_root, mros2_dir, symlinks=True)
-        run_genmros('mros2-harden', mros2_dir)
+        run_genmros('mros2-harden', mros2_dir)  # accept-fast-dds-3-discovery among them
         config = os.path.join(destination, 'include', 'rtps', 'config.h')
         with open(config) as stream:
             text = stream.read()
@@ -108,7 +88,8 @@ def prepare_checkout(root, destination, mros2_root=None):
                                  % config)
         with open(config, 'w') as stream:
             stream.write(text)
-    accept_fast_dds_3_discovery(os.path.join(destination, 'mros2'))
+    else:
+        accept_fast_dds_3_discovery(os.path.join(destination, 'mros2'))
     return destination
 
 

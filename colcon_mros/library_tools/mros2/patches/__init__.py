@@ -11,7 +11,7 @@ from colcon_mros.errors import GenmrosError
 from colcon_mros.library_tools.patch_series import PatchSeries, read_series
 
 # Every path a patch names lies below these directories of the checkout.
-LIBRARY_DIRS = ('include', 'src')
+LIBRARY_DIRS = ('include', 'src', 'embeddedRTPS')
 MROS2_SERIES = PatchSeries(os.path.dirname(os.path.abspath(__file__)), LIBRARY_DIRS)
 # What an mros2 checkout has.
 LIBRARY_SOURCE = os.path.join('src', 'mros2.cpp')

@@ -11,6 +11,7 @@ import subprocess
 
 import pytest
 
+from colcon_mros.library_tools.mros2.patches import LIBRARY_DIRS
 from conftest import REPO, run_genmros
 from mros2_checkout import MROS2_ROOT
 
@@ -23,7 +24,7 @@ ENDPOINTS = ['--publish', 'alpha:%sBasicTypes' % TIF, '--publish', 'beta:%sStrin
 
 
 def _copy(root):
-    for part in ('include', 'src'):
+    for part in LIBRARY_DIRS:
         shutil.copytree(os.path.join(MROS2_ROOT, part), str(root / part))
     return root
 
@@ -43,17 +44,22 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
     before = run_genmros('mros2-harden', str(checkout), '--check', check=False)
     assert before.returncode == 1
     assert [line.split(':')[0] for line in before.stdout.splitlines()] == [
-        'not applied   one-writer-per-publisher', 'not applied   checked-receive']
+        'not applied   one-writer-per-publisher', 'not applied   checked-receive',
+        'not applied   accept-fast-dds-3-discovery']
     applied = run_genmros('mros2-harden', str(checkout))
-    assert applied.stdout == 'genmros: applied one-writer-per-publisher, checked-receive\n'
-    for part in ('include', 'src'):
-        assert _differing(os.path.join(MROS2_ROOT, part), str(checkout / part)) == (
-            ['mros2.h'] if part == 'include' else ['mros2.cpp'])
+    assert applied.stdout == ('genmros: applied one-writer-per-publisher, checked-receive, '
+                              'accept-fast-dds-3-discovery\n')
+    changed = {'include': ['mros2.h'], 'src': ['mros2.cpp'],
+               'embeddedRTPS': ['include/rtps/discovery/SEDPAgent.h',
+                                'include/rtps/discovery/SPDPAgent.h',
+                                'src/discovery/ParticipantProxyData.cpp']}
+    for part in LIBRARY_DIRS:
+        assert _differing(os.path.join(MROS2_ROOT, part), str(checkout / part)) == changed[part]
     assert run_genmros('mros2-harden', str(checkout), '--check').returncode == 0
     assert run_genmros('mros2-harden', str(checkout)).stdout == \
         'genmros: nothing to do: the patches are in\n'
     run_genmros('mros2-harden', str(checkout), '--revert')
-    for part in ('include', 'src'):
+    for part in LIBRARY_DIRS:
         assert _differing(os.path.join(MROS2_ROOT, part), str(checkout / part)) == []
 
 
