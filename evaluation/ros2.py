@@ -16,6 +16,10 @@
 5. In sync by construction: a field added to Reading.msg reaches the
    firmware's header and rclpy's class with the next colcon and firmware
    builds.
+6. With MROS2_POSIX_ROOT (an assembled mros2-posix checkout, as root): the
+   real mros2-posix app on genmros' headers against an rclpy node over a
+   veth pair (testing/mros2_posix.py), and with MROS2_ROOT (mros2 v0.5.4)
+   patched by genmros mros2-harden, its two publishers.
 
 The ROS 2 nodes run in the venv build/ros2-wheels (scripts/setup.sh
 --tests), on Fast DDS over loopback only, in a DDS domain of their own.
@@ -30,6 +34,7 @@ import subprocess
 import time
 
 from board import TARGETS, Failure, run_logged, sizes
+from testing import mros2_posix
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
@@ -226,3 +231,20 @@ def in_sync(workspace, firmware_build, log_path):
     return ("field 'uint32 sequence_number' added to Reading.msg: in the firmware's "
             "reading.hpp and in rclpy's Reading (colcon build + firmware rebuild %.0f s)"
             % seconds)
+
+
+def posix_run(posix_root, work_dir, mros2_root=None):
+    """Step 6: the mros2-posix app and an rclpy node; its detail line."""
+    from rosbags.typesys import Stores, get_typestore
+    os.makedirs(work_dir, exist_ok=True)
+    exchanged, warnings = mros2_posix.exchange(posix_root, WHEELS, work_dir,
+                                               get_typestore(Stores.ROS2_HUMBLE), mros2_root)
+    counts = ', '.join('%s %d of %d byte for byte' % (kind, exchanged.exact(kind),
+                                                      mros2_posix.EXCHANGES)
+                       for kind in ('images', 'echoes'))
+    if warnings or any(exchanged.exact(kind) != mros2_posix.EXCHANGES
+                       for kind in ('images', 'echoes')):
+        raise Failure('%s; %d warnings; see %s' % (counts, len(warnings), work_dir))
+    return None, '%s (images up to %d bytes, in fragments; %d requests for %d answers)' % (
+        counts, max(len(image) for image in exchanged.answers['images']),
+        exchanged.requests_sent, 2 * mros2_posix.EXCHANGES)

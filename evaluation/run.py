@@ -36,9 +36,12 @@ import time
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # testing/, what the tests, the benches and the main job share, is not installed:
-# it comes from this repository, after the installed genmros.
+# it comes from this repository, after the installed genmros; so do the test tools
+# from PyPI it uses (rosbags, numpy: scripts/setup.sh --tests, build/test-python).
 sys.path.append(REPO)
+sys.path.append(os.path.join(REPO, 'build', 'test-python'))
 
+from testing import mros2_posix  # noqa: E402
 from testing.ros_graph import PYTHON, CatkinWorkspace  # noqa: E402
 
 import board  # noqa: E402
@@ -231,6 +234,26 @@ def run_ros2(steps, build_root):
               lambda: (None, ros2.in_sync(
                   workspace, os.path.join(build_root, 'firmware', 'arm-linux-gnueabihf'),
                   os.path.join(build_root, 'in_sync.log'))))
+    posix_root = os.environ.get('MROS2_POSIX_ROOT', '')
+    if not posix_root:
+        print('\nthe real mros2-posix app was not run: MROS2_POSIX_ROOT is not set '
+              '(docs/mros2.md, "mros2-posix with genmros").', flush=True)
+        return
+    title = 'ROS 2: the mros2-posix app (mros2 %s) with an rclpy node over a veth pair'
+    problem = mros2_posix.checkout_problem(posix_root)
+    if problem:
+        steps.skip(title % 'as pinned', problem)
+        return
+    if os.geteuid() != 0:
+        print('\nthe real mros2-posix app was not run: it needs root for the network '
+              'namespace.', flush=True)
+        return
+    steps.run(title % 'as pinned, one publisher', ros2.posix_run, posix_root,
+              os.path.join(build_root, 'mros2_posix'))
+    mros2_root = os.environ.get('MROS2_ROOT', '')
+    if mros2_root:
+        steps.run(title % 'v0.5.4 patched, two publishers', ros2.posix_run, posix_root,
+                  os.path.join(build_root, 'mros2_posix_patched'), mros2_root)
 
 
 def run_mros_v1(steps, workspace, mros_root, build_root, count):

@@ -10,7 +10,9 @@ downloads and mros2's templates generator. :class:`NetworkPair` gives the app it
 (192.168.11.3, in a network namespace of its own) and the peer a second one (192.168.11.2);
 :func:`run_peer` runs testing/mros2_posix_app/rclpy_peer.py there in the ROS 2 wheels' venv.
 :func:`requested_image`, :func:`echo_image` and :func:`wire_bytes` are what the app should
-send, from rosbags.
+send, from rosbags. :func:`exchange` is the whole run, as the test and the main job make
+it: the app on the pinned mros2 (one publisher: every answer an Image) or on mros2 v0.5.4
+patched (two publishers: images, and String echoes on their own topic).
 """
 
 import json
@@ -281,3 +283,82 @@ def wire_bytes(typestore, message, type_name):
     padding in the sample's size)."""
     data = bytes(typestore.serialize_cdr(message, type_name))
     return data + bytes(-len(data) % 4)
+
+
+# The run of exchange(): 20 image requests (0 to 323 bytes of pixels: the larger ones go
+# out as DATA_FRAG) and 20 strings the app echoes, growing by 7 characters, so the later
+# echoes go over mros2's 100-byte buffer too.
+EXCHANGES = 20
+IMAGE_TOPIC, ECHO_TOPIC, REQUEST_TOPIC = 'images', 'echo', 'requests'
+IMAGE_TYPE, STRING_TYPE = 'sensor_msgs/msg/Image', 'std_msgs/msg/String'
+ECHO_GROWTH = 7
+# Filelists.cmake's options for mros2 v0.5.4: a String echo publisher, and the RTPS
+# address set at run time (mros2 >= 0.5 defines rtps::Config::IP_ADDRESS).
+TWO_PUBLISHER_OPTIONS = ('APP_ECHO_PUBLISHER', 'APP_SETS_RTPS_ADDRESS')
+
+
+class Exchanged:
+    """What a run showed: per kind ('images', 'echoes'), the answers that came (bytes,
+    or None) and what each should be; the requests the peer sent; the app's output."""
+
+    def __init__(self, answers, expected, requests_sent, app_output):
+        self.answers = answers
+        self.expected = expected
+        self.requests_sent = requests_sent
+        self.app_output = app_output
+
+    def exact(self, kind):
+        return sum(answer == wanted
+                   for answer, wanted in zip(self.answers[kind], self.expected[kind]))
+
+    def wrong(self, kind):
+        """The answers that came and are not what they should be: (got, wanted) hex."""
+        return [(answer.hex(), wanted.hex())
+                for answer, wanted in zip(self.answers[kind], self.expected[kind])
+                if answer is not None and answer != wanted]
+
+
+def _requests(typestore, echo_topic, echo_type):
+    string = typestore.types[STRING_TYPE]
+    texts = [('image %d' % index, IMAGE_TOPIC, 'Image') for index in range(EXCHANGES)]
+    texts += [('echo %d %s' % (index, 'x' * (ECHO_GROWTH * index)), echo_topic, echo_type)
+              for index in range(EXCHANGES)]
+    return [(text, bytes(typestore.serialize_cdr(string(data=text), STRING_TYPE)), topic,
+             type_name) for text, topic, type_name in texts]
+
+
+def exchange(posix_root, venv, work_dir, typestore, mros2_root=None):
+    """The app on a copy of posix_root (with mros2_root, mros2 v0.5.4 patched, two
+    publishers) against rclpy_peer.py; returns (Exchanged, the build's warnings)."""
+    checkout = prepare_checkout(posix_root, os.path.join(work_dir, 'mros2-posix'), mros2_root)
+    two_publishers = mros2_root is not None
+    echo_topic, echo_type = (ECHO_TOPIC, 'String') if two_publishers else (IMAGE_TOPIC, 'Image')
+    write_app(checkout, venv, publish=['%s:%s' % (IMAGE_TOPIC, IMAGE_TYPE)]
+              + (['%s:%s' % (ECHO_TOPIC, STRING_TYPE)] if two_publishers else []),
+              subscribe=['%s:%s' % (REQUEST_TOPIC, STRING_TYPE)])
+    program, warnings = build_app(checkout, os.path.join(work_dir, 'build.log'),
+                                  TWO_PUBLISHER_OPTIONS if two_publishers else ())
+    requests = _requests(typestore, echo_topic, echo_type)
+    network = NetworkPair()
+    app = None
+    try:
+        network.create()
+        app = AppProcess(program, network.app_namespace, os.path.join(work_dir, 'app.log'))
+        report = run_peer(venv, network.peer_namespace, requests,
+                          os.path.join(work_dir, 'ros_log'))
+    finally:
+        if app is not None:
+            app.stop()
+        network.remove()
+    answers = [bytes.fromhex(answer['sample']) if answer else None
+               for answer in report['answers']]
+    string = typestore.types[STRING_TYPE]
+    images = [wire_bytes(typestore, requested_image(typestore, index, 'image %d' % index),
+                         IMAGE_TYPE) for index in range(EXCHANGES)]
+    echoes = [wire_bytes(typestore, string(data=text), STRING_TYPE) if two_publishers else
+              wire_bytes(typestore, echo_image(typestore, text), IMAGE_TYPE)
+              for text, _, _, _ in requests[EXCHANGES:]]
+    return Exchanged({'images': answers[:EXCHANGES], 'echoes': answers[EXCHANGES:]},
+                     {'images': images, 'echoes': echoes},
+                     sum(answer['sent'] for answer in report['answers']),
+                     app.output()), warnings

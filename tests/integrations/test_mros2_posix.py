@@ -12,9 +12,9 @@ is the bytes rosbags writes for the values the app put in, zero-padded to 4 as m
 mros2 v0.4.1, which mros2-posix pins, sends every message through its last publisher, so
 its app answers everything on one Image publisher; with MROS2_ROOT (mros2 v0.5.4) patched
 by genmros mros2-harden in its place, the app has two publishers, and images and String
-echoes arrive each on their own topic. Both runs change embeddedRTPS in the copy so that
-it discovers a Fast DDS 3 participant at all (testing/mros2_posix.py,
-accept_fast_dds_3_discovery).
+echoes arrive each on their own topic. Both runs apply genmros' patch
+accept-fast-dds-3-discovery to the copy's embeddedRTPS, without which it discovers no Fast
+DDS 3 participant (v0.4.1: that patch alone; v0.5.4: the whole series).
 """
 
 import os
@@ -27,12 +27,7 @@ from testing import mros2_posix
 pytestmark = pytest.mark.slow
 
 WHEELS_VENV = os.path.join(REPO, 'build', 'ros2-wheels')
-EXCHANGES = 20
-IMAGE_TOPIC, ECHO_TOPIC, REQUEST_TOPIC = 'images', 'echo', 'requests'
-IMAGE_TYPE, STRING_TYPE = 'sensor_msgs/msg/Image', 'std_msgs/msg/String'
-# Echoed strings grow by this many characters: the later ones go over mros2's 100-byte
-# buffer, and so out in fragments.
-ECHO_GROWTH = 7
+EXCHANGES = mros2_posix.EXCHANGES
 
 
 @pytest.fixture(scope='module')
@@ -49,116 +44,30 @@ def posix_checkout():
     return root
 
 
-@pytest.fixture
-def network(posix_checkout):
-    pair = mros2_posix.NetworkPair()
-    try:
-        yield pair.create()
-    finally:
-        pair.remove()
-
-
-@pytest.fixture
-def start_app(network):
-    """Starts a program in the app's namespace; stops it before the namespace goes."""
-    started = []
-
-    def start(program, log_path):
-        started.append(mros2_posix.AppProcess(program, network.app_namespace, log_path))
-        return started[-1]
-
-    yield start
-    for app in started:
-        app.stop()
-
-
 @pytest.fixture(scope='module')
 def typestore():
     from rosbags.typesys import Stores, get_typestore
     return get_typestore(Stores.ROS2_HUMBLE)
 
 
-def _requests(typestore, echo_topic, echo_type):
-    """(text, serialized String, answer topic, answer type) of the image requests,
-    then of the echo requests."""
-    string = typestore.types[STRING_TYPE]
-    texts = [('image %d' % index, IMAGE_TOPIC, 'Image') for index in range(EXCHANGES)]
-    texts += [('echo %d %s' % (index, 'x' * (ECHO_GROWTH * index)), echo_topic,
-               echo_type) for index in range(EXCHANGES)]
-    return [(text, bytes(typestore.serialize_cdr(string(data=text), STRING_TYPE)), topic,
-             type_name) for text, topic, type_name in texts]
-
-
-def _run_exchange(tmp_path, checkout, network, start_app, typestore, app_options,
-                  echo_topic, echo_type):
-    """Builds and runs the app, lets the peer ask; returns the requests, the answers'
-    bytes (None: not answered) and the peer's report."""
-    mros2_posix.write_app(checkout, WHEELS_VENV,
-                          publish=['%s:%s' % (IMAGE_TOPIC, IMAGE_TYPE)]
-                          + (['%s:%s' % (ECHO_TOPIC, STRING_TYPE)] if echo_type == 'String'
-                             else []),
-                          subscribe=['%s:%s' % (REQUEST_TOPIC, STRING_TYPE)])
-    program, warnings = mros2_posix.build_app(checkout, str(tmp_path / 'build.log'),
-                                              app_options)
+def _check(exchanged, warnings):
     assert warnings == []
-    app = start_app(program, str(tmp_path / 'app.log'))
-    requests = _requests(typestore, echo_topic, echo_type)
-    report = mros2_posix.run_peer(WHEELS_VENV, network.peer_namespace, requests,
-                                  str(tmp_path / 'ros_log'))
-    assert 'app ready' in app.output()
-    answers = [bytes.fromhex(answer['sample']) if answer else None
-               for answer in report['answers']]
-    return requests, answers, report
+    assert 'app ready' in exchanged.app_output
+    for kind in ('images', 'echoes'):
+        assert exchanged.wrong(kind) == []
+        assert exchanged.exact(kind) == EXCHANGES
+    assert max(len(image) for image in exchanged.answers['images']) > 300
+    assert max(len(echo) for echo in exchanged.answers['echoes']) > 100
+    print('requests sent: %d for %d answers' % (exchanged.requests_sent, 2 * EXCHANGES))
 
 
-def _expected_images(typestore):
-    return [mros2_posix.wire_bytes(
-        typestore, mros2_posix.requested_image(typestore, index, 'image %d' % index),
-        IMAGE_TYPE) for index in range(EXCHANGES)]
+def test_one_publisher_on_the_pinned_mros2(tmp_path, posix_checkout, typestore):
+    _check(*mros2_posix.exchange(posix_checkout, WHEELS_VENV, str(tmp_path), typestore))
 
 
-def _answered(answers, expected):
-    """How many answers are the expected bytes; asserts the others are missing."""
-    for answer, wanted in zip(answers, expected):
-        assert answer is None or answer == wanted, (answer.hex(), wanted.hex())
-    return sum(answer == wanted for answer, wanted in zip(answers, expected))
-
-
-def test_one_publisher_on_the_pinned_mros2(tmp_path, posix_checkout, network, start_app,
-                                           typestore):
-    checkout = mros2_posix.prepare_checkout(posix_checkout, str(tmp_path / 'mros2-posix'))
-    requests, answers, report = _run_exchange(tmp_path, checkout, network, start_app,
-                                              typestore, (), IMAGE_TOPIC, 'Image')
-    images, echoes = answers[:EXCHANGES], answers[EXCHANGES:]
-    assert _answered(images, _expected_images(typestore)) == EXCHANGES
-    expected_echoes = [mros2_posix.wire_bytes(
-        typestore, mros2_posix.echo_image(typestore, text), IMAGE_TYPE)
-        for text, _, _, _ in requests[EXCHANGES:]]
-    assert _answered(echoes, expected_echoes) == EXCHANGES
-    assert max(len(image) for image in images) > 300
-    assert max(len(echo) for echo in echoes) > 100
-    print('requests sent: %d for %d answers; answers no request waited for: %d'
-          % (sum(answer['sent'] for answer in report['answers']), 2 * EXCHANGES,
-             len(report['unmatched'])))
-
-
-def test_two_publishers_on_patched_mros2(tmp_path, posix_checkout, network, start_app,
-                                         typestore):
+def test_two_publishers_on_patched_mros2(tmp_path, posix_checkout, typestore):
     mros2_root = os.environ.get('MROS2_ROOT')
     if not mros2_root or not os.path.isfile(os.path.join(mros2_root, 'src', 'mros2.cpp')):
         pytest.skip('MROS2_ROOT is not set to an mros2 v0.5.4 checkout')
-    checkout = mros2_posix.prepare_checkout(posix_checkout, str(tmp_path / 'mros2-posix'),
-                                            mros2_root)
-    requests, answers, report = _run_exchange(
-        tmp_path, checkout, network, start_app, typestore,
-        ('APP_ECHO_PUBLISHER', 'APP_SETS_RTPS_ADDRESS'), ECHO_TOPIC, 'String')
-    images, echoes = answers[:EXCHANGES], answers[EXCHANGES:]
-    assert _answered(images, _expected_images(typestore)) == EXCHANGES
-    string = typestore.types[STRING_TYPE]
-    expected_echoes = [mros2_posix.wire_bytes(typestore, string(data=text), STRING_TYPE)
-                       for text, _, _, _ in requests[EXCHANGES:]]
-    assert _answered(echoes, expected_echoes) == EXCHANGES
-    assert max(len(echo) for echo in echoes) > 100
-    print('requests sent: %d for %d answers; answers no request waited for: %d'
-          % (sum(answer['sent'] for answer in report['answers']), 2 * EXCHANGES,
-             len(report['unmatched'])))
+    _check(*mros2_posix.exchange(posix_checkout, WHEELS_VENV, str(tmp_path), typestore,
+                                 mros2_root))
