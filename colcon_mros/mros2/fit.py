@@ -139,7 +139,6 @@ class Fit:
         return '\n'.join(lines) + '\n'
 
 
-
 def receive_limit(text):
     """The receive limit as given: a number (bytes), or FILE:NAME, a
     setting of the port's headers (a #define or a constant)."""

@@ -55,6 +55,6 @@ def templates_header(endpoints):
     subscribe = [CppMessageName(m) for m in messages(endpoints, SUBSCRIBE)]
     return {TEMPLATES_HEADER: _render(
         'templates.hpp.em', headers=sorted({name.header for name in publish + subscribe}),
-        requirements=[r for r in requirements(endpoints) if r.cpp_needed is not None],
+        requirements=requirements(endpoints),
         stack_margin_macro=READER_STACK_MARGIN_MACRO, stack_margin=READER_STACK_MARGIN,
         publish=publish, subscribe=subscribe)}

@@ -52,22 +52,20 @@ READER_STACK_MARGIN_MACRO = 'MROS2_READER_STACK_MARGIN'
 
 class Requirement:
     """One need: subject (a type, a topic, the firmware) needs setting
-    >= needed, because of what. cpp_needed is the need as a C++ constant
-    expression for templates.hpp's static_assert (None: checked here only);
-    needed is None where only the target's compiler can count it."""
+    >= needed, because of what. needed is None where only the target's
+    compiler can count it; cpp_needed is the need as templates.hpp's
+    static_assert spells it (by default, needed)."""
 
     def __init__(self, setting, subject, what, needed, cpp_needed=None):
         self.setting = setting
         self.subject = subject
         self.what = what
         self.needed = needed
-        self.cpp_needed = cpp_needed if cpp_needed is not None else (
-            None if needed is None else str(needed))
-
+        self.cpp_needed = cpp_needed or str(needed)
         # The static_assert's message: the misfit's line without the file
         # and the value the setting has.
         self.assertion_message = '%s: %s needs rtps::Config::%s >= %s (%s)' % (
-            subject, what, setting, needed if needed is not None else cpp_needed, CONFIG_HEADER)
+            subject, what, setting, self.cpp_needed, CONFIG_HEADER)
 
 
 def name_requirements(endpoints):
