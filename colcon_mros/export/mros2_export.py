@@ -6,7 +6,10 @@ installed packages, every type they contain, the support headers and, for
 the types the firmware publishes and subscribes to, mros2's templates.hpp,
 switched into the output directory in one step
 (:func:`colcon_mros.core.output.write_tree`): a bad definition leaves it
-as it was, and headers of types no longer exported leave it.
+as it was, and headers of types no longer exported leave it. Given the
+board (:class:`Board`: its rtps/config.h, receive limit, mros2 checkout),
+the fit check (:mod:`colcon_mros.mros2.fit`) runs first and a misfit writes
+nothing; :func:`firmware_fit` (``genmros mros2-fit``) runs it alone.
 :func:`render_types` also serves the rosidl generator
 (:mod:`colcon_mros.integrations.rosidl_generator`).
 """
@@ -14,9 +17,9 @@ as it was, and headers of types no longer exported leave it.
 import os
 
 from colcon_mros.core.output import is_generated, write_tree
+from colcon_mros.core.settings import read_settings
 from colcon_mros.core.storage import storage_for
 from colcon_mros.errors import GenmrosError
-from colcon_mros.core.settings import read_settings
 from colcon_mros.mros2 import render
 from colcon_mros.mros2.endpoints import PUBLISH, SUBSCRIBE, Endpoint, split_endpoint
 from colcon_mros.mros2.fit import Fit, PublisherWriter, receive_limit
