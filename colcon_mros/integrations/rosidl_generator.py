@@ -12,9 +12,11 @@ and the output directory. Exactly the listed interfaces get a header,
 line, as mros2 has none. genmros' own errors name the ``.msg`` or ``.srv``
 the user wrote, with its line.
 
-``--generator-files`` prints the files the headers are made from besides
-the interfaces (this module's code, templates and static headers): the
-rule's dependencies, so that a new genmros regenerates them.
+With ``--dependency-file FILE --dependency-target OUTPUT`` it also writes
+a make depfile (CMake's ``DEPFILE``): OUTPUT depends on the files the
+headers are made from besides the interfaces (the modules it imported,
+its templates and static headers), so that a new genmros regenerates them,
+and no program runs at configure time to ask for that list.
 """
 
 import argparse
@@ -120,22 +122,37 @@ def generator_files():
     return modules + data
 
 
+def _make_path(path):
+    """A path as a make rule spells it: spaces escaped."""
+    return path.replace(' ', '\\ ')
+
+
+def write_dependency_file(path, target):
+    """The depfile at path: target depends on generator_files()."""
+    text = '%s: %s\n' % (_make_path(target), ' \\\n  '.join(
+        _make_path(name) for name in generator_files()))
+    write_files(os.path.dirname(os.path.abspath(path)), {os.path.basename(path): text})
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(
         prog=PROGRAM, description='Write the mros2 headers of the interfaces a rosidl '
                                   'arguments file lists (what rosidl_generate_interfaces() runs).')
-    what = parser.add_mutually_exclusive_group(required=True)
-    what.add_argument('--generator-arguments-file', metavar='FILE',
-                      help='the arguments file rosidl_write_generator_arguments() wrote')
-    what.add_argument('--generator-files', action='store_true',
-                      help="print the generator's own files, the rule's dependencies")
+    parser.add_argument('--generator-arguments-file', metavar='FILE', required=True,
+                        help='the arguments file rosidl_write_generator_arguments() wrote')
+    parser.add_argument('--dependency-file', metavar='FILE',
+                        help="also write a make depfile: the rule's output depends on the "
+                             "generator's own files")
+    parser.add_argument('--dependency-target', metavar='OUTPUT',
+                        help="the rule's output the depfile names (with --dependency-file)")
     options = parser.parse_args(argv)
-    if options.generator_files:
-        print('\n'.join(generator_files()))
-        return 0
+    if bool(options.dependency_file) != bool(options.dependency_target):
+        parser.error('--dependency-file and --dependency-target go together')
     try:
         require_rosidl()
         _, notices = generate(_read_arguments(options.generator_arguments_file))
+        if options.dependency_file:
+            write_dependency_file(options.dependency_file, options.dependency_target)
     except GenmrosError as error:
         print('genmros: error: %s' % error, file=sys.stderr)
         return 1

@@ -17,6 +17,7 @@ import os
 import re
 import shutil
 import subprocess
+import time
 
 import pytest
 
@@ -67,8 +68,7 @@ class Workspace:
         return result
 
     def genmros_runs(self):
-        """The generator's command lines the builds ran so far (configure's
-        --generator-files included)."""
+        """The generator's command lines the builds ran so far."""
         if not os.path.exists(self.genmros_log):
             return []
         with open(self.genmros_log) as stream:
@@ -106,7 +106,7 @@ def test_build_used_the_checkouts_generator(workspace):
     runs = workspace.generator_runs()
     assert len(runs) == 2, runs
     # rosidl's contract: one arguments file per package, as rosidl_generator_cpp's.
-    with open(runs[1].split(' ', 1)[1]) as stream:
+    with open(runs[1].split()[1]) as stream:
         arguments = json.load(stream)
     assert arguments['package_name'] == 'mros2_test_msgs'
     assert sorted(entry.rpartition(':')[2] for entry in arguments['idl_tuples']) == [
@@ -117,9 +117,11 @@ def test_build_used_the_checkouts_generator(workspace):
     assert 'mros2_base_msgs:%s' % os.path.join(workspace.install, 'share', 'mros2_base_msgs',
                                                'msg', 'Stamp.idl') \
         in arguments['ros_interface_dependencies']
-    # The templates are dependencies of the rule.
-    assert os.path.join(os.path.dirname(render.__file__), 'templates', 'message_class.hpp.em') \
-        in arguments['target_dependencies']
+    # The templates are dependencies of the rule, through the depfile the program writes.
+    with open(os.path.join(workspace.root, 'build', 'mros2_test_msgs',
+                           'rosidl_generator_mros2__mros2_test_msgs.stamp.d')) as stream:
+        assert os.path.join(os.path.dirname(render.__file__), 'templates',
+                            'message_class.hpp.em') in stream.read()
 
 
 def test_mros2_headers_are_installed(workspace):
@@ -182,6 +184,21 @@ def test_unchanged_rebuild_runs_no_genmros(workspace):
     before = len(workspace.genmros_runs())
     workspace.colcon_build()
     assert len(workspace.genmros_runs()) == before
+
+
+def test_a_changed_generator_file_regenerates_every_package(workspace):
+    """The depfile the generator writes names its own files: a template
+    newer than the headers regenerates them (its time is put back after)."""
+    template = os.path.join(os.path.dirname(render.__file__), 'templates',
+                            'message_class.hpp.em')
+    before = len(workspace.generator_runs())
+    times = os.stat(template)
+    os.utime(template, (times.st_atime, time.time() + 60))
+    try:
+        workspace.colcon_build()
+    finally:
+        os.utime(template, ns=(times.st_atime_ns, times.st_mtime_ns))
+    assert len(workspace.generator_runs()) == before + 2
 
 
 def test_edited_message_is_regenerated(workspace):

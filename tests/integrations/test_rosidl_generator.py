@@ -132,9 +132,19 @@ def test_a_missing_arguments_file_is_one_line(tmp_path):
                              'file or directory\n' % missing)
 
 
-def test_the_generator_files_are_its_code_templates_and_static_headers():
-    result = _run('--generator-files')
-    files = result.stdout.splitlines()
+def test_the_depfile_names_its_code_templates_and_static_headers(tmp_path):
+    base = str(tmp_path / 'adapter')
+    _write(os.path.join(base, 'msg', 'Ping.idl'), PING_IDL)
+    depfile, stamp = str(tmp_path / 'out dir' / 'rule.stamp.d'), str(tmp_path / 'rule.stamp')
+    result = _run('--generator-arguments-file', _arguments_file(
+        tmp_path, package_name='demo', output_dir=str(tmp_path / 'out'),
+        idl_tuples=['%s:msg/Ping.idl' % base]), '--dependency-file', depfile,
+        '--dependency-target', stamp)
+    assert result.returncode == 0, result.stderr
+    with open(depfile) as stream:
+        target, _, dependencies = stream.read().partition(': ')
+    assert target == stamp
+    files = [name.strip() for name in dependencies.split(' \\\n')]
     package = os.path.join(REPO, 'colcon_mros')
     for relative in ('mros2/templates/message_class.hpp.em', 'mros2/support/mros2_message_wire.hpp',
                      'core/support/mros_message_containers.h', 'ros2/model.py',
@@ -142,6 +152,13 @@ def test_the_generator_files_are_its_code_templates_and_static_headers():
         assert os.path.join(package, relative) in files
     assert all(os.path.isfile(path) for path in files)
     assert not [path for path in files if '/mros_v1/' in path or '/ros1/' in path]
+
+
+def test_a_depfile_needs_its_target(tmp_path):
+    result = _run('--generator-arguments-file', 'arguments.json', '--dependency-file', 'x.d')
+    assert result.returncode == 2
+    assert result.stderr.splitlines()[-1] == ('rosidl_generator_mros2: error: --dependency-file '
+                                              'and --dependency-target go together')
 
 
 def _without(blocked, path, *arguments):

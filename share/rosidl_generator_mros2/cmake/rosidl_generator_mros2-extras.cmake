@@ -23,16 +23,3 @@ if(NOT rosidl_generator_mros2_BIN)
   message(FATAL_ERROR "rosidl_generator_mros2: its program was not found; install colcon-mros "
     "(scripts/setup.sh) or set rosidl_generator_mros2_BIN")
 endif()
-# The files the headers are made from besides the interfaces (its code,
-# templates and static headers), as rosidl_generator_cpp's GENERATOR_FILES.
-execute_process(
-  COMMAND "${rosidl_generator_mros2_BIN}" --generator-files
-  OUTPUT_VARIABLE rosidl_generator_mros2_GENERATOR_FILES
-  RESULT_VARIABLE _mros2_result ERROR_VARIABLE _mros2_error
-  OUTPUT_STRIP_TRAILING_WHITESPACE)
-if(NOT _mros2_result EQUAL 0)
-  message(FATAL_ERROR "rosidl_generator_mros2: '${rosidl_generator_mros2_BIN} --generator-files' "
-    "failed: ${_mros2_error}")
-endif()
-string(REPLACE "\n" ";" rosidl_generator_mros2_GENERATOR_FILES
-  "${rosidl_generator_mros2_GENERATOR_FILES}")

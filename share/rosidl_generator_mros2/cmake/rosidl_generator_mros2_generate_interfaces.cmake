@@ -55,7 +55,6 @@ endif()
 
 set(_mros2_target_dependencies
   "${rosidl_generator_mros2_BIN}"
-  ${rosidl_generator_mros2_GENERATOR_FILES}
   ${rosidl_generate_interfaces_ABS_IDL_FILES}
   ${_mros2_dependency_files})
 
@@ -70,13 +69,29 @@ rosidl_write_generator_arguments(
   TARGET_DEPENDENCIES ${_mros2_target_dependencies})
 
 # The program leaves unchanged headers as they are (what includes them is
-# not rebuilt for nothing); the stamp marks the rule as done.
+# not rebuilt for nothing); the stamp marks the rule as done. The program
+# also writes a depfile naming its own files (code, templates, static
+# headers, as rosidl_generator_cpp's GENERATOR_FILES), so a new genmros
+# regenerates the headers without a program run at configure time (CMake
+# takes a DEPFILE with Makefiles from 3.20; an older one depends on the
+# program alone).
+set(_mros2_depfile "${_mros2_stamp}.d")
+if(CMAKE_VERSION VERSION_LESS 3.20)
+  set(_mros2_depfile_options "")
+  set(_mros2_depfile_arguments "")
+else()
+  set(_mros2_depfile_options DEPFILE "${_mros2_depfile}")
+  set(_mros2_depfile_arguments
+    --dependency-file "${_mros2_depfile}" --dependency-target "${_mros2_stamp}")
+endif()
 add_custom_command(
   OUTPUT "${_mros2_stamp}"
   BYPRODUCTS ${_mros2_headers}
   COMMAND "${rosidl_generator_mros2_BIN}" --generator-arguments-file "${_mros2_arguments_file}"
+    ${_mros2_depfile_arguments}
   COMMAND "${CMAKE_COMMAND}" -E touch "${_mros2_stamp}"
   DEPENDS ${_mros2_target_dependencies} "${_mros2_arguments_file}"
+  ${_mros2_depfile_options}
   COMMENT "Generating mros2 headers for ROS interfaces"
   VERBATIM)
 add_custom_target(${rosidl_generate_interfaces_TARGET}__mros2 DEPENDS "${_mros2_stamp}")
