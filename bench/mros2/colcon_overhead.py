@@ -3,9 +3,13 @@
 
     /usr/bin/python3 bench/mros2/colcon_overhead.py [--runs 2] [--rebuilds 6] [--repeats 5]
 
-Two workspaces, built with Debian's colcon and rosidl: test_ws_ros2, and
-ROS 2's test interface files (Debian's ros2-test-interface-files: 12
-messages, 3 services) as one interface package. Each in two copies: with the
+Three builds with Debian's colcon: test_ws_ros2 and ROS 2's test interface
+files (Debian's ros2-test-interface-files: 12 messages, 3 services) as one
+interface package, both with Debian's rosidl (rosidl_adapter and
+rosidl_generator_cpp, nothing compiled); and test_ws_ros2 with the ROS 2
+wheels' rosidl_default_generators (build/ros2-wheels: C, C++, Python and
+their type support, compiled), as a ROS 2 distribution builds it. Each in
+two copies: with the
 mros2 generator (find_package(rosidl_generator_mros2)) and without it (that
 line made find_package(rosidl_cmake), which on Debian, where no
 rosidl_default_generators pulls it in, defines rosidl_generate_interfaces()). Per workspace, --runs rounds of a clean colcon build of each
@@ -66,7 +70,7 @@ INTERFACES_PACKAGE = '''<?xml version="1.0"?>
 </package>
 '''
 # The line of CMake's build.make that runs a generator over its arguments file.
-GENERATOR_COMMAND = re.compile(r'^\t(.*--generator-arguments-file \S+)$', re.M)
+GENERATOR_COMMAND = re.compile(r'^\t(\S.*--generator-arguments-file \S+.*)$', re.M)
 
 
 def test_ws_ros2(root):
@@ -87,8 +91,25 @@ def test_interfaces(root):
         stream.write(INTERFACES_PACKAGE)
 
 
-WORKSPACES = (('test_ws_ros2', test_ws_ros2),
-              ("ROS 2's test interface files, one package", test_interfaces))
+WHEELS = os.path.join(REPO, 'build', 'ros2-wheels')
+
+
+def debian_environment(enabled):
+    return dict(os.environ, PATH='/usr/bin:/bin')
+
+
+def wheels_environment(enabled):
+    """The wheels first; with the mros2 generator, /usr too, whose ament index
+    registers it in rosidl's generator group (rosidl_default_generators)."""
+    return dict(os.environ, PATH='%s/bin:/usr/bin:/bin' % WHEELS, CMAKE_PREFIX_PATH=WHEELS,
+                AMENT_PREFIX_PATH=WHEELS + (':/usr' if enabled else ''))
+
+
+WORKSPACES = (('test_ws_ros2, Debian\'s rosidl', test_ws_ros2, debian_environment),
+              ("ROS 2's test interface files, one package, Debian's rosidl", test_interfaces,
+               debian_environment),
+              ("test_ws_ros2, the ROS 2 wheels' rosidl_default_generators", test_ws_ros2,
+               wheels_environment))
 
 
 def without_generator(root):
@@ -100,10 +121,10 @@ def without_generator(root):
             stream.write(MROS2_GENERATOR_LINE.sub('find_package(rosidl_cmake REQUIRED)', text))
 
 
-def timed_build(workspace, wrapper):
+def timed_build(workspace, wrapper, environment):
     """(wall seconds, CPU seconds, generator processes, their CPU seconds)."""
     log = os.path.join(workspace, 'generator-runs.log')
-    env = dict(os.environ, PATH='/usr/bin:/bin', GENMROS_BENCH_LOG=log)
+    env = dict(environment, GENMROS_BENCH_LOG=log)
     command = ['colcon', 'build', '--executor', 'parallel', '--parallel-workers', '2',
                '--cmake-args', '-Drosidl_generator_mros2_BIN=%s' % wrapper]
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -118,8 +139,9 @@ def timed_build(workspace, wrapper):
     return (wall, cpu) + genmros_runs(log)
 
 
-def measure(copies, runs, rebuilds, wrapper):
-    """{(with generator, 'clean'|'rebuild'): [timed_build(), ...]}."""
+def measure(copies, runs, rebuilds, wrapper, environment):
+    """{(with generator, 'clean'|'rebuild'): [timed_build(), ...]}; environment(with
+    generator) is the build's environment."""
     samples = {}
     for round_number in range(runs):
         order = (True, False) if round_number % 2 == 0 else (False, True)
@@ -127,21 +149,21 @@ def measure(copies, runs, rebuilds, wrapper):
             for space in ('build', 'install', 'log'):
                 shutil.rmtree(os.path.join(copies[enabled], space), ignore_errors=True)
             samples.setdefault((enabled, 'clean'), []).append(
-                timed_build(copies[enabled], wrapper))
+                timed_build(copies[enabled], wrapper, environment(enabled)))
         for _ in range(rebuilds):
             for enabled in order:
                 samples.setdefault((enabled, 'rebuild'), []).append(
-                    timed_build(copies[enabled], wrapper))
+                    timed_build(copies[enabled], wrapper, environment(enabled)))
     return samples
 
 
-def process_cpu(command, repeats):
+def process_cpu(command, repeats, environment):
     """Median CPU seconds of one run of command (a shell line from build.make)."""
     seconds = []
     for _ in range(repeats):
         before = resource.getrusage(resource.RUSAGE_CHILDREN)
         subprocess.run(command, shell=True, check=True, stdout=subprocess.DEVNULL,
-                       env=dict(os.environ, PATH='/usr/bin:/bin'))
+                       env=environment)
         after = resource.getrusage(resource.RUSAGE_CHILDREN)
         seconds.append((after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime))
     return statistics.median(seconds)
@@ -181,14 +203,17 @@ def main():
             stream.write(WRAPPER.format(genmros=shutil.which('rosidl_generator_mros2',
                                                              path='/usr/bin')))
         os.chmod(wrapper, 0o755)
-        for name, make in WORKSPACES:
+        for number, (name, make, environment) in enumerate(WORKSPACES):
+            if environment is wheels_environment and not os.path.isdir(WHEELS):
+                print('no %s (scripts/setup.sh --tests): %s left out' % (WHEELS, name))
+                continue
             copies = {}
             for enabled in (True, False):
-                copies[enabled] = os.path.join(scratch, '%s-%s' % (make.__name__, enabled))
+                copies[enabled] = os.path.join(scratch, '%d-%s' % (number, enabled))
                 make(copies[enabled])
                 if not enabled:
                     without_generator(copies[enabled])
-            samples = measure(copies, options.runs, options.rebuilds, wrapper)
+            samples = measure(copies, options.runs, options.rebuilds, wrapper, environment)
             for kind in ('clean', 'rebuild'):
                 with_, without = samples[(True, kind)], samples[(False, kind)]
                 rows.append('| %s, %s | %.2f s | %.2f s | %.3fx | %.2f s | %.2f s | %.3fx | '
@@ -202,10 +227,11 @@ def main():
             for package in sorted(os.listdir(os.path.join(copies[True], 'build'))):
                 commands = generator_commands(copies[True], package)
                 if set(commands) == {'mros2', 'rosidl_generator_cpp'}:
-                    cpp = process_cpu(commands['rosidl_generator_cpp'], options.repeats)
-                    ours = process_cpu(commands['mros2'], options.repeats)
-                    generators.append('| %s | %.3f s | %.3f s | %.2fx |'
-                                      % (package, cpp, ours, ours / cpp))
+                    cpp = process_cpu(commands['rosidl_generator_cpp'], options.repeats,
+                                      environment(True))
+                    ours = process_cpu(commands['mros2'], options.repeats, environment(True))
+                    generators.append('| %s (%s) | %.3f s | %.3f s | %.2fx |'
+                                      % (package, name.split(', ')[-1], cpp, ours, ours / cpp))
     print('colcon build with the mros2 generator against without it (medians of %d clean '
           'builds and %d no-change rebuilds of each; ratio: with / without)'
           % (options.runs, options.runs * options.rebuilds))
