@@ -20,9 +20,11 @@ included, twice, then times one copyToBuf and all the copyToFragBuf calls
 of one publication (the median of --rounds loops of about --seconds; a call
 of --seconds or more is timed once). Columns: the image's bytes; both
 times; their ratio; the ns each fragment costs beyond copyToBuf (all
-fragments minus copyToBuf, over the calls); the bytes of the message's
-fragment cursor (mros2_wire::FragmentCursor: 4 per nesting level plus 4),
-and sizeof the message.
+fragments minus copyToBuf, over the calls); the bytes that keep where the
+last fragment stopped (4 per nesting level and 4: idxSerialized of the
+message and of a nested message per level, and cntSub, counters every
+mros2 message has anyway), and sizeof the message (before and after with
+--baseline: the state takes no room of its own).
 
 --baseline REV also exports the types with genmros as it is at git
 revision REV (e.g. main) and times that build beside, in the same run.
@@ -100,15 +102,21 @@ def _baseline(revision, root):
     return target
 
 
-def _cursor_bytes(workspace):
-    """sizeof(mros2_wire::FragmentCursor<depth>) of each type: 4 per nesting level and 4."""
+def _nesting_depth(message):
+    """How deep messages nest in message, itself included."""
+    return 1 + max((_nesting_depth(member.message) for member in message.members
+                    if member.element == 'message'), default=0)
+
+
+def _state_bytes(workspace):
+    """The bytes that keep where a fragment stopped, per type: idxSerialized
+    of the message and of the nested message at each level, and cntSub."""
     sys.path.insert(0, REPO)
     from colcon_mros.core.storage import HeapStorage
-    from colcon_mros.mros2.cpp import nesting_depth
     from colcon_mros.ros2.interfaces import all_packages
     from colcon_mros.ros2.model import ModelBuilder
     builder = ModelBuilder(all_packages([workspace], []), HeapStorage())
-    return {name: 4 * (nesting_depth(builder.message('frag_bench/msg/' + name)) + 1)
+    return {name: 4 * (_nesting_depth(builder.message('frag_bench/msg/' + name)) + 1)
             for name in TYPES}
 
 
@@ -149,13 +157,13 @@ def _us(ns):
     return '%.0f' % us if us >= 100 else '%.2f' % us if us < 10 else '%.1f' % us
 
 
-def _print_times(title, rows, cursor, args, baseline_rows=None):
+def _print_times(title, rows, state, args, baseline_rows=None):
     print('\n' + title)
     header = ['type', 'KB', 'image bytes']
     if baseline_rows:
         header += ['before: copyToBuf µs', 'before: all fragments µs', 'before: ratio']
     header += ['copyToBuf µs', 'all fragments µs', 'ratio', 'fragments',
-               'ns per fragment beyond copyToBuf', 'cursor bytes', 'sizeof']
+               'ns per fragment beyond copyToBuf', 'state bytes', 'sizeof']
     print('| ' + ' | '.join(header) + ' |')
     print('|---|' + '---:|' * (len(header) - 1))
     for name in TYPES:
@@ -167,7 +175,7 @@ def _print_times(title, rows, cursor, args, baseline_rows=None):
                 cells += [_us(b_whole), _us(b_fragments), '%.0fx' % (b_fragments / b_whole)]
                 size_of = '%d (before %d)' % (size_of, b_size_of)
             cells += [_us(whole), _us(fragments), '%.1fx' % (fragments / whole), str(calls),
-                      '%.1f' % ((fragments - whole) / calls), str(cursor[name]), str(size_of)]
+                      '%.1f' % ((fragments - whole) / calls), str(state[name]), str(size_of)]
             print('| ' + ' | '.join(cells) + ' |')
 
 
@@ -197,7 +205,7 @@ def main():
         workspace = _workspace(work)
         include_dir = os.path.join(work, 'include')
         _export(REPO, workspace, include_dir)
-        cursor = _cursor_bytes(workspace)
+        state = _state_bytes(workspace)
         command = _build(include_dir, os.path.join(work, 'fragment_speed'), args.qemu_arm)
         baseline_command = None
         if args.baseline:
@@ -214,7 +222,7 @@ def main():
                      'beside one copyToBuf; %s, median of %d loops of ~%.2f s%s'
                      % (target, args.rounds, args.seconds,
                         '; before: genmros at %s' % args.baseline if args.baseline else ''),
-                     rows, cursor, args, baseline_rows)
+                     rows, state, args, baseline_rows)
 
         if args.callgrind:
             print('\nInstructions under callgrind (%s): one copyToBuf, one publication in '

@@ -24,7 +24,7 @@ NUMBER_TYPES = {
     'double': 'double',
 }
 WIRE_HEADER = 'mros2_message_wire.hpp'
-WIRE_VERSION = 2
+WIRE_VERSION = 1
 # The static headers an mros2 export holds besides the messages.
 SUPPORT_HEADERS = (WIRE_HEADER, 'mros_message_containers.h')
 
@@ -145,21 +145,11 @@ class CppMessageName:
         self.header = '%s/%s/%s.hpp' % (message.package, message.kind, stem)
 
 
-def nesting_depth(message):
-    """How deep messages nest in message, itself included: 1 for one of
-    numbers, strings and containers of them. mros2_wire's fragment walk
-    goes a level deeper into each nested message, never into a container,
-    and keeps one item count per level."""
-    return 1 + max((nesting_depth(member.message) for member in message.members
-                    if member.element == 'message'), default=0)
-
-
 class CppMessage(CppMessageName):
     """A message as the mros2 template reads it."""
 
     def __init__(self, message):
         super().__init__(message)
-        self.nesting_depth = nesting_depth(message)
         self.comment = comment_lines(message.comment)
         self.source = _source(message)
         self.summary = 'mros2 message %s, DDS type %s.' % (self.cpp_name, self.dds_type_name)

@@ -31,7 +31,7 @@
 #include "mros_message_containers.h"
 
 // The version of this header; every generated header checks it.
-#define MROS2_MESSAGE_WIRE_VERSION 2
+#define MROS2_MESSAGE_WIRE_VERSION 1
 
 // The most a sample of unknown size is read as (copyFromBuf without a size):
 // the largest UDP payload. A firmware may set a smaller one.
@@ -175,9 +175,10 @@ template <class Sink> class Writer {
     position_ += 4 * length;
   }
 
-  // The walk's hooks, which a Writer needs not: every item is written.
-  bool enter() { return true; }
-  void leave() {}
+  // The walk's hooks (see FragmentWriter): a Writer writes every item.
+  struct Level {};
+  bool enter(uint32_t&, Level&) { return true; }
+  void leave(Level) {}
   uint32_t first_item(uint32_t) { return 0; }
   bool writing() const { return true; }
 
@@ -210,32 +211,29 @@ template <class Sink> class Writer {
   }
 };
 
-// Where a fragmented publication stopped: per nesting depth, the items
-// written before the one it stopped in (path[0] counts the top message's
-// items), and where that item, its padding first, starts in the stream.
-// A message keeps one; its size is its type's nesting depth plus one
-// uint32, whatever the message holds.
-template <size_t Depth> struct FragmentCursor {
-  uint32_t path[Depth];
-  uint32_t item_start;
-};
-
 // Writes the bytes of the stream in a WindowSink's window, walking only
-// what it must: resuming, it skips every item before the cursor's path
-// without looking inside (a run of elements in one step, a run of numbers
-// from its first element in the window), starts the cursor's item at its
-// saved position, since XCDR aligns to the stream's start, and writes from
-// there; it stops after the first item with a byte past the window and
-// leaves the cursor at that item. An item that ends exactly at the window's
-// end does not stop the walk, so the last fragment is known to be the last.
+// what it must. Where the last window ended, the walk stopped in some item;
+// the messages around it keep the path there: each its count of its items
+// written before the current one (the one it stopped in, or that holds it),
+// and the top message also where that item, its padding first, starts.
+// Resuming, the walk skips every item before the path without looking
+// inside (a run of elements in one step), starts the path's item at its
+// saved position, as XCDR aligns to the stream's start, and writes from
+// there (a run of numbers from its first element in the window); it stops
+// after the first item with a byte past the window, so an item that ends
+// exactly at the window's end does not stop it and the last fragment is
+// known to be the last.
 class FragmentWriter : public Writer<WindowSink> {
  public:
-  // path and item_start: a FragmentCursor's; resume: whether to continue
-  // where it points, else to start at the image's first byte.
-  FragmentWriter(WindowSink& sink, uint32_t* path, uint32_t& item_start, bool resume)
-      : Writer<WindowSink>(sink), path_(path), item_start_(item_start), depth_(0),
-        skipped_(0), resuming_(resume), stopped_(false) {
-    if (!resume) path_[0] = 0;
+  // A message's count, kept here while a nested message's counts its items.
+  typedef uint32_t* Level;
+
+  // items and item_start: the top message's count and start; resume:
+  // whether to continue where they point, else from the image's first byte.
+  FragmentWriter(WindowSink& sink, uint32_t& items, uint32_t& item_start, bool resume)
+      : Writer<WindowSink>(sink), items_(&items), item_start_(item_start), skipped_(0),
+        resuming_(resume), stopped_(false) {
+    if (!resume) items = 0;
   }
 
   template <class Number> void number(Number value) {
@@ -259,40 +257,43 @@ class FragmentWriter : public Writer<WindowSink> {
     end_leaf();
   }
 
-  // A nested message: false if the walk does not go into it.
-  bool enter() {
+  // A nested message, which counts its items in items: false if the walk
+  // does not go into it; else outer keeps the enclosing message's count.
+  bool enter(uint32_t& items, Level& outer) {
     if (!reaches_item()) return false;
-    ++depth_;
+    outer = items_;
+    items_ = &items;
     if (resuming_)
       skipped_ = 0;
     else
-      path_[depth_] = 0;
+      items = 0;
     return true;
   }
-  void leave() {
+  void leave(Level outer) {
     if (stopped_) return;
-    --depth_;
-    ++path_[depth_];
+    items_ = outer;
+    ++*items_;
   }
   // Of count items in a row (elements), the first to walk: resuming, those
-  // before the cursor's path are passed at once.
+  // before the path are passed at once.
   uint32_t first_item(uint32_t count) {
     if (!resuming_) return 0;
-    uint32_t before = path_[depth_] - skipped_;
+    uint32_t before = *items_ - skipped_;
     if (before > count) before = count;
     skipped_ += before;
     return before;
   }
   bool writing() const { return !stopped_; }
 
-  // After the walk: whether it wrote the image's last byte, and how many
-  // bytes of the window it filled. A walk that resumed past every item (the
-  // cursor left at the end) ends where the image ends.
+  // After the walk: whether it wrote the image's last byte. A walk that
+  // resumed past every item (the path left at the end) ends where the
+  // image ends, which the top message keeps as its item's start.
   bool finish() {
     if (resuming_) position_ = item_start_;
     if (!stopped_) item_start_ = position_;
     return !stopped_;
   }
+  // The bytes of the window written.
   uint32_t written() const {
     uint32_t end = position_ < sink_.end() ? position_ : sink_.end();
     return end > sink_.start() ? end - sink_.start() : 0;
@@ -300,10 +301,10 @@ class FragmentWriter : public Writer<WindowSink> {
 
  private:
   // Whether the walk goes into the next item: not when it lies before the
-  // cursor's path (it is counted as passed) or after the stop.
+  // path (it is counted as passed) or after the stop.
   bool reaches_item() {
     if (stopped_) return false;
-    if (!resuming_ || skipped_ == path_[depth_]) return true;
+    if (!resuming_ || skipped_ == *items_) return true;
     ++skipped_;
     return false;
   }
@@ -321,12 +322,11 @@ class FragmentWriter : public Writer<WindowSink> {
     if (position_ > sink_.end())
       stopped_ = true;
     else
-      ++path_[depth_];
+      ++*items_;
   }
 
-  uint32_t* path_;
+  uint32_t* items_;
   uint32_t& item_start_;
-  uint32_t depth_;
   uint32_t skipped_;
   bool resuming_;
   bool stopped_;
@@ -439,11 +439,13 @@ template <class W> inline void write(W& writer, const std::u16string& text) {
   writer.wide_chars(text.data(), static_cast<uint32_t>(text.size()));
 }
 
-// A nested message writes itself, one level deeper in the walk.
+// A nested message writes itself, one level deeper in the walk, counting
+// its items in its idxSerialized; the enclosing message's count waits here.
 template <class W, class Message> inline void write(W& writer, const Message& message) {
-  if (!writer.enter()) return;
+  typename W::Level outer;
+  if (!writer.enter(message.idxSerialized, outer)) return;
   message.writeTo(writer);
-  writer.leave();
+  writer.leave(outer);
 }
 
 // Elements: numbers at once (IsNumber), anything else one by one, from
@@ -571,10 +573,7 @@ template <class T, size_t N> inline bool read(Reader& reader, mros::bounded_vect
 }
 
 // What mros2's runtime (src/mros2.cpp, v0.5.4) calls on a message, for
-// every message class Derived, which supplies writeTo and readFrom;
-// NestingDepth is how deep its messages nest, itself included (1 for a
-// message of numbers, strings and containers of them): the length of the
-// path its FragmentCursor keeps.
+// every message class Derived, which supplies writeTo and readFrom.
 //
 // Publishing: a message of up to mros2's buffer goes out through
 // copyToBuf, memAlign and getTotalSize; a larger one through calls of
@@ -583,12 +582,16 @@ template <class T, size_t N> inline bool read(Reader& reader, mros::bounded_vect
 // cntPub counts the image's bytes written so far; while it is not 0, the
 // next copyToFragBuf continues where the last copyToFragBuf (or copyToBuf,
 // which wrote all) stopped, so a publication in n fragments costs about one
-// copyToBuf and n short walks, not n whole ones.
-template <class Derived, size_t NestingDepth> class Message {
+// copyToBuf and n short walks, not n whole ones. Where it stopped is kept
+// in the fields mros2's own message classes kept for fragmenting:
+// idxSerialized of the message and of each nested message around the stop
+// (a FragmentWriter's counts) and cntSub (where the item it stopped in
+// starts): no room of its own, 4 bytes per nesting level and 4 in all.
+template <class Derived> class Message {
  public:
   typedef std::pair<bool, uint32_t> FragCopyReturnType;
 
-  Message() : cntPub(0), cntSub(0), idxSerialized(0), fragment_cursor_() {}
+  Message() : cntPub(0), cntSub(0), idxSerialized(0) {}
 
   // The whole image at addrPtr (the byte after the encapsulation header).
   void copyToBuf(uint8_t* addrPtr) {
@@ -597,8 +600,8 @@ template <class Derived, size_t NestingDepth> class Message {
     self().writeTo(writer);
     cntPub = writer.position();
     // All is written: a copyToFragBuf before the count starts over writes nothing.
-    fragment_cursor_.path[0] = 0xffffffffu;  // past every item
-    fragment_cursor_.item_start = cntPub;
+    idxSerialized = 0xffffffffu;  // past every item
+    cntSub = cntPub;
   }
   // Zeros after the image up to a multiple of 4, as the runtime sends it.
   void memAlign(uint8_t* addrPtr) {
@@ -633,7 +636,7 @@ template <class Derived, size_t NestingDepth> class Message {
   // The next at most size bytes of the image at addrPtr: {all written, bytes written}.
   FragCopyReturnType copyToFragBuf(uint8_t* addrPtr, uint32_t size) {
     WindowSink sink(addrPtr, cntPub, size);
-    FragmentWriter writer(sink, fragment_cursor_.path, fragment_cursor_.item_start, cntPub != 0);
+    FragmentWriter writer(sink, idxSerialized, cntSub, cntPub != 0);
     self().writeTo(writer);
     bool all_written = writer.finish();
     uint32_t written = writer.written();
@@ -660,11 +663,10 @@ template <class Derived, size_t NestingDepth> class Message {
 
   uint32_t cntPub;
   uint32_t cntSub;
-  uint32_t idxSerialized;
+  // Written while a const message is published in fragments (see above).
+  mutable uint32_t idxSerialized;
 
  private:
-  FragmentCursor<NestingDepth> fragment_cursor_;
-
   Derived& self() { return static_cast<Derived&>(*this); }
   const Derived& self() const { return static_cast<const Derived&>(*this); }
 };

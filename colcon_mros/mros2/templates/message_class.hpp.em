@@ -2,7 +2,7 @@
 @[for line in msg.comment]@
 // @(line)
 @[end for]@
-class @(msg.name) : public mros2_wire::Message<@(msg.name), @(msg.nesting_depth)>
+class @(msg.name) : public mros2_wire::Message<@(msg.name)>
 {
 public:
 @[for constant in msg.constants]@
