@@ -78,14 +78,21 @@ class WindowSink {
       : buffer_(buffer), start_(start), end_(start + size) {}
   uint32_t start() const { return start_; }
   uint32_t end() const { return end_; }
+  // Bytes wholly inside, the common case, are copied as they come: a
+  // number's fixed count then makes the copy one store.
   void put(uint32_t position, const uint8_t* bytes, uint32_t count) {
     uint32_t first, last;
-    if (overlap(position, count, first, last))
+    if (inside(position, count))
+      memcpy(buffer_ + (position - start_), bytes, count);
+    else if (overlap(position, count, first, last))
       memcpy(buffer_ + (first - start_), bytes + (first - position), last - first);
   }
   void zeros(uint32_t position, uint32_t count) {
     uint32_t first, last;
-    if (overlap(position, count, first, last)) memset(buffer_ + (first - start_), 0, last - first);
+    if (inside(position, count))
+      memset(buffer_ + (position - start_), 0, count);
+    else if (overlap(position, count, first, last))
+      memset(buffer_ + (first - start_), 0, last - first);
   }
   void keep(uint32_t position, uint32_t element_size, uint32_t& first, uint32_t& last) const {
     uint32_t run_end = position + (last - first) * element_size;
@@ -98,6 +105,9 @@ class WindowSink {
   }
 
  private:
+  bool inside(uint32_t position, uint32_t count) const {
+    return position >= start_ && position + count <= end_;
+  }
   // [first, last): the part of [position, position + count) inside the window.
   bool overlap(uint32_t position, uint32_t count, uint32_t& first, uint32_t& last) const {
     first = position > start_ ? position : start_;
