@@ -235,7 +235,7 @@ template <class Sink> class Writer {
 // known to be the last.
 class FragmentWriter : public Writer<WindowSink> {
  public:
-  // A message's count, kept here while a nested message's counts its items.
+  // A message's count, kept here while a nested message counts its items.
   typedef uint32_t* Level;
 
   // items and item_start: the top message's count and start; resume:
@@ -673,7 +673,8 @@ template <class Derived> class Message {
 
   uint32_t cntPub;
   uint32_t cntSub;
-  // Written while a const message is published in fragments (see above).
+  // Written through const: a nested message counts its items here while the
+  // message around it goes out in fragments (see above).
   mutable uint32_t idxSerialized;
 
  private:
