@@ -2,9 +2,7 @@
 counters mros2's messages have anyway (cntSub, idxSerialized): every cut
 of every type's image comes out as copyToBuf writes it, and the count's
 contract holds (copyToBuf wrote all, resetCount starts over, even in the
-middle), on the host and on big-endian s390x; a publication in fragments
-costs about what copyToBuf costs, not a walk of the whole message per
-fragment."""
+middle), on the host and on big-endian s390x. How fast: bench/mros2/fragment_speed.py."""
 
 import random
 import subprocess
@@ -25,7 +23,6 @@ FRAGMENT_SIZES = (8, 12, 16, 20, 24, 28, 36, 60, 64)
 PROGRAM = r'''
 #include <stdio.h>
 
-#include <chrono>
 #include <vector>
 
 #include "test_interface_files/msg/multi_nested.hpp"
@@ -70,22 +67,6 @@ static Bytes fragments(UnboundedSequences& m, uint32_t size, int calls) {
 
 static void check(bool ok, const char* what) { printf("%s %s\n", ok ? "ok" : "FAILED", what); }
 
-static double publish_ns(UnboundedSequences& m, bool whole) {
-  std::vector<uint8_t> buffer(m.calcRawTotalSize());
-  auto start = std::chrono::steady_clock::now();
-  for (int i = 0; i < 20; ++i) {
-    if (whole) {
-      m.copyToBuf(buffer.data());
-      m.resetCount();
-    } else {
-      fragments(m, 64, 1 << 30);
-      m.resetCount();
-    }
-  }
-  return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start)
-      .count();
-}
-
 int main() {
   check(sizeof(mros2_wire::Message<MultiNested>) == 3 * sizeof(uint32_t),
         "where the fragments stopped takes no room beside mros2's three counters");
@@ -124,12 +105,6 @@ int main() {
     if (done.first) break;
   }
   check(nested_sent == nested_all, "MultiNested (three levels) in 3-byte fragments");
-
-  UnboundedSequences large;
-  fill(large, 4000);
-  publish_ns(large, false);
-  double ratio = publish_ns(large, false) / publish_ns(large, true);
-  printf("ratio %.1f\n", ratio);
   return 0;
 }
 '''
@@ -148,8 +123,7 @@ TARGETS = ['host', pytest.param('s390x', marks=[pytest.mark.slow, pytest.mark.ne
 
 
 @pytest.mark.parametrize('target', TARGETS)
-def test_the_count_contract_holds_and_fragments_cost_about_one_copytobuf(export, tmp_path,
-                                                                          target):
+def test_the_count_contract_holds(export, tmp_path, target):
     runner, compiler = ECHO_TARGETS[target]
     source = tmp_path / 'cursor.cpp'
     source.write_text(PROGRAM)
@@ -161,11 +135,6 @@ def test_the_count_contract_holds_and_fragments_cost_about_one_copytobuf(export,
                            check=True).stdout.splitlines()
     assert [line for line in lines if line.startswith('FAILED')] == []
     assert len([line for line in lines if line.startswith('ok')]) == 8
-    # About 140 KB in 64-byte fragments: walking the whole message again per
-    # fragment made this ratio over 1000; each fragment continuing makes it
-    # a few (the per-call overhead of 2,200 short walks). Timed on the host only.
-    ratio = float(lines[-1].split()[1])
-    assert target != 'host' or ratio < 40, lines[-1]
 
 
 def _samples(corpus, fastcdr_program, seed):
