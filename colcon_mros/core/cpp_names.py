@@ -12,7 +12,6 @@ rules here are the same for every back end:
   it is refused with the file and line that declare it.
 """
 
-import dataclasses
 import re
 
 from colcon_mros.core.c_names import GLOBAL_NAMES, MACROS
@@ -32,7 +31,6 @@ CPP_KEYWORDS = frozenset('''
 '''.split())
 
 
-@dataclasses.dataclass(frozen=True)
 class ReservedNames:
     """The names a back end's generated headers own.
 
@@ -44,10 +42,12 @@ class ReservedNames:
     members of a service's struct; a service cannot be so named.
     """
 
-    members: frozenset = frozenset()
-    macros: frozenset = frozenset()
-    namespaces: frozenset = frozenset()
-    service_members: frozenset = frozenset()
+    def __init__(self, members=frozenset(), macros=frozenset(), namespaces=frozenset(),
+                 service_members=frozenset()):
+        self.members = frozenset(members)
+        self.macros = frozenset(macros)
+        self.namespaces = frozenset(namespaces)
+        self.service_members = frozenset(service_members)
 
 
 _ASCII_IDENTIFIER = re.compile(r'[A-Za-z][A-Za-z0-9_]*\Z')
