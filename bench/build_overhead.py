@@ -202,17 +202,19 @@ def report_rows(tool, name, workspace, samples):
         with_samples, without_samples = samples[(True, kind)], samples[(False, kind)]
         wall_with, wall_without = median(with_samples, 0), median(without_samples, 0)
         cpu_with, cpu_without = median(with_samples, 1), median(without_samples, 1)
+        genmros_cpu = median(with_samples, 3)
         rows.append((tool, name, count_messages(workspace), kind,
                      '%.2f' % wall_without, '%.2f' % wall_with,
                      '%.2fx' % (wall_with / wall_without),
-                     '%.2fx' % (cpu_with / cpu_without),
-                     '%d' % median(with_samples, 2), '%.2f' % median(with_samples, 3)))
+                     '%.2f' % cpu_with, '%.2fx' % (cpu_with / cpu_without),
+                     '%d' % median(with_samples, 2), '%.2f' % genmros_cpu,
+                     '%.1f%%' % (100.0 * genmros_cpu / cpu_with)))
     return rows
 
 
 def print_table(rows):
     header = ('tool', 'workspace', 'msg+srv', 'build', 'without s', 'with s', 'wall ratio',
-              'CPU ratio', 'genmros runs', 'genmros CPU s')
+              'CPU with s', 'CPU ratio', 'genmros runs', 'genmros CPU s', 'genmros share')
     widths = [max(len(str(row[i])) for row in rows + [header]) for i in range(len(header))]
     for row in [header, tuple('-' * width for width in widths)] + rows:
         print('  '.join(str(cell).ljust(width) for cell, width in zip(row, widths)))
@@ -235,17 +237,21 @@ def print_start_up(workspace):
     for name, arguments in commands.items():
         result = subprocess.run(['/usr/bin/python3', '-X', 'importtime', '-m', 'colcon_mros'] + arguments,
                                 cwd=REPO, capture_output=True, text=True, check=True)
-        imports = []
+        imports, own = [], 0
         for line in result.stderr.splitlines():
             fields = line.split('|')
             if line.startswith('import time:') and fields[1].strip().isdigit():
                 imports.append((int(fields[1]), fields[2].rstrip()))
+                if fields[2].strip().startswith('colcon_mros'):
+                    own += int(fields[0].split(':')[1])
         top_level = [(cumulative, module.strip()) for cumulative, module in imports
                      if not module.startswith('  ')]
         total = sum(cumulative for cumulative, _ in top_level)
         largest = sorted(top_level, reverse=True)[:5]
-        print('  %s: %.1f ms of imports; %s' % (name, total / 1000.0, ', '.join(
-            '%s %.1f ms' % (module, cumulative / 1000.0) for cumulative, module in largest)))
+        print('  %s: %.1f ms of imports, %.1f ms of them colcon_mros\' own modules; %s'
+              % (name, total / 1000.0, own / 1000.0, ', '.join(
+                  '%s %.1f ms' % (module, cumulative / 1000.0)
+                  for cumulative, module in largest)))
 
 
 def main():
