@@ -46,6 +46,7 @@ status=$?
 exit $status
 '''
 SYNTHETIC_PACKAGES = 24
+START_UP_RUNS = 7
 SYNTHETIC_MESSAGES = 8
 
 PACKAGE_XML = '''<?xml version="1.0"?>
@@ -220,8 +221,9 @@ def print_table(rows):
         print('  '.join(str(cell).ljust(width) for cell, width in zip(row, widths)))
 
 
-def print_start_up(workspace):
-    """The modules genmros' catkin run imports, as -X importtime sees them."""
+def print_start_up(workspace, genmros):
+    """The modules the genmros program the builds ran imports in a catkin
+    run, as -X importtime sees them."""
     package = os.path.join(workspace, 'src', 'bench_msgs_01')
     files = sorted(os.path.join(package, 'msg', name) for name in os.listdir(os.path.join(package, 'msg')))
     scratch = os.path.join(workspace, 'start_up')
@@ -233,25 +235,33 @@ def print_start_up(workspace):
             '-p', 'bench_msgs_01', '-o', os.path.join(scratch, 'bench_msgs_01'),
             '--all-of-package'] + include_flags,
     }
-    print('\ngenmros start-up (python3 -X importtime; total import time and the largest imports):')
+    print('\ngenmros start-up (python3 -X importtime, the median of %d runs; total import time '
+          'and the largest imports):' % START_UP_RUNS)
     for name, arguments in commands.items():
-        result = subprocess.run(['/usr/bin/python3', '-X', 'importtime', '-m', 'colcon_mros'] + arguments,
-                                cwd=REPO, capture_output=True, text=True, check=True)
-        imports, own = [], 0
-        for line in result.stderr.splitlines():
-            fields = line.split('|')
-            if line.startswith('import time:') and fields[1].strip().isdigit():
-                imports.append((int(fields[1]), fields[2].rstrip()))
-                if fields[2].strip().startswith('colcon_mros'):
-                    own += int(fields[0].split(':')[1])
-        top_level = [(cumulative, module.strip()) for cumulative, module in imports
-                     if not module.startswith('  ')]
-        total = sum(cumulative for cumulative, _ in top_level)
-        largest = sorted(top_level, reverse=True)[:5]
+        runs = sorted((_imports(genmros, arguments) for _ in range(START_UP_RUNS)),
+                      key=lambda run: run[0])
+        total, own, largest = runs[len(runs) // 2]
         print('  %s: %.1f ms of imports, %.1f ms of them colcon_mros\' own modules; %s'
               % (name, total / 1000.0, own / 1000.0, ', '.join(
                   '%s %.1f ms' % (module, cumulative / 1000.0)
                   for cumulative, module in largest)))
+
+
+def _imports(genmros, arguments):
+    """(all imports, colcon_mros' own, the five largest) of one genmros run, in µs."""
+    result = subprocess.run(['/usr/bin/python3', '-X', 'importtime', genmros] + arguments,
+                            capture_output=True, text=True, check=True)
+    imports, own = [], 0
+    for line in result.stderr.splitlines():
+        fields = line.split('|')
+        if line.startswith('import time:') and fields[1].strip().isdigit():
+            imports.append((int(fields[1]), fields[2].rstrip()))
+            if fields[2].strip().startswith('colcon_mros'):
+                own += int(fields[0].split(':')[1])
+    top_level = [(cumulative, module.strip()) for cumulative, module in imports
+                 if not module.startswith('  ')]
+    return (sum(cumulative for cumulative, _ in top_level), own,
+            sorted(top_level, reverse=True)[:5])
 
 
 def main():
@@ -266,8 +276,9 @@ def main():
     root = options.keep or tempfile.mkdtemp(prefix='genmros-bench-')
     os.makedirs(root, exist_ok=True)
     wrapper = os.path.join(root, 'genmros-counted')
+    genmros = shutil.which('genmros')
     with open(wrapper, 'w') as stream:
-        stream.write(WRAPPER.format(genmros=shutil.which('genmros')))
+        stream.write(WRAPPER.format(genmros=genmros))
     os.chmod(wrapper, 0o755)
     try:
         rows = []
@@ -282,7 +293,7 @@ def main():
               '(colcon: with --mros-export), "without" = ROS_LANG_DISABLE=genmros'
               % (options.runs, options.runs * options.rebuilds))
         print_table(rows)
-        print_start_up(synthetic_workspace(os.path.join(root, 'start_up')))
+        print_start_up(synthetic_workspace(os.path.join(root, 'start_up')), genmros)
     finally:
         if not options.keep:
             shutil.rmtree(root)

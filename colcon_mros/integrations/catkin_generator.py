@@ -25,7 +25,6 @@ import time
 
 from colcon_mros.core.output import is_generated, write_files
 from colcon_mros.errors import GenmrosError
-from colcon_mros.export.export_dir import ExportDir
 from colcon_mros.export.run_record import RunRecord, snapshot
 from colcon_mros.integrations.installed_files import CMAKE_MODULE, installed_file
 from colcon_mros.mros_v1.names import RESERVED_NAMES
@@ -114,7 +113,10 @@ def generate_files(paths, package, output_dir, search_path, template_dir=None, e
     loaded = [_load(loader, builder, Definition(package, path)) for path in paths]
     run = renderer.fingerprint((package, sorted(paths), sorted(search_path.items()), export_dir))
     last_runs = _last_runs(records, run)
-    exports = ExportDir(export_dir) if export_dir else None
+    exports = None
+    if export_dir:
+        from colcon_mros.export.export_dir import ExportDir  # most runs have no export dir
+        exports = ExportDir(export_dir)
     stale = [generated for generated in loaded
              if _is_stale(generated, last_runs, generated.outputs(output_dir, exports))]
     # Rendered in full before anything is written: a bad file changes nothing.
