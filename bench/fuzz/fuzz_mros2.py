@@ -12,7 +12,7 @@ of random instances of each type (testing/ros2_messages), builds the harness
 with clang++ -fsanitize=fuzzer,address,undefined and runs it. It prints a
 table and exits non-zero if libFuzzer found a crash, a leak or a failed
 check; the input that did it is kept in the build directory. The test suite
-runs it for 60 s (tests/mros2/test_fuzz.py).
+runs it for 60 s (tests/mros2/test_mros2_fuzz.py).
 """
 
 import argparse
