@@ -1,8 +1,8 @@
 """The README's main command's driver (evaluation/run.py) as it runs, with
 this checkout installed (tests/checkout_install.py): every step of the main
-job passes and its table says so, with no mROS checkout; with the user's
-(MROS_V1_ROOT), the paper's five directions on the real library pass too,
-within the board's task stacks."""
+job passes and its table says so, ROS 1's and then ROS 2's, with no mROS
+checkout; with the user's (MROS_V1_ROOT), the paper's five directions on the
+real library pass too, within the board's task stacks."""
 
 import os
 import re
@@ -41,13 +41,32 @@ MROS_V1_ROWS = [
     'roscpp talker -> mROS v1',
 ]
 SYNC_ROW = 'in sync by construction: a field added, catkin_make, firmware rebuilt'
+ROS2_ROWS = [
+    "ROS 2: colcon build --mros-export of test_ws_ros2 (the ROS 2 wheels' "
+    'rosidl_default_generators and the mros2 generator)',
+    'ROS 2: firmware (CMake, mros2_import_messages) for 32-bit ARM Linux '
+    '(arm-linux-gnueabihf-g++, static)',
+    'ROS 2: firmware (CMake, mros2_import_messages) for Cortex-M4F (arm-none-eabi-g++, newlib '
+    'nano)',
+    "ROS 2: the fit check's verdict (genmros mros2-fit, the board's endpoints)",
+    'ROS 2: board -> rclpy: chatter',
+    'ROS 2: board -> rclpy: image',
+    'ROS 2: board -> rclpy: reading',
+    'ROS 2: rclpy -> board -> rclpy: command_echo',
+    'ROS 2: rclpy -> board -> rclpy: twist_echo',
+    'ROS 2: rclpy -> board -> rclpy: reading_in_echo',
+    'ROS 2: in sync by construction: a field added, colcon build, firmware rebuilt',
+]
+# The user's checkouts the main job would use besides.
+CHECKOUT_VARIABLES = ('MROS_V1_ROOT', 'MROS2_ROOT', 'MROS2_POSIX_ROOT')
 TABLE_ROW = re.compile(r'^(.*?) {2,}(PASS|FAIL.*)$')
 
 
 def _main_job(tmp_path, mros_v1_root):
     """What the main job printed, and its table's rows as (step, verdict)."""
     environment = checkout_install().environment(os.environ)
-    environment.pop('MROS_V1_ROOT', None)
+    for variable in CHECKOUT_VARIABLES:
+        environment.pop(variable, None)
     if mros_v1_root:
         environment['MROS_V1_ROOT'] = mros_v1_root
     result = subprocess.run([sys.executable, os.path.join(REPO, 'evaluation', 'run.py'),
@@ -60,12 +79,19 @@ def _main_job(tmp_path, mros_v1_root):
 
 def test_the_main_job_needs_no_mros(tmp_path):
     output, rows = _main_job(tmp_path, '')
-    assert rows == [(row, 'PASS') for row in ROWS + [SYNC_ROW]], output
+    assert rows == [(row, 'PASS') for row in ROWS + [SYNC_ROW] + ROS2_ROWS], output
     assert 'frames carried between qemu-arm and the ROS graph by evaluation/board_bridge.py' \
         in output
-    # Each firmware's sizes, and what the field added did.
+    assert 'samples carried between qemu-arm and the ROS 2 graph by evaluation/ros2_bridge.py' \
+        in output
+    assert len(re.findall(r'^  PASS: \w+: 20 of 20 samples came, 20 byte for byte as '
+                          r'(?:rosbags|rclpy) ', output, re.M)) == 6, output
+    # Each firmware's sizes (ROS 1's three, mros2's two), and what the fields added did.
     assert len(re.findall(r'^  PASS \(\d+ s\): flash \d+ B \(text \d+ \+ data \d+\), static RAM '
-                          r'\d+ B', output, re.M)) == 3, output
+                          r'\d+ B', output, re.M)) == 5, output
+    assert "field 'uint32 sequence_number' added to Reading.msg: in the firmware's reading.hpp " \
+        "and in rclpy's Reading" in output
+    assert 'the real mros2-posix app was not run: MROS2_POSIX_ROOT is not set' in output
     assert re.search(r"field 'float32 height_m' added: PersonalData's MD5 db8764b0 -> \w{8} in "
                      r"the firmware, equal to rospy's", output), output
     assert ("the paper's evaluation on your mROS v1 library was not run: MROS_V1_ROOT is not "
@@ -75,7 +101,8 @@ def test_the_main_job_needs_no_mros(tmp_path):
 @pytest.mark.needs_mros_v1
 def test_the_main_job_runs_the_papers_evaluation_on_the_users_library(tmp_path):
     output, rows = _main_job(tmp_path, MROS_V1_ROOT)
-    assert rows == [(row, 'PASS') for row in ROWS + MROS_V1_ROWS + [SYNC_ROW]], output
+    assert rows == [(row, 'PASS') for row in ROWS + MROS_V1_ROWS + [SYNC_ROW] + ROS2_ROWS], \
+        output
     # Within the board's stacks (an overflow would have stopped the board),
     # every task of app.cfg and the library's mros.cfg reported.
     stacks = re.findall(r'(\w+) (\d+) of (\d+)', output.split(
