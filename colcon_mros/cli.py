@@ -348,6 +348,11 @@ def _add_mros2_board(parser, required):
                              'of its own')
 
 
+def _add_mros2_storage(parser):
+    _add_storage(parser, 'unbounded strings and sequences (string<=N and T[<=N] are always '
+                         'bounded)', "; each package's msg/genmros.options is read too")
+
+
 def _add_mros2_export(subparsers):
     parser = subparsers.add_parser(
         'mros2-export', help='[mros2, ROS 2] the headers one mros2 firmware needs, and its '
@@ -368,8 +373,7 @@ def _add_mros2_export(subparsers):
     parser.add_argument('-o', dest='output_dir', required=True, metavar='DIR',
                         help='include root to write to')
     _add_mros2_board(parser, required=False)
-    _add_storage(parser, 'unbounded strings and sequences (string<=N and T[<=N] are always '
-                         'bounded)', "; each package's msg/genmros.options is read too")
+    _add_mros2_storage(parser)
     parser.set_defaults(run=_mros2_export)
 
 
@@ -385,8 +389,7 @@ def _add_mros2_fit(subparsers):
     _add_mros2_sources(parser)
     _add_mros2_endpoints(parser, '')
     _add_mros2_board(parser, required=True)
-    _add_storage(parser, 'unbounded strings and sequences (string<=N and T[<=N] are always '
-                         'bounded)', "; each package's msg/genmros.options is read too")
+    _add_mros2_storage(parser)
     parser.set_defaults(run=_mros2_fit)
 
 

@@ -14,14 +14,13 @@ board's encoding, and what the board decodes is the ROS node's.
   board_bridge.py COMMAND...     (e.g. qemu-arm build/board)
 """
 
-import struct
 import subprocess
 import sys
 import threading
 
 import rospy
 
-RECORD_HEAD = struct.Struct('<cHI')
+from board_records import read_records, write_message
 
 
 def board_message_class(type_name, md5sum, definition):
@@ -30,11 +29,6 @@ def board_message_class(type_name, md5sum, definition):
     return type('BoardMessage', (rospy.AnyMsg,),
                 {'_type': type_name, '_md5sum': md5sum, '_full_text': definition,
                  '__slots__': []})
-
-
-def read_exactly(stream, size):
-    data = stream.read(size)
-    return data if len(data) == size else None
 
 
 class Bridge:
@@ -49,8 +43,7 @@ class Bridge:
         def callback(message):
             body = bytes(message._buff)
             with self.to_board:
-                self.board.stdin.write(RECORD_HEAD.pack(b'M', index, len(body)) + body)
-                self.board.stdin.flush()
+                write_message(self.board.stdin, index, body)
         return callback
 
     def announce(self, index, body):
@@ -69,14 +62,7 @@ class Bridge:
 
     def run(self):
         """Relays until the board stops; returns its exit status."""
-        while True:
-            head = read_exactly(self.board.stdout, RECORD_HEAD.size)
-            if head is None:
-                break
-            kind, index, size = RECORD_HEAD.unpack(head)
-            body = read_exactly(self.board.stdout, size)
-            if body is None:
-                break
+        for kind, index, body in read_records(self.board.stdout):
             if kind == b'T':
                 self.announce(index, body)
             elif kind == b'M' and index in self.publishers:

@@ -18,7 +18,6 @@ Runs with rclpy (the ROS 2 wheels' venv build/ros2-wheels).
 """
 
 import importlib
-import struct
 import subprocess
 import sys
 import threading
@@ -27,7 +26,8 @@ import rclpy
 from rclpy.node import Node
 from rclpy.qos import QoSHistoryPolicy, QoSProfile
 
-RECORD_HEAD = struct.Struct('<cHI')
+from board_records import read_records, write_message
+
 QOS = QoSProfile(depth=100, history=QoSHistoryPolicy.KEEP_LAST)
 
 
@@ -41,11 +41,6 @@ def message_type(dds_type_name):
     except ImportError:
         return None
     return getattr(module, parts[3][:-1], None)
-
-
-def read_exactly(stream, size):
-    data = stream.read(size)
-    return data if len(data) == size else None
 
 
 class Bridge(Node):
@@ -62,8 +57,7 @@ class Bridge(Node):
     def forward_to_board(self, index):
         def callback(sample):
             with self.to_board:
-                self.board.stdin.write(RECORD_HEAD.pack(b'M', index, len(sample)) + sample)
-                self.board.stdin.flush()
+                write_message(self.board.stdin, index, sample)
         return callback
 
     def announce(self, index, body):
@@ -102,14 +96,7 @@ class Bridge(Node):
 
     def relay(self):
         """Relays the board's records until it stops; returns its exit status."""
-        while True:
-            head = read_exactly(self.board.stdout, RECORD_HEAD.size)
-            if head is None:
-                break
-            kind, index, size = RECORD_HEAD.unpack(head)
-            body = read_exactly(self.board.stdout, size)
-            if body is None:
-                break
+        for kind, index, body in read_records(self.board.stdout):
             if kind == b'T':
                 self.announce(index, body)
             elif kind == b'M' and index in self.publishers_by_topic:

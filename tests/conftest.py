@@ -7,8 +7,7 @@ import sys
 import pytest
 
 import built_workspace
-import mros2_checkout
-from mros_v1_checkout import checkout_found, missing_reason
+from user_checkouts import CHECKOUTS
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TEST_WS = os.path.join(REPO, 'test_ws')
@@ -32,14 +31,12 @@ pytest_plugins = ['mros2_corpus']
 def pytest_collection_modifyitems(config, items):
     """Tests that need a user's checkout (needs_mros_v1, needs_mros2) are
     skipped, saying why, without one."""
-    for marker, found, reason in (('needs_mros_v1', checkout_found(), missing_reason()),
-                                  ('needs_mros2', mros2_checkout.checkout_found(),
-                                   mros2_checkout.missing_reason())):
-        if found:
+    for checkout in CHECKOUTS:
+        if checkout.found():
             continue
-        skip = pytest.mark.skip(reason=reason)
+        skip = pytest.mark.skip(reason=checkout.missing_reason())
         for item in items:
-            if marker in item.keywords:
+            if checkout.marker in item.keywords:
                 item.add_marker(skip)
 
 

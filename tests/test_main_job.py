@@ -13,7 +13,7 @@ import pytest
 
 from checkout_install import checkout_install
 from conftest import REPO
-from mros_v1_checkout import MROS_V1_ROOT
+from user_checkouts import MROS_V1_ROOT
 
 pytestmark = [pytest.mark.slow, pytest.mark.needs_qemu]
 

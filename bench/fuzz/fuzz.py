@@ -17,16 +17,19 @@ import argparse
 import glob
 import io
 import os
-import re
 import subprocess
 import sys
 import tempfile
+
+import libfuzzer  # beside this script
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 TEST_WS = os.path.join(REPO, 'test_ws')
 GENPY_MSG = '/usr/lib/genpy/genmsg_py.py'
 GENPY_SRV = '/usr/lib/genpy/gensrv_py.py'
+# The largest input libFuzzer makes: a frame of any test type fits.
+MAX_INPUT_BYTES = 65536
 
 DEBIAN_TYPES = ['sensor_msgs/Image', 'sensor_msgs/PointCloud2', 'sensor_msgs/JointState',
                 'nav_msgs/Odometry', 'visualization_msgs/MarkerArray']
@@ -182,15 +185,6 @@ def write_seeds(corpus_dir, types):
     return count
 
 
-def run(program, corpus_dir, seconds, build_dir):
-    result = subprocess.run(
-        [program, '-max_total_time=%d' % seconds, '-print_final_stats=1', '-rss_limit_mb=2048',
-         '-artifact_prefix=%s/' % build_dir, '-max_len=65536', corpus_dir],
-        capture_output=True, text=True)
-    stats = dict(re.findall(r'^stat::(\w+):\s+(\d+)', result.stderr, re.M))
-    return result.returncode, stats, result.stderr
-
-
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
     parser.add_argument('--seconds', type=int, default=600, help='how long to fuzz (default: 600)')
@@ -203,20 +197,14 @@ def main(argv=None):
     os.makedirs(corpus_dir, exist_ok=True)
     program, types = build(build_dir, options.std, options.portable)
     seeds = write_seeds(corpus_dir, types)
-    returncode, stats, log = run(program, corpus_dir, options.seconds, build_dir)
+    returncode, stats, log = libfuzzer.run(program, corpus_dir, options.seconds, build_dir,
+                                           MAX_INPUT_BYTES)
     executions = int(stats.get('number_of_executed_units', 0))
     rows = [('types', len(types)), ('seed inputs (genpy)', seeds), ('seconds', options.seconds),
             ('language mode', options.std + (' portable' if options.portable else '')),
             ('executions', executions), ('executions per second', executions // max(options.seconds, 1)),
-            ('peak RSS (MB)', stats.get('peak_rss_mb', '?')),
-            ('result', 'no crash' if returncode == 0 else 'FAILED (exit %d)' % returncode)]
-    print('| genmros libFuzzer run | |\n|---|---|')
-    for label, value in rows:
-        print('| %s | %s |' % (label, value))
-    print('build dir: %s' % build_dir)
-    if returncode != 0:
-        print(log[-8000:], file=sys.stderr)
-    return 0 if returncode == 0 else 1
+            ('peak RSS (MB)', stats.get('peak_rss_mb', '?'))]
+    return libfuzzer.report('genmros libFuzzer run', rows, build_dir, returncode, log)
 
 
 if __name__ == '__main__':

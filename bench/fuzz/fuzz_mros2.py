@@ -33,6 +33,8 @@ from colcon_mros.ros2.interfaces import all_packages  # noqa: E402
 from colcon_mros.ros2.model import ModelBuilder  # noqa: E402
 from testing import fastcdr, ros2_messages  # noqa: E402
 
+import libfuzzer  # noqa: E402  (beside this script)
+
 TEST_WS_ROS2 = os.path.join(REPO, 'test_ws_ros2')
 WORKSPACE_PACKAGES = ('mros2_base_msgs', 'mros2_test_msgs')
 # Debian's ros2-test-interface-files: /usr/share/test_interface_files/{msg,srv}.
@@ -109,24 +111,6 @@ def write_seeds(corpus_dir, build_dir, messages):
     return len(samples)
 
 
-def run(program, corpus_dir, seconds, build_dir):
-    result = subprocess.run(
-        [program, '-max_total_time=%d' % seconds, '-print_final_stats=1', '-rss_limit_mb=2048',
-         '-artifact_prefix=%s/' % build_dir, '-max_len=%d' % MAX_INPUT_BYTES, corpus_dir],
-        capture_output=True, text=True)
-    stats = dict(re.findall(r'^stat::(\w+):\s+(\d+)', result.stderr, re.M))
-    accepted = re.search(r'^mros2 fuzz: accepted (\d+) of (\d+) inputs', result.stderr, re.M)
-    return result.returncode, stats, accepted, result.stderr
-
-
-def _result(returncode, build_dir):
-    if returncode == 0:
-        return 'no crash'
-    artifacts = sorted(name for name in os.listdir(build_dir)
-                       if name.startswith(('crash-', 'leak-', 'oom-', 'timeout-')))
-    return 'FAILED (exit %d%s)' % (returncode, ': ' + ', '.join(artifacts) if artifacts else '')
-
-
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
     parser.add_argument('--seconds', type=int, default=600, help='how long to fuzz (default: 600)')
@@ -139,21 +123,16 @@ def main(argv=None):
     messages = fuzz_messages()
     program = build(build_dir, messages)
     seeds = write_seeds(corpus_dir, build_dir, messages)
-    returncode, stats, accepted, log = run(program, corpus_dir, options.seconds, build_dir)
+    returncode, stats, log = libfuzzer.run(program, corpus_dir, options.seconds, build_dir,
+                                           MAX_INPUT_BYTES)
+    accepted = re.search(r'^mros2 fuzz: accepted (\d+) of (\d+) inputs', log, re.M)
     executions = int(stats.get('number_of_executed_units', 0))
     rows = [('types', len(messages)), ('seed inputs', seeds), ('seconds', options.seconds),
             ('executions', executions),
             ('executions per second', executions // max(options.seconds, 1)),
             ('accepted inputs', '%s of %s' % accepted.groups() if accepted else '?'),
-            ('peak RSS (MB)', stats.get('peak_rss_mb', '?')),
-            ('result', _result(returncode, build_dir))]
-    print('| genmros mros2 libFuzzer run | |\n|---|---|')
-    for label, value in rows:
-        print('| %s | %s |' % (label, value))
-    print('build dir: %s' % build_dir)
-    if returncode != 0:
-        print(log[-8000:], file=sys.stderr)
-    return 0 if returncode == 0 else 1
+            ('peak RSS (MB)', stats.get('peak_rss_mb', '?'))]
+    return libfuzzer.report('genmros mros2 libFuzzer run', rows, build_dir, returncode, log)
 
 
 if __name__ == '__main__':

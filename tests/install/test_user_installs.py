@@ -16,7 +16,7 @@ import subprocess
 import pytest
 
 from testing.ros_graph import Board, RosGraph
-from mros_v1_checkout import MROS_V1_ROOT
+from user_checkouts import MROS_V1_ROOT
 from conftest import REPO, TEST_WS
 from user_install import NOBODY, Install, copy_sources, install_as_nobody, pip_flags
 

@@ -19,7 +19,7 @@ from colcon_mros.mros_v1.rules import (PEER_NAME_MAX, PUBLISHER_HEADER_FIXED,
 from testing.ros_graph import PYTHON, RosGraph
 from testing.tcpros_peer import HostilePublisher, RawSubscriber
 from conftest import TEST_WS
-from mros_v1_checkout import MROS_V1_ROOT
+from user_checkouts import MROS_V1_ROOT
 from settings_headers import define, header_paths, small_settings
 
 USR_CONFIG = os.path.join(MROS_V1_ROOT, 'mros_ws', 'custom_pubsub', 'mros_config',

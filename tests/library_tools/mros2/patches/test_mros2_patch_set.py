@@ -13,7 +13,7 @@ import pytest
 
 from colcon_mros.library_tools.mros2.patches import LIBRARY_DIRS
 from conftest import REPO, run_genmros
-from mros2_checkout import MROS2_ROOT
+from user_checkouts import MROS2_ROOT
 
 pytestmark = [pytest.mark.needs_mros2, pytest.mark.slow]
 

@@ -13,7 +13,7 @@ from colcon_mros.errors import GenmrosError
 from colcon_mros.library_tools.mros_v1.patches import MROS_V1_SERIES, mros_v1_patches
 from colcon_mros.library_tools.patch_series import apply_patches, read_patch
 from conftest import run_genmros
-from mros_v1_checkout import MROS_V1_ROOT
+from user_checkouts import MROS_V1_ROOT
 
 PATCH_DIR = MROS_V1_SERIES.directory
 

@@ -7,7 +7,7 @@ import os
 import pytest
 
 from conftest import REPO
-from mros_v1_checkout import MROS_V1_ROOT
+from user_checkouts import MROS_V1_ROOT
 from colcon_mros.errors import GenmrosError
 from colcon_mros.library_tools.mros_v1.pc_target.asp_cfg import read_config, write_kernel_config
 

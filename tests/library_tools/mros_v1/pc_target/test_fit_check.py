@@ -15,7 +15,7 @@ from colcon_mros.library_tools.mros_v1.pc_target.build import TARGET_DIR
 from colcon_mros.mros_v1.app import app_variables
 from testing.ros_graph import PYTHON
 from conftest import run_genmros
-from mros_v1_checkout import MROS_V1_ROOT
+from user_checkouts import MROS_V1_ROOT
 from settings_headers import define
 
 pytestmark = pytest.mark.needs_mros_v1

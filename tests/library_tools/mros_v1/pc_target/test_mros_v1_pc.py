@@ -34,7 +34,7 @@ from testing.ros_graph import (
 from testing.tcpros_peer import (
     HostilePublisher, RawSubscriber, encode_header)
 from fixtures.build_integration.tools import run
-from mros_v1_checkout import MROS_V1_ROOT
+from user_checkouts import MROS_V1_ROOT
 from pc_target_apps import build_sample
 from sanitizer_reports import LIBRARY_REPORTS, sanitizer_reports
 

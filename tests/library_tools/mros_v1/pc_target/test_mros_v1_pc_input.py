@@ -8,7 +8,7 @@ import os
 import pytest
 
 from conftest import run_genmros
-from mros_v1_checkout import MROS_V1_ROOT
+from user_checkouts import MROS_V1_ROOT
 
 
 

@@ -38,7 +38,7 @@ from testing.ros_graph import (
     DELIVERY_TIMEOUT, PEER_IP, Board, RosGraph, sourced_environment)
 from testing.tcpros_peer import (
     HostilePublisher, RawSubscriber, encode_header, frame)
-from mros_v1_checkout import MROS_V1_ROOT
+from user_checkouts import MROS_V1_ROOT
 from pc_target_apps import build_app, library_copy
 from sanitizer_reports import sanitizer_reports
 

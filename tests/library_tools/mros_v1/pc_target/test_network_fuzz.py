@@ -13,7 +13,7 @@ import sys
 import pytest
 
 from conftest import REPO
-from mros_v1_checkout import MROS_V1_ROOT
+from user_checkouts import MROS_V1_ROOT
 
 pytestmark = [pytest.mark.needs_mros_v1, pytest.mark.slow]
 
