@@ -71,9 +71,10 @@ class Requirement:
 def name_requirements(endpoints):
     """Each endpoint type's DDS type name and each topic's name, with NULs."""
     requirements = []
-    for name in sorted({e.wire_name.dds_type_name for e in endpoints}):
+    names = {e.wire_name.dds_type_name: e.wire_name for e in endpoints}
+    for name in sorted(names):
         requirements.append(Requirement(
-            TYPENAME_MAX, name, 'its DDS type name and its NUL', len(name) + 1))
+            TYPENAME_MAX, name, 'its DDS type name and its NUL', names[name].dds_type_name_size))
     for topic in sorted({e.topic for e in endpoints if e.topic is not None}):
         requirements.append(Requirement(
             TOPICNAME_MAX, 'topic %s' % topic, "'%s%s' and its NUL" % (TOPIC_PREFIX, topic),
