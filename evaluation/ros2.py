@@ -35,6 +35,8 @@ import time
 
 from board import TARGETS, Failure, run_logged, sizes
 from testing import mros2_posix
+from testing.dds_peer import free_domain_id
+from testing.ros_graph import Process
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
@@ -151,49 +153,23 @@ def fit_verdict(workspace, program):
                            % (len(endpoints), settings, RECEIVE_LIMIT))
 
 
-def _start(argv, log_path, environment):
-    log = open(log_path, 'w')
-    return subprocess.Popen(argv, stdout=log, stderr=subprocess.STDOUT, env=environment,
-                            start_new_session=True), log
-
-
-def _stop(process):
-    if process.poll() is None:
-        os.killpg(process.pid, signal.SIGTERM)
-        try:
-            process.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            os.killpg(process.pid, signal.SIGKILL)
-            process.wait()
-
-
-def free_domain():
-    """A DDS domain for this run: derived from the process id, within ROS 2's 0..101."""
-    return 1 + os.getpid() % 100
-
-
-def exchange(workspace, program, log_dir):
+def exchange(workspace, program):
     """Step 4: the board and the rclpy nodes; [(title, detail, problem)], one per topic."""
-    environment = workspace.environment(free_domain())
+    environment = workspace.environment(free_domain_id())
     python = os.path.join(WHEELS, 'bin', 'python')
-    peer, peer_log = _start([python, PEER, '--count', str(SAMPLES)],
-                            os.path.join(log_dir, 'ros2_peer.log'), environment)
-    bridge, bridge_log = _start([python, BRIDGE, 'qemu-arm', program],
-                                os.path.join(log_dir, 'ros2_bridge.log'), environment)
+    peer = Process('rclpy peer', [python, PEER, '--count', str(SAMPLES)], environment)
+    bridge = Process('rclpy bridge', [python, BRIDGE, 'qemu-arm', program], environment)
     try:
-        peer.wait(timeout=PEER_TIMEOUT)
+        peer.popen.wait(timeout=PEER_TIMEOUT)
     except subprocess.TimeoutExpired:
         pass
     finally:
-        _stop(peer)
-        _stop(bridge)
-        peer_log.close()
-        bridge_log.close()
-    with open(peer_log.name) as stream:
-        lines = [line[len('peer: '):].strip() for line in stream if line.startswith('peer: ')]
+        peer.stop(signal.SIGTERM)
+        bridge.stop(signal.SIGTERM)
+    lines = [line[len('peer: '):].strip() for line in peer.lines() if line.startswith('peer: ')]
     if not lines:
-        raise Failure('the rclpy peer reported nothing: see %s and %s'
-                      % (peer_log.name, bridge_log.name))
+        raise Failure('the rclpy peer reported nothing; it printed: %s; the bridge: %s'
+                      % (' | '.join(peer.lines()[-5:]), ' | '.join(bridge.lines()[-5:])))
     results = []
     for line in lines:
         match = re.match(r'(\S+): (\d+) of (\d+) samples came, (\d+) byte for byte', line)

@@ -226,7 +226,7 @@ def run_ros2(steps, build_root):
               ros2.fit_verdict, workspace, linux)
     print('ROS 2: the board under qemu-arm with rclpy nodes; %s ...' % ros2.TRANSPORT, flush=True)
     try:
-        for title, detail, problem in ros2.exchange(workspace, linux, build_root):
+        for title, detail, problem in ros2.exchange(workspace, linux):
             steps.add('ROS 2: ' + title, detail, problem)
     except (board.Failure, OSError) as error:
         steps.add('ROS 2: the board under qemu-arm with rclpy nodes', '', _first_line(error))
