@@ -45,6 +45,8 @@ status=$?
 {{ echo "run $1"; times; }} >> "$GENMROS_BENCH_LOG"
 exit $status
 '''
+# What a clean build starts without.
+BUILD_SPACES = ('build', 'devel', 'install', 'log', 'logs', 'mros_export')
 SYNTHETIC_PACKAGES = 24
 START_UP_RUNS = 7
 SYNTHETIC_MESSAGES = 8
@@ -112,13 +114,12 @@ def count_messages(workspace):
                for name in names if name.endswith(('.msg', '.srv')))
 
 
-def build_environment(workspace, genmros_enabled, log):
+def build_environment(workspace, genmros_enabled):
     env = {key: value for key, value in os.environ.items()
            if key not in ('ROS_LANG_DISABLE', 'MROS_EXPORT_DIR', 'CMAKE_PREFIX_PATH')}
     # Debian's catkin needs the Python that has catkin_pkg and genmsg.
     env['PATH'] = '/usr/local/bin:/usr/bin:/bin'
     env['PWD'] = workspace
-    env['GENMROS_BENCH_LOG'] = log
     if not genmros_enabled:
         env['ROS_LANG_DISABLE'] = 'genmros'
     return env
@@ -154,15 +155,14 @@ def genmros_runs(log):
     return runs, cpu
 
 
-def timed_build(tool, workspace, enabled, wrapper):
-    """(wall seconds, CPU seconds, genmros processes, their CPU seconds) of one
-    build of workspace with tool, genmros enabled or not."""
+def timed_build(command, workspace, env):
+    """(wall seconds, CPU seconds, genmros processes, their CPU seconds) of
+    one build: command run in workspace with env, genmros (through WRAPPER)
+    logging its runs into the workspace."""
     log = os.path.join(workspace, 'genmros-runs.log')
-    env = build_environment(workspace, enabled, log)
-    command = build_command(tool, workspace, wrapper, enabled)
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.monotonic()
-    result = subprocess.run(command, cwd=workspace, env=env,
+    result = subprocess.run(command, cwd=workspace, env=dict(env, GENMROS_BENCH_LOG=log),
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     wall = time.monotonic() - start
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -172,25 +172,35 @@ def timed_build(tool, workspace, enabled, wrapper):
     return (wall, cpu) + genmros_runs(log)
 
 
-def measure(tool, workspaces, runs, rebuilds, wrapper):
-    """{(enabled, 'clean'|'rebuild'): [(wall, cpu, genmros runs, their cpu), ...]};
-    workspaces: {enabled: the copy built that way}."""
+def measure(build, workspaces, runs, rebuilds, spaces):
+    """{(enabled, 'clean'|'rebuild'): [build(enabled), ...]}: runs rounds of a
+    clean build of each of workspaces ({enabled: the copy built that way},
+    its spaces removed first), then rebuilds no-change rebuilds of each, the
+    copies taking turns."""
     samples = {}
-    if tool == 'catkin_build':
-        for workspace in workspaces.values():
-            subprocess.run(['catkin', 'init'], cwd=workspace, check=True, capture_output=True)
     for round_number in range(runs):
         order = (True, False) if round_number % 2 == 0 else (False, True)
         for enabled in order:
-            for space in ('build', 'devel', 'install', 'log', 'logs', 'mros_export'):
+            for space in spaces:
                 shutil.rmtree(os.path.join(workspaces[enabled], space), ignore_errors=True)
-            samples.setdefault((enabled, 'clean'), []).append(
-                timed_build(tool, workspaces[enabled], enabled, wrapper))
+            samples.setdefault((enabled, 'clean'), []).append(build(enabled))
         for _ in range(rebuilds):
             for enabled in order:
-                samples.setdefault((enabled, 'rebuild'), []).append(
-                    timed_build(tool, workspaces[enabled], enabled, wrapper))
+                samples.setdefault((enabled, 'rebuild'), []).append(build(enabled))
     return samples
+
+
+def measure_tool(tool, workspaces, runs, rebuilds, wrapper):
+    """measure() of builds of workspaces with tool, genmros run through wrapper."""
+    if tool == 'catkin_build':
+        for workspace in workspaces.values():
+            subprocess.run(['catkin', 'init'], cwd=workspace, check=True, capture_output=True)
+
+    def build(enabled):
+        workspace = workspaces[enabled]
+        return timed_build(build_command(tool, workspace, wrapper, enabled), workspace,
+                           build_environment(workspace, enabled))
+    return measure(build, workspaces, runs, rebuilds, BUILD_SPACES)
 
 
 def median(samples, column):
@@ -287,7 +297,7 @@ def main():
                 directory = os.path.join(root, tool, name.replace(' ', '_'))
                 workspaces = {enabled: make(os.path.join(directory, setting))
                               for enabled, setting in ((True, 'with'), (False, 'without'))}
-                rows += report_rows(tool, name, workspaces[True], measure(
+                rows += report_rows(tool, name, workspaces[True], measure_tool(
                     tool, workspaces, options.runs, options.rebuilds, wrapper))
         print('Medians of %d clean builds and %d no-change rebuilds; "with" = genmros enabled '
               '(colcon: with --mros-export), "without" = ROS_LANG_DISABLE=genmros'

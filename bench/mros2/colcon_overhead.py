@@ -36,12 +36,11 @@ import statistics
 import subprocess
 import sys
 import tempfile
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.dirname(HERE))
-from build_overhead import WRAPPER, genmros_runs  # noqa: E402
+from build_overhead import WRAPPER, measure, timed_build  # noqa: E402
 
 TEST_WS_ROS2 = os.path.join(REPO, 'test_ws_ros2', 'src')
 TEST_INTERFACE_FILES = '/usr/share/test_interface_files'
@@ -69,6 +68,10 @@ INTERFACES_PACKAGE = '''<?xml version="1.0"?>
   <export><build_type>ament_cmake</build_type></export>
 </package>
 '''
+COLCON_BUILD = ['colcon', 'build', '--executor', 'parallel', '--parallel-workers', '2',
+                '--cmake-args']
+# What a clean build starts without.
+COLCON_SPACES = ('build', 'install', 'log')
 # The line of CMake's build.make that runs a generator over its arguments file.
 GENERATOR_COMMAND = re.compile(r'^\t(\S.*--generator-arguments-file \S+.*)$', re.M)
 
@@ -119,42 +122,6 @@ def without_generator(root):
             text = stream.read()
         with open(path, 'w') as stream:
             stream.write(MROS2_GENERATOR_LINE.sub('find_package(rosidl_cmake REQUIRED)', text))
-
-
-def timed_build(workspace, wrapper, environment):
-    """(wall seconds, CPU seconds, generator processes, their CPU seconds)."""
-    log = os.path.join(workspace, 'generator-runs.log')
-    env = dict(environment, GENMROS_BENCH_LOG=log)
-    command = ['colcon', 'build', '--executor', 'parallel', '--parallel-workers', '2',
-               '--cmake-args', '-Drosidl_generator_mros2_BIN=%s' % wrapper]
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    start = time.monotonic()
-    result = subprocess.run(command, cwd=workspace, env=env, stdout=subprocess.PIPE,
-                            stderr=subprocess.STDOUT, text=True)
-    wall = time.monotonic() - start
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    if result.returncode != 0:
-        sys.exit('colcon build failed in %s:\n%s' % (workspace, result.stdout[-4000:]))
-    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    return (wall, cpu) + genmros_runs(log)
-
-
-def measure(copies, runs, rebuilds, wrapper, environment):
-    """{(with generator, 'clean'|'rebuild'): [timed_build(), ...]}; environment(with
-    generator) is the build's environment."""
-    samples = {}
-    for round_number in range(runs):
-        order = (True, False) if round_number % 2 == 0 else (False, True)
-        for enabled in order:
-            for space in ('build', 'install', 'log'):
-                shutil.rmtree(os.path.join(copies[enabled], space), ignore_errors=True)
-            samples.setdefault((enabled, 'clean'), []).append(
-                timed_build(copies[enabled], wrapper, environment(enabled)))
-        for _ in range(rebuilds):
-            for enabled in order:
-                samples.setdefault((enabled, 'rebuild'), []).append(
-                    timed_build(copies[enabled], wrapper, environment(enabled)))
-    return samples
 
 
 def process_cpu(command, repeats, environment):
@@ -213,7 +180,10 @@ def main():
                 make(copies[enabled])
                 if not enabled:
                     without_generator(copies[enabled])
-            samples = measure(copies, options.runs, options.rebuilds, wrapper, environment)
+            command = COLCON_BUILD + ['-Drosidl_generator_mros2_BIN=%s' % wrapper]
+            samples = measure(
+                lambda enabled: timed_build(command, copies[enabled], environment(enabled)),
+                copies, options.runs, options.rebuilds, COLCON_SPACES)
             for kind in ('clean', 'rebuild'):
                 with_, without = samples[(True, kind)], samples[(False, kind)]
                 rows.append('| %s, %s | %.2f s | %.2f s | %.3fx | %.2f s | %.2f s | %.3fx | '
