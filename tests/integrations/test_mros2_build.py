@@ -37,7 +37,8 @@ target_compile_options(firmware PRIVATE -Wall -Wextra -Werror)
 mros2_import_messages(TARGET firmware EXPORT_DIR {export}
                       PUBLISH reading:mros2_test_msgs/msg/Reading
                       SUBSCRIBE stamp:mros2_base_msgs/msg/Stamp
-                      TYPES mros2_test_msgs/srv/Query RTPS_CONFIG rtps/config.h)
+                      TYPES mros2_test_msgs/srv/Query RTPS_CONFIG rtps/config.h
+                      RECEIVE_LIMIT lwip/udp_limits.h:MAX_RECV_PACKET_SIZE)
 '''
 # The board's rtps/config.h as embeddedRTPS writes its configs; mros2-posix'
 # keeps type names in 40 bytes.
@@ -87,7 +88,14 @@ class Ros2Workspace:
         with open(os.path.join(self.firmware, 'CMakeLists.txt'), 'w') as stream:
             stream.write(FIRMWARE_CMAKE.format(runtime=RUNTIME, export=self.export_dir))
         self.write_config(RTPS_CONFIG)
+        self.write_receive_limit(4096)
         self.write_main('')
+
+    def write_receive_limit(self, size):
+        """The port's setting, as lwip-posix' udp.c has it."""
+        os.makedirs(os.path.join(self.firmware, 'lwip'), exist_ok=True)
+        with open(os.path.join(self.firmware, 'lwip', 'udp_limits.h'), 'w') as stream:
+            stream.write('#define MAX_RECV_PACKET_SIZE %d\n' % size)
 
     def write_config(self, text):
         os.makedirs(os.path.join(self.firmware, 'rtps'), exist_ok=True)
@@ -168,4 +176,21 @@ def test_a_board_config_too_small_stops_the_configure_step(workspace):
                          ('mros2_test_msgs::msg::dds_::Reading_', 37)):
         assert ('%s:7: %s: its DDS type name and its NUL needs MAX_TYPENAME_LENGTH >= %d (it is '
                 '30)' % (config, name, needed)) in unwrapped(result.stdout), result.stdout[-3000:]
+    workspace.build_firmware()
+
+
+def test_a_receive_limit_too_small_stops_the_configure_step(workspace):
+    """RECEIVE_LIMIT FILE:NAME, FILE relative to the project as the config is,
+    and a configure dependency too: Stamp's samples need 84 bytes a datagram."""
+    workspace.write_receive_limit(80)
+    try:
+        result = run(['cmake', '--build', os.path.join(workspace.firmware, 'build')],
+                     workspace.root, check=False)
+    finally:
+        workspace.write_receive_limit(4096)
+    assert result.returncode != 0
+    limits = os.path.join(workspace.firmware, 'lwip', 'udp_limits.h')
+    assert ('%s:1: mros2_base_msgs/msg/Stamp: a sample of up to 8 bytes in one datagram, RTPS '
+            'around it needs MAX_RECV_PACKET_SIZE >= 84 (it is 80)' % limits) \
+        in unwrapped(result.stdout), result.stdout[-3000:]
     workspace.build_firmware()
