@@ -49,6 +49,14 @@ function(mros2_import_messages)
       "(scripts/setup.sh) or set GENMROS_BIN")
   endif()
   get_filename_component(prefix "${ARG_EXPORT_DIR}/mros2" ABSOLUTE)
+  get_filename_component(given "${ARG_EXPORT_DIR}" ABSOLUTE)
+  get_filename_component(given_name "${given}" NAME)
+  if(ARG_EXPORT_DIR AND given_name STREQUAL "mros2" AND IS_DIRECTORY "${given}/share")
+    # The mros2 half itself: the export dir is the one colcon wrote, above it.
+    get_filename_component(parent "${given}" DIRECTORY)
+    message(FATAL_ERROR "mros2_import_messages(): EXPORT_DIR '${ARG_EXPORT_DIR}' is the mros2 "
+      "half of an export dir: give the dir colcon build --mros-export wrote, '${parent}'")
+  endif()
   if(NOT ARG_EXPORT_DIR OR NOT IS_DIRECTORY "${prefix}/share")
     message(FATAL_ERROR "mros2_import_messages(): EXPORT_DIR '${ARG_EXPORT_DIR}' holds no mros2 "
       "export (no mros2/share); build the ROS 2 workspace with colcon build --mros-export first")

@@ -10,32 +10,56 @@ Python packages only where they are needed.
 import argparse
 import os
 import sys
+import textwrap
 
 from colcon_mros import __version__
 from colcon_mros.core.defaults import (DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE,
                                        DEFINITION_TEXTS, EXPORT_PARTS, STORAGE_KINDS)
+from colcon_mros.core.wording import counted
 from colcon_mros.errors import GenmrosError
 from colcon_mros.mros_v1.defaults import DEFAULT_VARIABLE_SIZE_BUDGET, PC_TARGETS
 
 DESCRIPTION = '''\
 Generate mROS message headers: from ROS 1 .msg and .srv files for mROS v1,
 and from ROS 2 interface files (.msg, .srv, .idl, read with rosidl) for
-mros2 (the mros2-* subcommands).
+mros2. Definitions come from source trees (--workspace WS) and installed
+prefixes (--prefix PREFIX); without --prefix, from the ROS environment.
 
-Generator mode, with gencpp's arguments and one or more files of a package
-(catkin runs it once per package, with all its files):
-  genmros generate FILE.msg|FILE.srv -p PKG -o OUTDIR [-I PKG:DIR ...] ...
+  genmros export [--workspace WS ...] [--type PKG/TYPE ...] -o DIR
+  genmros mros2-export [--workspace WS ...] [--publish [TOPIC:]PKG/msg/TYPE ...]
+                       [--subscribe [TOPIC:]PKG/msg/TYPE ...] -o DIR'''
+# The user's subcommands in the top-level help, by what they serve. The
+# plumbing the builds run (catkin: generate, catkin-export-dir) answers
+# --help of its own but is not listed.
+SUBCOMMAND_GROUPS = (
+    ('mROS v1 (ROS 1)', ('export', 'mros-v1-fit', 'mros-v1-pc', 'mros-v1-harden',
+                         'prune-export')),
+    ('mros2 (ROS 2)', ('mros2-export', 'mros2-fit', 'mros2-harden')),
+    ('paths for builds', ('cmake-dir', 'make-fragment', 'catkin-prefix')),
+)
 
-Export mode, what one firmware needs:
-  genmros export [--workspace WS ...] [--package PKG ...] [--type PKG/TYPE ...] -o DIR ...
 
-mros2 (ROS 2), what one firmware needs, with its templates.hpp:
-  genmros mros2-export [--workspace WS ...] [--type PKG/msg/TYPE ...]
-                       [--publish [TOPIC:]T ...] [--subscribe [TOPIC:]T ...] -o DIR
-  genmros mros2-fit --rtps-config rtps/config.h [--receive-limit N] [--mros2-root DIR]
-                    [--publish [TOPIC:]T ...] [--subscribe [TOPIC:]T ...]
+class _Subcommands:
+    """argparse's subparsers, keeping each subcommand's one-line summary for
+    the grouped top-level help instead of argparse's flat list."""
 
-Every subcommand has --help.'''
+    def __init__(self, action):
+        self.action = action
+        self.summaries = {}
+
+    def add_parser(self, name, help, **keywords):
+        self.summaries[name] = help
+        return self.action.add_parser(name, **keywords)
+
+    def listing(self):
+        """The groups of SUBCOMMAND_GROUPS, one line per subcommand."""
+        width = max(len(name) for _, names in SUBCOMMAND_GROUPS for name in names)
+        lines = []
+        for title, names in SUBCOMMAND_GROUPS:
+            lines.append('%s:' % title)
+            lines += [textwrap.fill(self.summaries[name], 79, initial_indent='  %-*s  ' % (
+                width, name), subsequent_indent=' ' * (width + 4)) for name in names]
+        return '\n'.join(lines)
 
 
 # Options more than one subcommand takes, each defined once.
@@ -56,11 +80,21 @@ def _add_types(parser, default):
                              '(PKG/SrvRequest) (repeatable; default: %s)' % default)
 
 
-def _add_msg_paths(parser, default):
+def _add_definition_places(parser, prefix_default, workspace_help='a source tree'):
+    """Where definitions are, with one name for each kind of place on every
+    subcommand: --workspace (a source tree) and --prefix (an installed
+    prefix). The names they had are hidden aliases: --underlay (a prefix)
+    and --msg-path (either, told apart by its share/), which the CMake
+    module's PACKAGE_PATHS and the make fragment's MROS_MSG_PATHS pass."""
+    parser.add_argument('--workspace', dest='workspaces', action='append', default=[],
+                        metavar='WS', help='%s, searched for package.xml (repeatable)'
+                                           % workspace_help)
+    parser.add_argument('--prefix', dest='prefixes', action='append', metavar='PREFIX',
+                        help='an installed prefix (share/<pkg>/msg), or an export dir '
+                             '(repeatable; default: %s)' % prefix_default)
+    parser.add_argument('--underlay', dest='prefixes', action='append', help=argparse.SUPPRESS)
     parser.add_argument('--msg-path', dest='msg_paths', action='append', default=[],
-                        metavar='DIR', help='where packages are: a source tree (searched for '
-                                            'package.xml) or an installed prefix (with '
-                                            'share/<pkg>/msg) (repeatable; default: %s)' % default)
+                        help=argparse.SUPPRESS)
 
 
 def _add_source_export_dir(parser, use):
@@ -112,7 +146,8 @@ def _add_app(parser, types_default="the app's app.json"):
     parser.add_argument('--mros-root', metavar='DIR',
                         help='the mROS v1 checkout (default: the one APP_DIR is in, ../..)')
     _add_types(parser, types_default)
-    _add_msg_paths(parser, "app.json's catkin_ws_dir and the ROS environment")
+    _add_definition_places(parser, "app.json's catkin_ws_dir, else the ROS environment",
+                           "a source tree (default: app.json's catkin_ws_dir)")
 
 
 # The subcommands.
@@ -153,19 +188,14 @@ def _add_export(subparsers):
                     'per-firmware aggregates message_headers.h, message_class_specialization.h '
                     'and msg_max_size.h for the selected types. Without --package or --type: '
                     'every type in the workspaces.')
-    parser.add_argument('--workspace', dest='workspaces', action='append', default=[], metavar='WS',
-                        help='catkin/colcon workspace or source tree, searched for packages '
-                             '(repeatable)')
+    _add_definition_places(parser, "the ROS environment: rospkg's packages on ROS_PACKAGE_PATH, "
+                                   'then the spaces on CMAKE_PREFIX_PATH',
+                           'a catkin/colcon workspace or source tree')
     parser.add_argument('--package', dest='packages', action='append', default=[],
                         metavar='PKG', help='export every type of PKG (repeatable)')
     _add_types(parser, 'every type of --package, else of --workspace')
     parser.add_argument('-o', dest='output_dir', required=True, metavar='DIR',
                         help='include root to write to')
-    _add_msg_paths(parser, 'the ROS environment')
-    parser.add_argument('--underlay', dest='prefixes', action='append', metavar='PREFIX',
-                        help='installed prefix holding share/<pkg>/msg, instead of the ROS '
-                             "environment (repeatable; default: rospkg's packages on "
-                             'ROS_PACKAGE_PATH, then the spaces on CMAKE_PREFIX_PATH)')
     _add_source_export_dir(parser, ': an underlay whose headers serve where they have the form '
                                    'asked for (heap storage, full text), so that only the '
                                    'aggregates are written')
@@ -305,7 +335,7 @@ def _add_mros_v1_harden(subparsers):
 
 def _add_mros2_harden(subparsers):
     parser = subparsers.add_parser(
-        'mros2-harden', help="[mros2] apply genmros' patch set to an mros2 checkout",
+        'mros2-harden', help="apply genmros' patch set to an mros2 checkout",
         description="Apply genmros' patch set for mros2 (made for v0.5.4: one writer per "
                     'publisher; the checked receive, which drops and counts a sample that does '
                     "not decode, with genmros' message headers; embeddedRTPS discovering Fast "
@@ -318,12 +348,9 @@ def _add_mros2_harden(subparsers):
 
 
 def _add_mros2_sources(parser):
-    parser.add_argument('--workspace', dest='workspaces', action='append', default=[], metavar='WS',
-                        help='ROS 2 workspace or source tree, searched for package.xml '
-                             '(repeatable)')
-    parser.add_argument('--prefix', dest='prefixes', action='append', metavar='PREFIX',
-                        help='installed ROS 2 prefix (share/<pkg>/msg, ament index), or an '
-                             "export dir's mros2/ (repeatable; default: AMENT_PREFIX_PATH)")
+    _add_definition_places(parser, 'AMENT_PREFIX_PATH; an installed ROS 2 prefix has the ament '
+                                   "index, an export dir's is its mros2/",
+                           'a ROS 2 workspace or source tree')
 
 
 def _add_mros2_endpoints(parser, instantiated):
@@ -355,7 +382,7 @@ def _add_mros2_storage(parser):
 
 def _add_mros2_export(subparsers):
     parser = subparsers.add_parser(
-        'mros2-export', help='[mros2, ROS 2] the headers one mros2 firmware needs, and its '
+        'mros2-export', help='the headers one mros2 firmware needs, and its '
                              'templates.hpp',
         description='mros2 (ROS 2): the headers of the selected ROS 2 types and every type they '
                     'contain, read with rosidl from a workspace and the installed ROS 2 packages; '
@@ -379,7 +406,7 @@ def _add_mros2_export(subparsers):
 
 def _add_mros2_fit(subparsers):
     parser = subparsers.add_parser(
-        'mros2-fit', help="[mros2, ROS 2] a firmware's endpoints against its board's settings",
+        'mros2-fit', help="a firmware's endpoints against its board's settings",
         description="mros2 (ROS 2): a firmware's endpoints against its board's rtps/config.h "
                     "(type and topic name lengths, the participant's writers and readers), "
                     "its network stack's receive limit (each subscribed type's largest sample) "
@@ -400,13 +427,15 @@ SUBCOMMANDS = (_add_generate, _add_export, _add_printers, _add_export_dir_comman
 
 def build_parser():
     """genmros' argument parser, and its subcommands' parsers by name."""
-    parser = argparse.ArgumentParser(prog='genmros', description=DESCRIPTION,
+    parser = argparse.ArgumentParser(prog='genmros',
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument('--version', action='version', version='genmros %s' % __version__)
-    subparsers = parser.add_subparsers(dest='subcommand', metavar='SUBCOMMAND')
+    subparsers = _Subcommands(parser.add_subparsers(dest='subcommand', metavar='SUBCOMMAND'))
     for add in SUBCOMMANDS:
         add(subparsers)
-    return parser, subparsers.choices
+    parser.description = DESCRIPTION
+    parser.epilog = subparsers.listing() + '\n\nEvery subcommand has --help.'
+    return parser, subparsers.action.choices
 
 
 # What each subcommand runs.
@@ -427,19 +456,31 @@ def _mros2_board(options):
     return Board(options.rtps_config, options.receive_limit, options.mros2_root)
 
 
+def _definition_places(options):
+    """(workspaces, prefixes or None) of --workspace, --prefix and the
+    hidden --msg-path, which takes either."""
+    from colcon_mros.ros1.workspace import split_msg_paths
+    prefixes, workspaces = split_msg_paths(options.msg_paths)
+    prefixes = (options.prefixes or []) + prefixes
+    return options.workspaces + workspaces, prefixes or None
+
+
 def _mros2_export(options):
     from colcon_mros.ros2.environment import require_rosidl
     require_rosidl()
     from colcon_mros.export.mros2_export import export_firmware
+    options.workspaces, options.prefixes = _definition_places(options)
     result = export_firmware(options.output_dir, options.workspaces, options.prefixes,
                              options.packages, options.types, options.publish, options.subscribe,
                              options.storage, options.option_files, _mros2_board(options))
-    if result.fit:
-        for line in result.fit.warnings:
-            print('genmros: warning: %s' % line, file=sys.stderr)
-    print('genmros: %d mros2 message types, %d services in %s (%d files changed, %d removed)'
-          % (len(result.messages), len(result.services), options.output_dir,
-             len(result.changed), len(result.removed)))
+    for line in result.fit.warnings if result.fit else []:
+        print('genmros: warning: %s' % line, file=sys.stderr)
+    for line in result.notes:
+        print('genmros: note: %s' % line, file=sys.stderr)
+    print('genmros: %s, %s in %s (%s changed, %d removed)'
+          % (counted(len(result.messages), 'mros2 message type'),
+             counted(len(result.services), 'service'), options.output_dir,
+             counted(len(result.changed), 'file'), len(result.removed)))
 
 
 def _mros2_fit(options):
@@ -448,6 +489,7 @@ def _mros2_fit(options):
     from colcon_mros.export.mros2_export import firmware_fit
     if not options.publish and not options.subscribe:
         raise GenmrosError('name the endpoints: --publish/--subscribe [TOPIC:]PKG/msg/TYPE')
+    options.workspaces, options.prefixes = _definition_places(options)
     fit = firmware_fit(_mros2_board(options), options.workspaces, options.prefixes,
                        options.publish, options.subscribe, options.storage, options.option_files)
     sys.stdout.write(fit.report())
@@ -458,12 +500,9 @@ def _export(options):
     from colcon_mros.ros1.environment import require_ros_python
     require_ros_python()
     from colcon_mros.export.firmware_export import ExportRequest, export  # needs genmsg and empy
-    from colcon_mros.ros1.workspace import split_msg_paths
-    prefixes, workspaces = split_msg_paths(options.msg_paths)
-    prefixes = (options.prefixes or []) + prefixes
+    workspaces, prefixes = _definition_places(options)
     result = export(ExportRequest(
-        output_dir=options.output_dir, prefixes=prefixes or None,
-        workspaces=options.workspaces + workspaces,
+        output_dir=options.output_dir, prefixes=prefixes, workspaces=workspaces,
         package_names=options.packages, type_names=options.types,
         variable_budget=options.variable_size_budget, template_dir=options.template_dir,
         only=options.only or EXPORT_PARTS[0], record=options.record,
@@ -476,8 +515,9 @@ def _export(options):
         if not options.quiet:
             print('genmros: the headers in %s are up to date' % options.output_dir)
     else:
-        print('genmros: exported %d message and %d service types to %s'
-              % (len(result.messages), len(result.services), options.output_dir))
+        print('genmros: exported %s and %s to %s'
+              % (counted(len(result.messages), 'message type'),
+                 counted(len(result.services), 'service type'), options.output_dir))
 
 
 def _make_fragment(options):
@@ -509,11 +549,21 @@ def _catkin_export_dir(options):
     configure_export_dir(options.export_dir, options.cmake_file, options.cmake_module)
 
 
+def _package_paths(options):
+    """--workspace, --prefix and --msg-path as the one list of package paths
+    an mROS v1 app's build takes (its make fragment's MROS_MSG_PATHS)."""
+    for prefix in options.prefixes or []:
+        if not os.path.isdir(os.path.join(prefix, 'share')):
+            raise GenmrosError('not an installed prefix (no share/): give a source tree with '
+                               '--workspace', prefix)
+    return options.workspaces + (options.prefixes or []) + options.msg_paths
+
+
 def _mros_v1_pc(options):
     from colcon_mros.library_tools.mros_v1.pc_target import build
     program = build.build(build.PcBuild(
         app_dir=options.app_dir, mros_root=options.mros_root, target=options.target,
-        build_dir=options.build_dir, types=options.types, msg_paths=options.msg_paths,
+        build_dir=options.build_dir, types=options.types, msg_paths=_package_paths(options),
         storage=options.storage, option_files=options.option_files,
         definition_text=options.definition_text, jobs=options.jobs,
         fit_check=not options.no_fit_check, fit_strict=options.fit_strict,
@@ -537,7 +587,7 @@ def _mros_v1_fit(options):
                                        options.library_settings, *form)
     elif options.app_dir:
         fit, settings = app_fit(App(*find_app(options.app_dir, options.mros_root)),
-                                options.types, options.msg_paths, options.library_settings,
+                                options.types, _package_paths(options), options.library_settings,
                                 *form)
     else:
         raise GenmrosError('give an app directory, or --export-dir')
@@ -578,7 +628,8 @@ def main(argv=None):
     if argv and not argv[0].startswith('-') and argv[0] not in subcommands:
         genmros.print_usage(sys.stderr)
         print("genmros: error: unknown subcommand '%s' (the subcommands: %s)"
-              % (argv[0], ', '.join(subcommands)), file=sys.stderr)
+              % (argv[0], ', '.join(name for _, names in SUBCOMMAND_GROUPS for name in names)),
+              file=sys.stderr)
         return 2
     options, unknown = genmros.parse_known_args(argv)
     if unknown and options.subcommand is not None:

@@ -7,5 +7,6 @@ participant (dds_peer), random ROS 2 instances and rosbags' definitions
 stand-in of mros2's runtime calls (mros2_runtime/), a stand-in of
 embeddedRTPS and CMSIS to compile the user's own src/mros2.cpp
 (mros2_library/), and a genmros app on the user's mros2-posix against an
-rclpy node (mros2_posix, mros2_posix_app/). Each of them imports this
+rclpy node (mros2_posix, mros2_posix_app/). For both: where ROS is, read
+from the environment as genmros reads it (ros_paths). Each of them imports this
 package from the repository; none imports the others."""

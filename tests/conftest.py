@@ -7,6 +7,7 @@ import sys
 import pytest
 
 import built_workspace
+from testing import ros_paths
 from user_checkouts import CHECKOUTS
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -89,3 +90,9 @@ def test_ws_export(tmp_path_factory):
 def ros_workspace():
     """test_ws built with catkin_make: the ROS nodes the mROS v1 apps talk to."""
     return built_workspace.workspace()
+
+
+@pytest.fixture(scope='session')
+def ros2_prefixes():
+    """The installed ROS 2 prefixes (testing.ros_paths)."""
+    return ros_paths.ros2_prefixes()

@@ -7,7 +7,8 @@ bounded storage and its options files (:mod:`.storage`), the one order types
 are exported in (:mod:`.closure`), empy rendering and static headers
 (:mod:`.render`, ``support/mros_message_containers.h``), atomic writes
 (:mod:`.output`), a library's settings and the fit line (:mod:`.settings`),
-and the choices the command line offers (:mod:`.defaults`).
+the choices the command line offers (:mod:`.defaults`), and how messages
+count things (:mod:`.wording`).
 
 It knows no ROS version, no mROS line and no build tool: it imports only
 itself and :mod:`colcon_mros.errors`, and names no library setting.

@@ -80,17 +80,19 @@ def _value(name, raw, seen):
         return None
 
 
-def read_settings(paths):
+def read_settings(paths, role='the library settings', fix=None):
     """{name: Setting} of the numeric #defines and constants in paths (a
     later file's setting of a name does not replace an earlier one's: list
-    the file the build includes first first)."""
+    the file the build includes first first). role names the files in the
+    error a missing one gives, fix says what to do about it."""
     raw = {}
     for path in paths:
         try:
             with open(path, encoding='utf-8', errors='replace') as stream:
                 text = stream.read()
         except OSError as error:
-            raise GenmrosError('cannot read the library settings: %s' % error.strerror, path)
+            raise GenmrosError('cannot read %s: %s%s' % (role, error.strerror,
+                                                          '; ' + fix if fix else ''), path)
         found = [(number, match.group(1), match.group(2))
                  for number, match in enumerate(map(_DEFINE.match, text.splitlines()), 1)
                  if match]

@@ -19,24 +19,26 @@ import os
 from colcon_mros.core.output import is_generated, write_tree
 from colcon_mros.core.settings import read_settings
 from colcon_mros.core.storage import storage_for
-from colcon_mros.errors import GenmrosError
+from colcon_mros.errors import GenmrosError, close_match
 from colcon_mros.mros2 import render
-from colcon_mros.mros2.endpoints import PUBLISH, SUBSCRIBE, Endpoint, split_endpoint
+from colcon_mros.mros2.endpoints import parse_endpoints
 from colcon_mros.mros2.fit import Fit, PublisherWriter, receive_limit
-from colcon_mros.ros2.interfaces import all_packages
+from colcon_mros.ros2.interfaces import all_packages, where_packages_come_from
 from colcon_mros.ros2.model import ModelBuilder
 
 
 class Mros2Export:
     """What an export wrote: its messages and services, changed and removed
-    paths, and the fit check's Fit where the board was given."""
+    paths, the fit check's Fit where the board was given, and the notes on
+    the endpoints' names."""
 
-    def __init__(self, messages, services, changed, removed, fit=None):
+    def __init__(self, messages, services, changed, removed, fit=None, notes=()):
         self.messages = messages
         self.services = services
         self.changed = changed
         self.removed = removed
         self.fit = fit
+        self.notes = list(notes)
 
 
 def _builder(packages, storage, option_files):
@@ -52,7 +54,8 @@ def _select(builder, package_names, type_names):
     for name in package_names:
         if name not in builder.packages:
             raise GenmrosError("unknown ROS 2 package '%s' (not in the workspace or the installed "
-                               'ROS 2 packages)' % name)
+                               'ROS 2 packages%s; %s)' % (name, close_match(name, builder.packages),
+                                                          where_packages_come_from(name)))
         for kind, type_name in sorted(builder.packages[name].interfaces):
             if kind == 'msg':
                 messages.append(builder.message('%s/msg/%s' % (name, type_name)))
@@ -95,27 +98,22 @@ class Board:
         self.receive_limit_text = receive_limit_text
         self.mros2_root = mros2_root
 
-    def fit(self, endpoints):
-        """The Fit of endpoints to this board."""
-        return Fit(endpoints, read_settings([self.rtps_config]),
+    def fit(self, endpoints, notes=()):
+        """The Fit of endpoints to this board, with notes on their names."""
+        settings = read_settings(
+            [self.rtps_config], "the board's rtps/config.h (--rtps-config, RTPS_CONFIG)",
+            "give the rtps/config.h the firmware compiles with (the mros2 port's "
+            'include/rtps/config.h, or its own)')
+        return Fit(endpoints, settings,
                    receive_limit(self.receive_limit_text),
-                   PublisherWriter(self.mros2_root) if self.mros2_root else None)
-
-
-def _endpoints(builder, publish, subscribe):
-    endpoints = []
-    for direction, texts in ((PUBLISH, publish), (SUBSCRIBE, subscribe)):
-        for text in texts:
-            topic, type_name = split_endpoint(text)
-            endpoints.append(Endpoint(direction, topic, builder.message(type_name)))
-    return endpoints
+                   PublisherWriter(self.mros2_root) if self.mros2_root else None, notes)
 
 
 def firmware_fit(board, workspaces=(), prefixes=None, publish=(), subscribe=(), storage='heap',
                  option_files=()):
     """The Fit of a firmware's endpoints (TOPIC:TYPE or TYPE texts) to a Board."""
     builder = _builder(all_packages(workspaces, prefixes), storage, option_files)
-    return board.fit(_endpoints(builder, publish, subscribe))
+    return board.fit(*parse_endpoints(publish, subscribe, builder.message))
 
 
 def export_firmware(output_dir, workspaces=(), prefixes=None, package_names=(), type_names=(),
@@ -124,8 +122,8 @@ def export_firmware(output_dir, workspaces=(), prefixes=None, package_names=(), 
     with a Board whose rtps_config is given, refuse the misfits first."""
     packages = all_packages(workspaces, prefixes)
     builder = _builder(packages, storage, option_files)
-    endpoints = _endpoints(builder, publish, subscribe)
-    fit = board.fit(endpoints) if board and board.rtps_config else None
+    endpoints, notes = parse_endpoints(publish, subscribe, builder.message)
+    fit = board.fit(endpoints, notes) if board and board.rtps_config else None
     if fit:
         fit.refuse()
     if not package_names and not type_names and not publish and not subscribe:
@@ -145,4 +143,4 @@ def export_firmware(output_dir, workspaces=(), prefixes=None, package_names=(), 
     changed, removed = write_tree(
         output_dir, files, drop=lambda relative: is_generated(os.path.join(output_dir, relative)))
     return Mros2Export([m for m in contained if m.kind == 'msg'], services, changed, removed,
-                       fit)
+                       fit, notes)

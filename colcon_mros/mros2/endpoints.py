@@ -4,9 +4,15 @@ An endpoint is a direction, a topic and a message type (the ROS 2 model's),
 given as ``TOPIC:TYPE``, or a type alone where the topic is not known (the
 headers and templates.hpp need only the type; the fit check then skips the
 topic rules and counts one endpoint per type).
+
+A topic is held to ROS 2's name rules as mros2 uses a name: it sends
+``"rt/" + name`` as the app passes it and expands nothing, so a name ROS 2
+refuses (or one it would expand) is one no ROS node ever matches.
 """
 
-from colcon_mros.errors import GenmrosError
+import re
+
+from colcon_mros.errors import GenmrosError, GenmrosProblems
 from colcon_mros.mros2.cpp import CppMessageName
 
 PUBLISH = 'publish'
@@ -28,16 +34,72 @@ class Endpoint:
         return '%s %s %s' % (self.direction, topic, self.message.full_name)
 
 
+# What a ROS 2 name may hold besides '/' between its tokens.
+_NAME_CHARACTER = re.compile(r'[A-Za-z0-9_/]')
+
+
+def topic_name_problems(topic):
+    """Why ROS 2 refuses topic as mros2 sends it (a leading '/' taken off
+    already): the rules it breaks, or [] for a good name."""
+    problems = []
+    if '~' in topic:
+        problems.append("'~' (mros2 expands no node namespace: write the name out)")
+    if '{' in topic or '}' in topic:
+        problems.append("'{}' (mros2 expands no substitution: write the name out)")
+    others = sorted({c for c in topic if not _NAME_CHARACTER.match(c)} - set('~{}'))
+    if others:
+        problems.append('%s (a ROS 2 name holds only A-Z, a-z, 0-9, _ and /)'
+                        % ', '.join(repr(c) for c in others))
+    if '//' in topic:
+        problems.append("'//' (an empty token)")
+    digits = [token for token in topic.split('/') if token[:1].isdigit()]
+    if digits:
+        problems.append('%s starting with a digit' % ', '.join("'%s'" % t for t in digits))
+    if topic.endswith('/'):
+        problems.append("a trailing '/'")
+    return problems
+
+
 def split_endpoint(text):
-    """'TOPIC:TYPE' -> (topic, type); 'TYPE' -> (None, type). ROS names
-    have no ':', so the first one separates them; a leading '/' is the
-    root namespace mros2 leaves out."""
+    """'TOPIC:TYPE' -> (topic, type, notes); 'TYPE' -> (None, type, []).
+    ROS names have no ':', so the first one separates them. A bad topic
+    name is refused, with every rule it breaks; a leading '/' (the root
+    namespace) is taken off, with a note that the app must do the same."""
     topic, colon, type_name = text.partition(':')
     if not colon:
-        return None, text
+        return None, text, []
     if not topic.strip('/') or not type_name:
         raise GenmrosError("'%s' is not TOPIC:TYPE or TYPE" % text)
-    return topic.lstrip('/'), type_name
+    notes = []
+    if topic.startswith('/'):
+        notes.append("topic '%s': the app passes it to mros2 as '%s' (mros2 sends \"rt/\" and "
+                     "the name as given: '%s' would go out as 'rt/%s', which no ROS node "
+                     'matches)' % (topic, topic[1:], topic, topic))
+        topic = topic[1:]
+    problems = topic_name_problems(topic)
+    if problems:
+        raise GenmrosError("topic '%s' (in '%s'): ROS 2 refuses a name with %s, so no ROS node "
+                           'would match it' % (topic, text, '; '.join(problems)))
+    return topic, type_name, notes
+
+
+def parse_endpoints(publish, subscribe, message_of):
+    """The Endpoints of --publish and --subscribe texts ('TOPIC:TYPE' or
+    'TYPE'), their messages from message_of(type name), and the notes on
+    their names; every bad topic name is refused at once, one line each."""
+    endpoints, notes, problems = [], [], []
+    for direction, texts in ((PUBLISH, publish), (SUBSCRIBE, subscribe)):
+        for text in texts:
+            try:
+                topic, type_name, endpoint_notes = split_endpoint(text)
+            except GenmrosError as error:
+                problems.append('--%s %s' % (direction, error))
+                continue
+            notes += endpoint_notes
+            endpoints.append(Endpoint(direction, topic, message_of(type_name)))
+    if problems:
+        raise GenmrosProblems(problems)
+    return endpoints, notes
 
 
 def topics_known(endpoints):

@@ -55,14 +55,16 @@ class Fit:
     rtps/config.h); receive_limit: a Setting of the largest datagram the
     board's network stack takes, or None; publisher_writer: a
     PublisherWriter, or None where the mros2 checkout is not known.
-    misfits and warnings are the lines; notes say what was not checked."""
+    misfits and warnings are the lines; notes say what was not checked,
+    after name_notes (what the app must do with the topic names)."""
 
-    def __init__(self, endpoints, settings, receive_limit=None, publisher_writer=None):
+    def __init__(self, endpoints, settings, receive_limit=None, publisher_writer=None,
+                 name_notes=()):
         self.endpoints = endpoints
         self.settings = settings
         self.misfits = []
         self.warnings = []
-        self.notes = []
+        self.notes = list(name_notes)
         if not topics_known(endpoints):
             self.notes.append('topics not given for every endpoint (--publish/--subscribe '
                               'TOPIC:TYPE): topic names not checked, one endpoint counted per '
@@ -110,7 +112,7 @@ class Fit:
         elif not publisher_writer.has_writer:
             self.misfits.append(
                 "%s:%d: the firmware: its %d publishers need a Publisher with a writer of its "
-                "own; this mros2's sends every message through the last one created "
+                "own; this mros2 sends every message through the last one created "
                 "(mros2::pub_ptr): apply genmros' mros2 patch set (genmros mros2-harden)"
                 % (publisher_writer.path, publisher_writer.line, count))
 
@@ -150,7 +152,8 @@ def receive_limit(text):
     if not colon or not path:
         raise GenmrosError("--receive-limit '%s' is neither a number of bytes nor FILE:NAME"
                            % text)
-    settings = read_settings([path])
+    settings = read_settings([path], "the receive limit's file (--receive-limit FILE:NAME)",
+                             "give the port's header that sets NAME (lwipopts.h, say)")
     if name not in settings:
         raise GenmrosError('sets no number %s (--receive-limit)' % name, path)
     return settings[name]

@@ -112,6 +112,15 @@ def installed_packages(prefixes):
     return packages
 
 
+def where_packages_come_from(package):
+    """Where an installed ROS 2 package package comes from, for the line of
+    an unknown one: a sourced distribution, or, where the OS has none
+    (Debian 12), ROS 2's wheel of it in a venv (docs/mros2.md)."""
+    return ('AMENT_PREFIX_PATH or --prefix names the installed ones; where no ROS 2 '
+            'distribution is installed, as on Debian 12, a venv with the wheel %s holds it: '
+            '--prefix VENV, docs/mros2.md' % ('ros-' + package.replace('_', '-')))
+
+
 def ament_prefixes():
     """The prefixes of the sourced ROS 2 environment (AMENT_PREFIX_PATH)."""
     return [p for p in os.environ.get('AMENT_PREFIX_PATH', '').split(os.pathsep) if p]

@@ -14,6 +14,7 @@ per-type sizes. C++ spelling is :mod:`colcon_mros.mros2.cpp`'s job.
 from colcon_mros.core.closure import contained_first
 from colcon_mros.core.storage import FieldShape
 from colcon_mros.errors import GenmrosError, close_match
+from colcon_mros.ros2.interfaces import where_packages_come_from
 from colcon_mros.ros2.parse import parse_interface
 
 # rosidl's IDL number types: their CDR size, which is also their alignment.
@@ -192,11 +193,13 @@ def _type_text(element, number_type, message, container):
 
 class ModelBuilder:
     """Builds the models of the types of a set of packages, each once, the
-    types they contain first."""
+    types they contain first. where_missing(package) says where a package
+    not among them would come from."""
 
-    def __init__(self, packages, storage):
+    def __init__(self, packages, storage, where_missing=where_packages_come_from):
         self.packages = packages
         self.storage = storage
+        self.where_missing = where_missing
         self._parsed = {}
         self._messages = {}
         self._services = {}
@@ -210,9 +213,9 @@ class ModelBuilder:
     def _interface(self, package, kind, name, path=None, line=None):
         if package not in self.packages:
             raise GenmrosError("unknown package '%s' of type '%s/%s/%s' (not in the workspace or "
-                               'the installed ROS 2 packages%s)'
-                               % (package, package, kind, name, close_match(package, self.packages)),
-                               path, line)
+                               'the installed ROS 2 packages%s; %s)'
+                               % (package, package, kind, name, close_match(package, self.packages),
+                                  self.where_missing(package)), path, line)
         try:
             return self.packages[package].interface(kind, name)
         except GenmrosError as error:

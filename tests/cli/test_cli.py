@@ -3,9 +3,12 @@ line names its subcommand, and an unknown one is named as unknown."""
 
 import pytest
 
-from colcon_mros.cli import build_parser, main
+from colcon_mros.cli import SUBCOMMAND_GROUPS, build_parser, main
 
 SUBCOMMANDS = list(build_parser()[1])
+USER_SUBCOMMANDS = [name for _, names in SUBCOMMAND_GROUPS for name in names]
+# What catkin runs: it answers --help, but the top-level help leaves it out.
+PLUMBING = ['generate', 'catkin-export-dir']
 
 
 def test_the_parser_has_the_subcommands_the_docs_describe():
@@ -21,13 +24,42 @@ def test_every_subcommand_has_help(subcommand, capsys):
     assert capsys.readouterr().out.startswith('usage: genmros %s' % subcommand)
 
 
-def test_top_level_help_lists_the_subcommands(capsys):
+def test_top_level_help_groups_the_users_subcommands_and_hides_the_plumbing(capsys):
     with pytest.raises(SystemExit):
         main(['--help'])
     out = capsys.readouterr().out
-    assert 'genmros generate FILE.msg|FILE.srv -p PKG -o OUTDIR' in out
-    for subcommand in SUBCOMMANDS:
-        assert '\n    %s' % subcommand in out
+    assert sorted(USER_SUBCOMMANDS + PLUMBING) == sorted(SUBCOMMANDS)
+    groups = out[out.index('mROS v1 (ROS 1):'):]
+    listed = [line.split()[0] for line in groups.splitlines()
+              if line.startswith('  ') and not line.startswith('   ')]
+    assert listed == USER_SUBCOMMANDS
+    assert [line for line in groups.splitlines() if line.endswith(':')] == [
+        'mROS v1 (ROS 1):', 'mros2 (ROS 2):', 'paths for builds:']
+    for plumbing in PLUMBING:
+        assert '\n  %s ' % plumbing not in out and 'genmros %s' % plumbing not in out
+
+
+@pytest.mark.parametrize('subcommand, old, new', [
+    ('export', '--underlay', '--prefix'), ('export', '--msg-path', '--prefix'),
+    ('mros2-export', '--msg-path', '--prefix'), ('mros-v1-fit', '--underlay', '--prefix')])
+def test_old_option_names_are_hidden_aliases(subcommand, old, new, capsys):
+    with pytest.raises(SystemExit):
+        main([subcommand, '--help'])
+    help_text = capsys.readouterr().out
+    assert '--workspace WS' in help_text and '%s PREFIX' % new in help_text
+    assert '--underlay' not in help_text and '--msg-path' not in help_text
+    parser = build_parser()[1][subcommand]
+    required = ['-o', 'out'] if subcommand.endswith('export') else []
+    options = parser.parse_args(required + [old, '/somewhere'])
+    assert '/somewhere' in (options.prefixes or []) + options.msg_paths
+
+
+def test_one_name_for_each_kind_of_place_on_every_subcommand(capsys):
+    for subcommand in ('export', 'mros-v1-fit', 'mros-v1-pc', 'mros2-export', 'mros2-fit'):
+        with pytest.raises(SystemExit):
+            main([subcommand, '--help'])
+        help_text = capsys.readouterr().out
+        assert '--workspace WS' in help_text and '--prefix PREFIX' in help_text, subcommand
 
 
 def test_no_arguments_is_one_line_and_exit_2(capsys):
@@ -41,7 +73,7 @@ def test_an_unknown_subcommand_is_named_with_the_list(argv, capsys):
     assert main(argv) == 2
     assert capsys.readouterr().err.splitlines()[-1] == (
         "genmros: error: unknown subcommand '%s' (the subcommands: %s)"
-        % (argv[0], ', '.join(SUBCOMMANDS)))
+        % (argv[0], ', '.join(USER_SUBCOMMANDS)))
 
 
 def test_generate_reads_its_files(tmp_path, capsys):

@@ -121,7 +121,7 @@ def test_export_with_a_record_does_nothing_until_something_changes(tmp_path):
     arguments = ['--workspace', 'ws', '--type', 'demo/Lamp', '-o', 'out', '--record', 'out.d']
     cwd = str(tmp_path)
     first = _export(*arguments, cwd=cwd)
-    assert first.stdout == 'genmros: exported 1 message and 0 service types to out\n', first.stdout
+    assert first.stdout == 'genmros: exported 1 message type and 0 service types to out\n', first.stdout
     header = str(tmp_path / 'out' / 'demo' / 'Lamp.h')
     written = os.stat(header).st_mtime_ns
 

@@ -95,7 +95,7 @@ def test_each_rule_names_the_setting_its_line_and_the_value_it_needs(tmp_path):
         '--receive-limit 100: test_interface_files/msg/BasicTypes: a sample of up to 48 bytes '
         'in one datagram, RTPS around it needs the receive limit >= 124 (it is 100)',
         "%s:3: the firmware: its 2 publishers need a Publisher with a writer of its own; this "
-        "mros2's sends every message through the last one created (mros2::pub_ptr): apply "
+        "mros2 sends every message through the last one created (mros2::pub_ptr): apply "
         "genmros' mros2 patch set (genmros mros2-harden)" % header,
     ]
     assert fit.warnings == [

@@ -219,7 +219,8 @@ def test_template_directory_override(tmp_path):
 
 
 @pytest.mark.parametrize('arguments, expected', [
-    (['--help'], ['genmros generate FILE.msg|FILE.srv -p PKG -o OUTDIR', 'genmros export']),
+    (['--help'], ['genmros export', 'genmros mros2-export']),
+    (['generate', '--help'], ['genmros generate [-h]', '-p PACKAGE', '-o OUTPUT_DIR']),
     (['export', '--help'], ['--workspace WS', '--package PKG', '--type PKG/TYPE', '--variable-size-budget']),
 ])
 def test_help_describes_both_modes(arguments, expected):
