@@ -1,9 +1,11 @@
-"""Another python3 first on PATH (a venv, pyenv, conda): the README's fix works.
+"""Another python3 first on PATH (a venv, pyenv, conda): docs/install.md's fix works.
 
 catkin's CMake takes the first python3 on PATH, which cannot import catkin_pkg,
 even under Debian's /usr/bin/colcon; -DPYTHON_EXECUTABLE=/usr/bin/python3 or
-/usr/bin first on PATH gives it Debian's, and genmros then runs. The README
-says exactly these.
+/usr/bin first on PATH gives it Debian's, and genmros then runs. ament's CMake
+finds Python with FindPython3, which -DPYTHON_EXECUTABLE does not reach:
+an ROS 2 interface package needs -DPython3_EXECUTABLE=/usr/bin/python3.
+docs/install.md says exactly these.
 """
 
 import os
@@ -19,6 +21,9 @@ from fixtures.build_integration.tools import TEST_WS_SRC, run, user_environment
 pytestmark = pytest.mark.slow
 
 FIX = '-DPYTHON_EXECUTABLE=/usr/bin/python3'
+AMENT_FIX = '-DPython3_EXECUTABLE=/usr/bin/python3'
+TEST_WS_ROS2_BASE = os.path.join(os.path.dirname(os.path.dirname(TEST_WS_SRC)), 'test_ws_ros2',
+                                 'src', 'mros2_base_msgs')
 HEADER = os.path.join('share', 'genmros', 'include', 'mros_test_base', 'Vector3i.h')
 
 
@@ -67,3 +72,18 @@ def test_usr_bin_first_on_path_is_a_fix(environment, tmp_path):
     workspace = _workspace(str(tmp_path / 'colcon'))
     run(['colcon', 'build'], workspace, fixed)
     assert os.path.isfile(os.path.join(workspace, 'install', 'mros_test_base', HEADER))
+
+
+def test_an_ament_interface_package_needs_the_python3_fix_and_works_with_it(environment,
+                                                                            tmp_path):
+    workspace = str(tmp_path)
+    shutil.copytree(TEST_WS_ROS2_BASE, os.path.join(workspace, 'src', 'mros2_base_msgs'))
+    failed = run(['colcon', 'build', '--cmake-args', FIX], workspace, environment, check=False)
+    assert failed.returncode != 0 and "No module named 'ament_package'" in failed.stdout, \
+        failed.stdout[-3000:]
+    shutil.rmtree(os.path.join(workspace, 'build'))
+    run(['colcon', 'build', '--cmake-args', FIX, AMENT_FIX], workspace, environment)
+    headers = [os.path.join(directory, 'stamp.hpp')
+               for directory, _, names in os.walk(os.path.join(workspace, 'install'))
+               if 'stamp.hpp' in names]
+    assert any('mros2_base_msgs::msg::dds_::Stamp_' in open(path).read() for path in headers)
