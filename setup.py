@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """colcon-mros' build: setup.cfg holds everything but one step.
 
 At install, each data file named ``*.in`` is written without the suffix,

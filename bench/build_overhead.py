@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """What genmros adds to a catkin or colcon build: build time with genmros
 enabled divided by build time with it disabled (ROS_LANG_DISABLE=genmros),
 measured side by side on two copies of the same workspace.

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """How fast genmros generates, side by side with gencpp in one run.
 
     /usr/bin/python3 bench/export_speed.py [--rounds N]

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """How genmros' generator scales with deep, wide and long definitions.
 
     /usr/bin/python3 bench/generator_scaling.py [--baseline CHECKOUT]

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Throughput and latency of the real mROS v1 library on the PC target
 against roscpp, side by side in one run: the library's talker
 (bench/mros_v1_pc/, built natively by genmros mros-v1-pc with

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # genmros.mk: mROS message headers for an mROS v1 app built with make.
 #
 # mROS v1 apps (mros_ws/<app>/Makefile) build with make, not CMake. An app's

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # mros2 (ROS 2) message headers for a firmware build (plain CMake,
 # cross-compiling welcome: nothing of ROS is needed but the export dir and
 # genmros).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # mROS message headers for a firmware build (plain CMake, cross-compiling
 # welcome: nothing of ROS is needed but the .msg files and genmros).
 #

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Entry point of ``python3 -m colcon_mros``: the ``genmros`` command."""
 
 import sys

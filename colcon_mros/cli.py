@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The ``genmros`` command (also ``python3 -m colcon_mros``).
 
 One argparse subcommand per job, each with ``--help``, and a function that

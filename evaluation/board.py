@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The main job's board: test_ws's messages on a firmware that has the
 genmros headers and nothing of ROS or mROS, exchanged with real ROS nodes.
 

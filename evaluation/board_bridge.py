@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """The main job's transport between the board's program and the ROS graph.
 
 The board (evaluation/firmware, genmros headers and no ROS client) runs as a

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The records the board's Linux port (evaluation/firmware/port_linux.cpp)
 and a bridge exchange over the board's standard input and output: uint8
 kind, uint16 topic index and uint32 size, little-endian, then size bytes.

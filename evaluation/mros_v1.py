@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The paper's evaluation on the user's mROS v1 library (MROS_V1_ROOT), run
 by the PC target as users run it (genmros mros-v1-pc) under qemu-arm,
 against a real rosmaster and real ROS nodes. The app (evaluation/app/app.cpp)

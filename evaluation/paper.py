@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The paper's evaluation (section 6.2, Fig. 6, 7 and 9) as both runs of the
 main job check it: the board publishes mros_test/PersonalData ("Phil Woods",
 83, score counting up from 100000) to rospy and roscpp listeners, and rospy

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The main job's ROS 2 part: mros2 firmware against real rclpy nodes.
 
 1. colcon build --mros-export of test_ws_ros2 with the ROS 2 wheels'

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """The mros2 board's transport to the ROS 2 graph: an rclpy node.
 
 The board (evaluation/firmware_ros2, genmros' mros2 headers and no DDS) runs

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """The ROS 2 node of the mros2 main job: real rclpy, against the board.
 
 It takes the board's std_msgs/String and sensor_msgs/Image samples (the

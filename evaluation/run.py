@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """The main job, end to end with real tools: a ROS build emits the mROS
 headers, a firmware's CMake build uses them, and the firmware exchanges
 messages with real ROS nodes. One line per step, then a PASS/FAIL table.

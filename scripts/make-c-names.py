@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Regenerates colcon_mros/core/c_names.py: the names the C and C++
 standard headers claim, which colcon_mros/mros_v1/names.py keeps ROS names
 away from.
@@ -203,7 +204,7 @@ def docstring(compilers):
 
 
 def render(compilers, macros, global_names):
-    return (docstring(compilers) + '\n'
+    return ('# SPDX-License-Identifier: BSD-3-Clause\n' + docstring(compilers) + '\n'
             "# Object- and function-like macros (EOF, errno, INT32_MAX, assert, and the\n"
             "# gnu modes' linux and unix): a field or constant named like one would be\n"
             '# rewritten by the preprocessor.\n'

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Rewrites genmros' patch series for the mROS v1 library (colcon_mros/
 library_tools/mros_v1/patches, in the order of its series file) as `diff -u`
 writes them: each patch applied alone by GNU patch to the checkout's

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The main job (evaluation/run.py), on a fresh Debian 12 machine: installs
 # what is needed (scripts/setup.sh --tests), builds test_ws with catkin_make
 # (genmros beside gencpp and genpy, writing the export dir) and with colcon

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs what a genmros user needs on Debian 12 (debian-packages.txt; with
 # --tests also what the tests and the evaluation use, debian-test-packages.txt),
 # then the project itself as the Debian package colcon-mros, built here from

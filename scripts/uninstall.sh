@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Removes colcon-mros (not the Debian packages it needs, which other software
 # may use): the Debian package scripts/setup.sh built and installed, with the
 # genmros command, the catkin generator marker, the CMake module and make

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """What the tests, the benchmarks and the main job (evaluation/) share, and
 what is not installed. For mROS v1: a ROS graph on this machine (rosmaster,
 ROS nodes, an app of the PC target as a board) and a raw TCPROS peer. For

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """A real DDS peer for the mros2 tests: a Fast DDS participant
 (dds_raw_peer.cpp beside this file, built with Debian's libfastrtps-dev) that
 stands for the ROS 2 side, as Fast DDS is the peer mros2 is tested with.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // A Fast DDS participant that moves already-serialized ROS 2 messages: the
 // ROS 2 side of the tests (testing/dds_peer.py builds and runs it).
 //

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The reference CDR serializer the byte-exact tests hold generated C++
 message code to: Debian's real Fast-CDR 1.0.26 (libfastcdr-dev), the library
 ROS 2's Fast DDS type support serializes with, driven by a type-agnostic op

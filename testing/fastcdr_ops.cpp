@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The reference CDR serializer of the byte-exact tests: Debian's Fast-CDR
 // 1.0.26 (libfastcdr-dev), driven by a type-agnostic list of ops, one
 // Fast-CDR call per op. testing/fastcdr.py builds and runs it.

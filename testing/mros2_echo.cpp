@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The echo program of the mros2 byte-exact tests (testing/mros2_harness.py
 // compiles it with the generated headers of the types it lists in
 // MROS2_ECHO_TYPES.h). For each input line "TYPE_INDEX FRAGMENT_SIZE HEX",

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The echo program of the mros2 tests: generated headers, really compiled.
 
 :func:`build_echo` compiles testing/mros2_echo.cpp with the headers of an

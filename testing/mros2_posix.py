@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """A genmros app on a real mros2-posix, run against an rclpy node over a veth pair.
 
 tests/integrations/test_mros2_posix.py uses it: :func:`prepare_checkout` copies a user's

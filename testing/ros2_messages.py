@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """ROS 2 messages as the mros2 tests, benchmarks and evaluation see them
 from outside the generated code: random instances of a type of genmros'
 ROS 2 model (:mod:`colcon_mros.ros2.model`), the same instance as Fast-CDR

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """A ROS graph on this machine for apps the PC target built: run an mROS v1
 app beside real ROS nodes, as it will run on the board beside them.
 

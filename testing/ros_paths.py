@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Where ROS is, for the tests, the benchmarks and the main job: read from
 the environment as genmros reads it, so that they run wherever ROS is
 (a sourced /opt/ros/<distro>, a copy, Debian's /usr).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """A raw TCPROS peer for the robustness tests and the network fuzzer: it
 speaks the wire protocol byte by byte, so a test can send what real ROS
 nodes never send (truncated bodies, oversized lengths, broken headers, a

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """test_ws built with catkin_make once per process, in a temporary directory:
 the real roscpp/rospy nodes of mros_test_nodes, with gencpp, genpy and
 genmros messages (the genmros ones also exported to mros_export/, by this

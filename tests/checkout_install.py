@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """This checkout installed as a user installs it (pip), once per test run, in
 a temporary prefix: the builds the tests run (catkin, colcon, the firmware's
 CMake) use the code being edited, not the Debian package setup.sh

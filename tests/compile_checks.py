@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """What the compile tests share: the strict flags, the language modes and
 the CPUs of mROS boards every header must compile for, and a translation
 unit that instantiates the whole interface of every generated type."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Generate the C++ programs that hold genmros headers against roscpp.
 
 The field lists come straight from genmsg (not from genmros' model), so the

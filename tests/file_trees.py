@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Trees of files for the tests that write definitions and check what a run
 left: writing them, snapshotting them (contents and times), a package.xml,
 and the one-line error a bad run must give."""

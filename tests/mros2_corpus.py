@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The mros2 test corpora, shared by the tests of this directory: every
 type of ROS 2's test interface files (Debian's ros2-test-interface-files)
 and std_msgs, geometry_msgs and sensor_msgs as ROS 2 defines them (from

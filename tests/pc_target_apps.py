@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Apps on the real mROS v1 library, built by genmros mros-v1-pc from this
 checkout: the checkout's sample apps, and test apps of
 tests/fixtures/mros_v1_pc_app's Makefile and app.cfg with one of its sources

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Sanitizer reports in the output of an app built with genmros mros-v1-pc
 --sanitize, each placed in the file it belongs to: an overflow of a global
 variable belongs where the variable is defined; any other report to its

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """mROS v1 settings headers for the fit check's tests: the small ones in
 tests/fixtures/mros_v1_settings, copies of them with values changed, and a
 #define's value read by hand (not by genmros' reader, which is under test)."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Programs of the tests' own on the PC target's stand-ins (the ASP kernel,
 task stacks, lwIP and mbed in colcon_mros/library_tools/mros_v1/pc_target), configured
 from their own .cfg as an mROS v1 app is, with no mROS v1 library."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The package's levels, bottom up: the core; the front ends (ros1 | ros2);
 the back ends (mros_v1 | mros2); the export; the integrations; the tools
 that work on the user's library; the CLI. Each top-level subpackage of

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The README's main command's driver (evaluation/run.py) as it runs, with
 this checkout installed (tests/checkout_install.py): every step of the main
 job passes and its table says so, ROS 1's and then ROS 2's, with no mROS

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The user's checkouts some tests build or compile from, each named by an
 environment variable with no default (the libraries are the user's:
 docs/testing.md says how a developer gets each). Tests that need one carry

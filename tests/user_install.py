@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Installing colcon-mros outside the system package, for the tests that do
 (test_user_installs.py, test_install.py, test_noetic_layout.py): a copy of
 the sources to build from, and one install and how to run a command with it."""

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The API layer of mROS v1 (mros-lib/mros-src/api/ros.cpp), call for call
 // (the library's code, not copied: the same calls in the same order):
 // subscribe() and advertise() register the topic, its type ID, definition

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The footprint benchmark's baseline: start-up, the C library stubs and a
 // task that uses no message type. Its size is subtracted from every row.
 #include <string>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Definition-text bytes a header carries, full against compact.
 
 Prints, for the big Debian types and for the whole Debian message set (every

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Stubs of mROS v1's C library for the footprint benchmark: one topic, one
  * block, and delivery of the published block to the subscriber, as the real
  * library delivers on-board frames. Counted in the baseline. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The C library under the API layer (mros-lib's node, topic, connector and
  * protocol code), reduced to the calls ros.cpp makes: stubs in library.c. */
 #ifndef BENCH_FOOTPRINT_LIBRARY_H

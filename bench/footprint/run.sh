@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Footprint benchmark: the flash (text+data) and RAM (data+bss) message types
 # cost a firmware on each mROS CPU, -Os -fno-builtin -fno-exceptions -fno-rtti -std=gnu++98 (mROS v1's
 # flags), --gc-sections.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // One mROS task that publishes and subscribes BENCH_TYPE (from BENCH_HEADER),
 // and main(), which runs it and lets the library deliver the frame.
 #include "ros.h"

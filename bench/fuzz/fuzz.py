@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Fuzz genmros' decoders with libFuzzer (harness: fuzz_messages.cpp).
 
     /usr/bin/python3 bench/fuzz/fuzz.py [--seconds 3600] [--std c++11] [--portable]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer harness over genmros' decoders (build and run: bench/fuzz/fuzz.py).
 //
 // An input is [type selector][mode][wire image]. For the selected type it

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Fuzz the checked decode of genmros' mros2 messages with libFuzzer
 (harness: fuzz_mros2_messages.cpp).
 

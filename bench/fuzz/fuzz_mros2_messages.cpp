@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer harness over the checked decode of genmros' mros2 message classes
 // (build and run: bench/fuzz/fuzz_mros2.py).
 //

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """What genmros' libFuzzer runs share (fuzz.py, fuzz_mros2.py): running a
 harness over its corpus for a while, and the table a run ends with."""
 

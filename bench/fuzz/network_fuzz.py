@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Fuzz the mROS v1 library's network side on the PC target, loopback only.
 
     /usr/bin/python3 bench/fuzz/network_fuzz.py [--seconds 600] [--inputs N] [--seed S]

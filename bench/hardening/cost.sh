@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # What genmros' patch set for the mROS v1 library (colcon_mros/library_tools/mros_v1/patches)
 # costs in code: each C source of the library a patch changes, compiled as
 # the library's own build compiles it for the board (-Os, the board's CPU),

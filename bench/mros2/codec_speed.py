@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """How fast genmros' mros2 messages encode and decode, side by side with Fast-CDR.
 
     /usr/bin/python3 bench/mros2/codec_speed.py [--rounds N] [--seconds S] [--keep DIR]

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """What the mros2 generator adds to a ROS 2 colcon build, side by side in one run.
 
     /usr/bin/python3 bench/mros2/colcon_overhead.py [--runs 2] [--rebuilds 6] [--repeats 5]

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # mros2 footprint benchmark: the flash and RAM std_msgs/String and
 # geometry_msgs/Twist cost a Cortex-M4 firmware (arm-none-eabi-g++ -Os
 # -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16 -fno-exceptions

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The program of bench/mros2/fragment_speed.py: how long publishing a large
 // message takes through copyToBuf and through mros2's fragments, for the
 // types the script exports with genmros (frag_bench/msg/*: Items, Numbers,

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """How long mros2 takes to publish a large message in fragments, beside copyToBuf.
 
     /usr/bin/python3 bench/mros2/fragment_speed.py [--kb 1,4,16,64,256,1024]

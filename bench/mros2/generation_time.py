@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """How fast genmros generates mros2 headers, side by side with mros2's own generator.
 
     MROS2_ROOT=<mros2 checkout> /usr/bin/python3 bench/mros2/generation_time.py [--rounds N]

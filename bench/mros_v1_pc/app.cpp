@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The talker of bench/mros_v1_pc_bench.py as an mROS v1 app, for the real
 // library on the PC target: usr_task1 publishes mros_test/PersonalData on
 // /bench (score = sequence number) COUNT times at RATE per second (0: as

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # genmros' headers in the real mROS v1 library, as a new user would try them:
 # export the types of the sample apps custom_pubsub, string_pubsub and
 # image_publisher, put the export in place of each app's include/, and

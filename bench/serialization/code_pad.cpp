@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Linked between main.o and a side's object, this function of BENCH_CODE_PAD
 // bytes (never called) moves every function of the side to another offset
 // within cache lines and the decoder's 32-byte windows. run.sh builds each

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The instances the serialization benchmark encodes and decodes. Templates,
 // so one definition fills roscpp's classes and genmros' classes alike; only
 // resize(), operator[] and assignment from literals, which every storage

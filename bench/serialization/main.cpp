@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // One measurement of one side of the serialization benchmark, in a process
 // of its own. table.py runs the sides and prints the tables.
 //   bench_SIDE list                                  the instances (tab, then 1 for a large payload)

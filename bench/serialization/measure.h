@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // How one benchmark process measures one operation: a warm-up, then batches
 // of calls, and the median time per call over the batches. The compiler
 // barrier keep() makes every call's result count, so no call is optimized

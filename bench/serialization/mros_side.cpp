@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // genmros' side of the serialization benchmark (heap storage; built against
 // a bounded export, the bounded side; with BENCH_BARE_MEMCPY, the memcpy
 // floor of the same wire images).

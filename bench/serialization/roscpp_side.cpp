@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // roscpp's side of the serialization benchmark.
 #include <cstring>
 

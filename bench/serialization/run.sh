@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Serialization benchmark: genmros' headers against roscpp's and against a
 # bare memcpy, -O2, each measurement in a process of its own, in several code
 # and heap layouts (table.py).

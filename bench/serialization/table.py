@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Runs the serialization benchmark's sides and prints the table.
 
 Every measurement is a process of its own (bench_SIDE.LAYOUT time INSTANCE

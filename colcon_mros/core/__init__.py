@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The shared core both stacks' generators stand on.
 
 C++ spelling that every back end needs (:mod:`.cpp_literals`: string and

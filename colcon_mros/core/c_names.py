@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Names the C and C++ standard headers claim, which ROS names can meet.
 
 Made by scripts/make-c-names.py; do not edit by hand. Collected from the

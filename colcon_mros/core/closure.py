@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The one order both type models export in: each type after the types it contains."""
 
 

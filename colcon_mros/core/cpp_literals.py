@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """C++ literals and comments both back ends write: text, numbers and
 comment lines that compile without a warning from gnu++98 to C++17.
 

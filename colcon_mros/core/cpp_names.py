@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Which names C++ can take, and how generated code spells them.
 
 A front end accepts names C++ cannot take as they are: keywords

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The choices and defaults the command line offers.
 
 Kept free of ROS imports, so that ``genmros --help`` and the error for a

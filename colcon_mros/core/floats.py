@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Floating-point types as C++ holds them: their range, and a value rounded
 to the type (a 32-bit constant is what a C++ float holds, not the double a
 parser read). Types are named as C++ names them: 'float', 'double'."""

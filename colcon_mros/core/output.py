@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Write generated files so that a reader never sees a half-written one.
 
 Two ways, one per mode:

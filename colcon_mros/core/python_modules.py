@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """What a front end needs of this Python, checked with one clear line.
 
 A front end's parser comes with its ROS (genmsg with ROS 1, rosidl with

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Render logic-free empy templates, and read the static support headers.
 
 Every back end keeps its templates and static headers in a directory of its

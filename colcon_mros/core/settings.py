@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """A library's settings, read from its configuration headers, and the one
 line a fit check writes for a setting too small.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """How strings and variable arrays are stored: on the heap, or bounded.
 
 Heap storage (the default, and the only one catkin builds write) gives

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """How genmros' messages count things: '1 service', '2 services'."""
 
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Exports: the headers one firmware needs (``genmros export``,
 ``genmros mros2-export``), and the export dir catkin and colcon fill, with
 the run record that says when an export is up to date.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The export dir: the mROS headers of a ROS workspace, collected for firmware.
 
 catkin fills one when ``MROS_EXPORT_DIR`` is set, ``colcon build

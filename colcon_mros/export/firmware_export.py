@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Export mode: the headers a firmware needs, collected into one include root.
 
 Selects types from a workspace (and from installed packages), adds every

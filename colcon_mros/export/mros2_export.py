@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """What one mros2 firmware needs, and what one ROS 2 package's build writes.
 
 :func:`export_firmware` (``genmros mros2-export``, the CMake module's

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The mros2 half of an export dir: what ``colcon build --mros-export DIR``
 writes for the ROS 2 packages it built, and what a firmware's
 ``mros2_import_messages()`` reads::

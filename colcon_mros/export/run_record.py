@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The run record: the one rule that says whether genmros' output is up to date.
 
 catkin's generator run for a package, ``colcon build --mros-export``, and

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The build integrations: where catkin, colcon and rosidl run the
 generators, and where the CMake module and the make fragment they and a
 firmware use are.

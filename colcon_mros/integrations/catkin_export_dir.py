@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """What catkin's configure step asks genmros when MROS_EXPORT_DIR is set.
 
 ``share/genmros/cmake/genmros-extras.cmake`` runs no genmros process per

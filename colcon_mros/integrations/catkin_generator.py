@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Generator mode: a package's .msg and .srv files in, their headers out.
 
 catkin runs it once per package, with gencpp's arguments and every file of

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The colcon hook of ``colcon build --mros-export DIR``.
 
 Implements colcon-core's ``colcon_core.argument_parser`` extension point

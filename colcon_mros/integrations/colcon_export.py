@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """What ``colcon build --mros-export DIR`` exports after the build.
 
 For the ROS 2 (ament) packages it built, DIR gets its mros2 half

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Where the files genmros installs beside its Python package are.
 
 An install puts the CMake package (genmrosConfig.cmake), the CMake module

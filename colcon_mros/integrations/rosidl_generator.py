@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """rosidl_generator_mros2's entry point: what rosidl_generate_interfaces()
 runs for the mros2 generator, as rosidl_generator_cpp runs generate_cpp.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Tools that work on the user's mROS library, not only on its messages.
 
 What every mROS line's tools share is here (:mod:`.patch_series`: a patch

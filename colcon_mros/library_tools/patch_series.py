@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """A patch series for a user's library, applied by GNU patch: fixes kept as
 small unified diffs against the library's public sources (``*.patch`` in one
 directory, applied in the order of its ``series`` file, as quilt keeps

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The mros2 back end: C++ message headers for mros2 (mROS 2, ROS 2 on MCUs).
 
 :mod:`colcon_mros.mros2.cpp` spells the ROS 2 type model

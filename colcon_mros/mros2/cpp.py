@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The C++ view of the ROS 2 type model: what the mros2 templates read.
 
 Names as rosidl gives them (``pkg/msg/type_name.hpp`` declares

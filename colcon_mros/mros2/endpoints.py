@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """A firmware's endpoints: what it publishes and subscribes to.
 
 An endpoint is a direction, a topic and a message type (the ROS 2 model's),

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The fit check: a firmware's mros2 endpoints against its board's settings.
 
 The endpoints are what the firmware publishes and subscribes to: a topic

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Render mros2 headers from the ROS 2 type model: ``{relative path: text}``.
 
 One header per message (``pkg/msg/type_name.hpp``) and per service

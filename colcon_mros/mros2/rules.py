@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The rule table: what a firmware's endpoints need of its board's mros2 settings.
 
 mros2 runs on embeddedRTPS, which keeps its endpoints, names and threads in

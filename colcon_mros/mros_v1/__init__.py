@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The mROS v1 back end: C++ message headers for the mROS v1 library.
 
 :mod:`.cpp` spells the ROS 1 type model in C++, :mod:`.names` hands the

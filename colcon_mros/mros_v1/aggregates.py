@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The per-firmware aggregates: the files the mROS v1 library includes for
 the message types of one firmware, rendered from the templates in
 ``templates/``, with the defaults of :mod:`.rules`.

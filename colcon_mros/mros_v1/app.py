@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """An mROS v1 app as its own build describes it, and the headers that set
 its library's settings.
 

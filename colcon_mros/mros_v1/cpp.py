@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The C++ names of the type model: what the templates read.
 
 Wraps a :class:`colcon_mros.ros1.model.Message` or ``Service`` in a view that

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The mROS v1 choices the command line offers, free of ROS imports like
 :mod:`colcon_mros.core.defaults`."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The fit check: a firmware's message types against its mROS v1 library's settings.
 
 Each :data:`.rules.RULES` entry is checked for each type against the

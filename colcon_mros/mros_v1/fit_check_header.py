@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """``mros_v1_fit_check.h``: the rule table rendered as compile-time checks.
 
 The same :data:`.rules.RULES` the Python fit check (:mod:`.fit`) applies,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The C++ names the mROS v1 headers own, handed to the core's escaping
 (:mod:`colcon_mros.core.cpp_names`): members every message struct has,
 names a header uses unqualified, the namespaces and declarations of the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Render the mROS v1 headers from the ROS 1 type model, in the C++ names
 :mod:`colcon_mros.mros_v1.cpp` gives it.
 

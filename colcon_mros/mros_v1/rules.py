@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The rule table: what a message type needs of each mROS v1 library setting.
 
 The library keeps each TCPROS connection header a ROS node sends in a

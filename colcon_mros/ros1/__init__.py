@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The ROS 1 front end: .msg and .srv files read with genmsg.
 
 :mod:`.parse` loads genmsg specs with ``FILE:LINE`` errors (refusing the

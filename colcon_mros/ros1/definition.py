@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """A ROS definition file, named one way by every module.
 
 A ``.msg`` file defines one message type; a ``.srv`` file defines a service

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """What genmros needs of the ROS 1 installation, checked with a clear message.
 
 genmsg (the parser), empy 3 (the templates) and rospkg (where the ROS

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """MD5 sums and full definition texts, each computed once per type.
 
 genmsg's ``compute_md5`` and ``compute_full_text`` give the values the ROS

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The type model: the structure of messages and services.
 
 Built from genmsg specs (see :mod:`colcon_mros.ros1.parse`): fields and constants,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Load .msg and .srv files through genmsg, reporting problems by file and line.
 
 genmsg is the parser: it reads the declarations, resolves types, and later

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Find ROS packages and the directories that hold their .msg and .srv files.
 
 Three places hold packages: a workspace's source tree (found with catkin_pkg,

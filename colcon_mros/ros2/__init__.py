@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The ROS 2 front end: interface files read with rosidl, as a ROS 2 build reads them.
 
 :mod:`colcon_mros.ros2.interfaces` finds the packages and their ``.msg``,

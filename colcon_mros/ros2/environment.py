@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """What the ROS 2 front end needs of the installation, checked with a clear message.
 
 rosidl's Python packages (rosidl_adapter, rosidl_parser, and rosidl's

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Find ROS 2 packages and their interface files.
 
 Two places hold them, as a ROS 2 build sees them: a workspace's source tree

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The ROS 2 type model: what the mros2 back end needs of a message.
 
 Built from rosidl's definitions (:mod:`colcon_mros.ros2.parse`): members and

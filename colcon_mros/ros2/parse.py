@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Read one interface file into rosidl's IDL definitions.
 
 ``.msg`` and ``.srv`` files go through rosidl_adapter into IDL text, and

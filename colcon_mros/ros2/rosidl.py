@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """rosidl's Python helpers, from whichever rosidl line is installed.
 
 rosidl 3.3 and later (Debian 12's 3.3.1, the ROS 2 wheels' 4.x) keep them

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The board's app: the paper's evaluation (Fig. 6 and Fig. 7) and a relay of
 // four more test_ws types, on the genmros headers alone. Every message is
 // decoded with the length-checked interface and encoded anew, so what the

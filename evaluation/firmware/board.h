@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The board's side of the main job: an app written against the genmros
 // headers only (no mROS library, no ROS client). It publishes and
 // subscribes on the topics of kTopics; a port (port_linux.cpp,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The board's port for a bare-metal Cortex-M, built for its size: the app
 // runs (Fig. 6 publishes on every tick), and what it would send is counted.
 // The relays and Fig. 7 are linked in through the app's topic table.

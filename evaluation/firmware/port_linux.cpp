@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The board's port for 32-bit ARM Linux (run by qemu-arm): the app's
 // messages go through standard input and output to evaluation/board_bridge.py,
 // which carries them to and from the ROS graph; log lines go to standard

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The mros2 board of the main job: an app written against genmros' mros2
 // headers only (no mros2, no DDS). It publishes 20 samples each of
 // std_msgs/String, sensor_msgs/Image (over mros2's 100-byte buffer, so

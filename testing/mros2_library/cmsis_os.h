@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // A stand-in of the CMSIS-RTOS2 calls mros2's src/mros2.cpp makes (as
 // cmsis-posix gives them), on std::thread: enough for init, create_node and
 // the init task's wait on the host.

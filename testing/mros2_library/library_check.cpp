@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // A unit check of mros2's real src/mros2.cpp, as it is or with genmros'
 // patch series, against the embeddedRTPS stand-in (rtps/rtps.h): two
 // publishers publish once each (one sample over mros2's 100-byte buffer, so

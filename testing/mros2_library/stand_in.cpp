@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The stand-in's definitions: CMSIS-RTOS2 on std::thread, lwIP's init, and
 // where the rtps stand-in keeps what was sent and the readers made.
 #include <chrono>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # mros2-posix' top-level CMakeLists.txt includes workspace/<app>/Filelists.cmake for the
 # app's sources (apl_SRCS). app.cpp is ours, so it alone is held to -Wall -Wextra; the
 # options say which mros2 it is built against (testing/mros2_posix.py passes them).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * An mros2-posix app on genmros' message headers, answering a ROS 2 peer.
  *

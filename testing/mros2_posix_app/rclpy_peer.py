@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The ROS 2 side of the mros2-posix runs (tests/integrations/test_mros2_posix.py): an
 rclpy node that publishes raw std_msgs/String requests and takes the app's answers raw.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """colcon_mros.cli: every subcommand the parser has answers --help; a command
 line names its subcommand, and an unknown one is named as unknown."""
 

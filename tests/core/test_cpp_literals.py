@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """colcon_mros.core.cpp_literals: the C++ text and number literals both back
 ends write (each back end's constants are tested with its own type names:
 tests/mros_v1/test_cpp.py, tests/mros2)."""

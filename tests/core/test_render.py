@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """colcon_mros.core.render: empy templates, translated once into Python,
 render as empy's own interpreter renders them, in the process a real run
 has (no test runner's stdout) too; what a logic-free template may not

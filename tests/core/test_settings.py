@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The mROS v1 settings (colcon_mros.core.settings): #defines read from C
 headers as the preprocessor reads a number, with the file and line of each."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Every template of the package holds no logic (gencpp's rule, and ours:
 a back end's C++ view computes, its templates only lay out): expressions
 are names and attributes, control is for over one and if over one (or its

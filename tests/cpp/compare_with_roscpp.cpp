@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Holds genmros' headers against roscpp, type by type:
 //   - MD5 sum, data type and definition text equal roscpp's traits;
 //   - for many seeds, genmros' wire image equals roscpp's byte for byte;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Deterministic random field values for the genmros test harnesses.
 //
 // The same seed gives the same sequence in every translation unit, so a

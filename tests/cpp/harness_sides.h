@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The two sides a harness compares: roscpp's classes and genmros' classes,
 // each compiled in its own translation unit (they share names and
 // namespaces), reached through type indexes.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // A line-oriented probe of genmros' headers, for peers in other languages.
 // Reads commands on stdin, answers one line each:
 //   sample TYPE SEED   ->  HEX              (wire image of a text-mode instance)

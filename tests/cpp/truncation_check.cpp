@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Feeds genmros' deserialize every proper prefix of valid wire images, each
 // in a heap block of exactly that size (so AddressSanitizer sees any read
 // past it), and random corruptions of them. Every prefix must be refused

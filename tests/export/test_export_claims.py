@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """What genmros' generator mode leaves in an export dir (export_claims): the
 files of types no definition contains any more go, files genmros did not
 write stay, and `genmros prune-export` does the same after catkin drops a

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """colcon_mros.export.export_dir, called directly: an export dir's type list and
 CMake file, colcon's replacement of packages, and catkin's claims."""
 

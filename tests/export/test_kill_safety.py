@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """SIGKILL during an export: the output is the complete old or the complete
 new export, and the next run leaves no temporary behind.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """colcon_mros.export.run_record: the one rule for "up to date", the record
 read back, and the same record as make reads it; genmros export --record,
 which the CMake module and the make fragment run."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The Debian package as scripts/setup.sh builds it: debian/ (debhelper,
 pybuild) through dpkg-buildpackage -b, checked by lintian; what apt
 installs with it, Recommends and without. (Its version is Python's:

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Installing and uninstalling colcon-mros: scripts/setup.sh
 installs it as the Debian package colcon-mros, so dpkg owns every file of it,
 the catkin generator marker included; after scripts/uninstall.sh nothing of

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """rosdep/colcon-mros.yaml: with it among rosdep's sources, a package.xml that
 depends on genmros resolves to the Debian package colcon-mros, which the
 set-up installed. rosdep runs on sources of its own (ROSDEP_SOURCE_PATH) and

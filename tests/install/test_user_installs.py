@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """colcon-mros installed without root, and into a venv.
 
 An ordinary user (nobody, through setpriv) runs `pip install --user`; a venv

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The version is written once, in Python (colcon_mros.__version__): the
 catkin and ament manifests and the Debian changelog keep theirs, held equal
 to it here, and the CMake version file of rosidl_generator_mros2 is written

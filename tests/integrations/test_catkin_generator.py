@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """genmros as a catkin message generator, with catkin_make, catkin_make_isolated
 and catkin build, on fresh copies of test_ws's message packages.
 

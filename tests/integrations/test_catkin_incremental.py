@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Rebuilds with genmros in catkin: nothing runs when nothing changed, a
 touched .msg regenerates its type and the types that include it, an edited
 .msg reaches the devel space and the export dir, a removed export dir comes

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """cmake/mros_generate.cmake in a plain CMake firmware project
 (tests/fixtures/build_integration/firmware), found with find_package(genmros)
 as installed by the README's set-up.

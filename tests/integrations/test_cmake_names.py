@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """cmake/genmros-names.cmake is what scripts/make-cmake-names.py writes: the names
 the CMake module and the catkin generator use come from Python, and neither
 CMake file spells them again."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """colcon build --mros-export DIR on a fresh copy of test_ws's message packages.
 
 DIR sits inside the workspace, where a user is likely to put it; the second

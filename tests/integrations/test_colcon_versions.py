@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The colcon hook (colcon_mros/integrations/colcon_argument_parser.py) under each colcon-core we
 support: Debian's 0.12 (/usr/bin/colcon, with the Debian package of this
 project) and the newest on PyPI, installed here into a venv that sees

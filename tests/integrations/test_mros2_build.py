@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The ROS 2 main job: a colcon build of ROS 2 interface packages gives an
 mros2 firmware every type it uses, in the same build.
 

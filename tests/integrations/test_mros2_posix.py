@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """A real mros2-posix app on genmros' headers exchanges samples with a real rclpy node.
 
 Opt-in: MROS2_POSIX_ROOT names an assembled mros2-posix checkout (docs/mros2.md), and the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """genmros headers as a drop-in for the mROS v1 library and its apps.
 
 mROS v1 apps build with make at -std=gnu++98 for ARM boards; the headers must

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """genmros in a ROS Noetic layout, simulated on this machine.
 
 Ubuntu 20.04 + Noetic keeps ROS under /opt/ros/noetic: the message packages

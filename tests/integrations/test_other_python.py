@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Another python3 first on PATH (a venv, pyenv, conda): docs/install.md's fix works.
 
 catkin's CMake takes the first python3 on PATH, which cannot import catkin_pkg,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """colcon build of ROS 2 interface packages with the rosidl_generator_mros2 extension.
 
 A fresh copy of test_ws_ros2 (mros2_base_msgs, and mros2_test_msgs, whose

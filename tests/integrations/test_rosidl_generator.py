@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The rosidl generator's entry point (colcon_mros.integrations.rosidl_generator)
 over arguments files as rosidl_write_generator_arguments() writes them: what
 rosidl_generate_interfaces() hands it on each rosidl line. The CMake side,

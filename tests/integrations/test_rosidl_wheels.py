@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The rosidl generator on the newer rosidl of the ROS 2 wheels on PyPI (4.9):
 mros2_base_msgs of test_ws_ros2 built with CMake against the rosidl that
 scripts/setup.sh --tests installs into build/ros2-wheels (its

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The mros2 headers are byte-exact with ROS 2's serializers, both ways.
 
 Random instances of every type of ROS 2's test interface files (Debian's

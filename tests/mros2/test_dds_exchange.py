@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """A real Fast DDS participant takes what the generated code writes, and the
 generated code takes what Fast DDS' side writes, on ROS 2's topic and type
 names.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The real DDS peer the mros2 tests stand the ROS 2 side with
 (testing/dds_peer.py, testing/dds_raw_peer.cpp), held against itself: one
 Fast DDS participant's samples reach another byte for byte and in order on

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The reference serializer (testing/fastcdr.py on Debian's Fast-CDR 1.0.26)
 held to the CDR rules the byte-exact tests rely on: XCDR1 little endian, the
 encapsulation header 00 01 00 00, each value aligned to its size (8 at most)

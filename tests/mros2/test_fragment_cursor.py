@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """copyToFragBuf continues where the last fragment stopped, kept in the
 counters mros2's messages have anyway (cntSub, idxSerialized): every cut
 of every type's image comes out as copyToBuf writes it, and the count's

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Bounded storage (genmros mros2-export --storage bounded) holds every
 string and sequence inside the message: the headers need no heap, write
 what Fast-CDR writes, and refuse a sample that breaks a bound."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The mros2 fit check (colcon_mros.mros2.fit, genmros mros2-fit): each rule
 with its exact line, a firmware that fits, and mros2-export refusing a
 misfit before it writes anything.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """libFuzzer over the checked copyFromBuf of every mros2 message type and
 service half of test_ws_ros2 and of ROS 2's test interface files, for 60 s,
 seeded with Fast-CDR's bytes.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The generated headers and templates.hpp compile against mros2's runtime
 calls, in the order src/mros2.cpp (v0.5.4) makes them, -Wall -Wextra clean
 for the host and the boards' CPUs; on the host the stand-in runtime's

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Topic names held to ROS 2's rules as mros2 uses them
 (colcon_mros.mros2.endpoints): mros2 sends ``"rt/" + name`` and expands
 nothing, so genmros mros2-export and mros2-fit refuse a name no ROS node

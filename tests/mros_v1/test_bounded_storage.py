@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Bounded storage: strings and arrays inside the message, no heap,
 exact maximum sizes, and bounds that are never exceeded silently."""
 

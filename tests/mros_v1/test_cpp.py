@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """colcon_mros.mros_v1.cpp: how the type model is spelled in C++ (called directly;
 test_generation.py and the compile tests hold the headers themselves)."""
 

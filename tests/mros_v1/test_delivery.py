@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """mROS v1 delivery (mros_v1_delivery.h) keeps a large message it hands a
 subscriber off the subscriber task's stack: the library's tasks have a few
 KiB (MROS_TASK_STACK_SIZE, 2048 bytes in the samples), and a bounded

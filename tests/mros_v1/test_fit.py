@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The fit check (colcon_mros.mros_v1.fit, rules): one line per misfit and
 the warnings, against the small settings headers in
 tests/fixtures/mros_v1_settings and the real library's; the connection

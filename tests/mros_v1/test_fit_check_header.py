@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The compile-time check (colcon_mros.mros_v1.fit_check_header): the rule
 table rendered as #if/#error refuses, where the settings headers are on the
 include path, exactly what the Python fit check refuses, for the small

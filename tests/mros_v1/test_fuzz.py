@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """libFuzzer over the decoders of every test_ws type and of Image, PointCloud2,
 JointState, Odometry and MarkerArray, for 60 s, seeded with genpy's bytes.
 

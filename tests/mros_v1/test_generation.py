@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """What genmros writes: which files, for which types, and what they do when compiled."""
 
 import filecmp

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """genmros headers against genpy (rospy's message classes) for the test_ws types.
 
 genpy generates Python classes from the same .msg files; bytes made by either

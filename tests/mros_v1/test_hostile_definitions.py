@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Hostile definitions: what genmsg accepts either works in C++ or is refused.
 
 Every accepted definition gives headers that compile alone and together at

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """deserialize under AddressSanitizer and UndefinedBehaviorSanitizer.
 
 Every proper prefix of a valid wire image, each in a heap block of exactly

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """One firmware, two language modes: mROS v1's Makefiles build ros.cpp at
 -std=gnu++98, and an app may build at C++11. Every message type must then
 have one definition in both: GCC's link-time check of the one-definition

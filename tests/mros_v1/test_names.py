@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """colcon_mros.mros_v1.names: the reserved names are an explicit list, held equal
 here to what the support headers declare."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """genmros headers against roscpp and gencpp, for every Debian ROS message package.
 
 The expected values come from the real roscpp serializer and the gencpp

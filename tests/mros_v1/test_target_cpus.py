@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """genmros headers on the CPUs mROS runs on, byte for byte against roscpp.
 
 For every test_ws type and a representative set of Debian types, a program

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Malformed definitions and bad arguments: one clear line, non-zero exit, output untouched."""
 
 import os

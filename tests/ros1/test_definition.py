@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """colcon_mros.ros1.definition: the names one definition file gives."""
 
 from colcon_mros.ros1.definition import Definition, definitions_in

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The compact definition text: the same type to every ROS tool.
 
 For every Debian message type and every test_ws type, the compact text loads

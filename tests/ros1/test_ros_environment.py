@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """genmros where genmsg cannot be imported (an unsourced ROS Noetic shell, a
 pyenv or conda python3 first on PATH): one line saying what to install or
 source, no traceback, and --help and the colcon extension still load."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """genmros' ROS 2 front end reads interface files as rosidl does and says
 what is wrong with one in one line: FILE:LINE: problem, exit status 1, and
 the output directory as it was."""

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The node bench/fuzz/network_fuzz.py attacks, as an mROS v1 app: it relays
 // five ROS message types, each from src/<Type> to back/<Type>, so that after
 // the fuzzing each can be checked to cross the library's receive,

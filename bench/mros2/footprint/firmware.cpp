@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // One firmware of bench/mros2/footprint.sh: publishes a message and receives
 // one through mros2's calls, as an mros2 application does. The calls are
 // defined in testing/mros2_runtime/mros2_runtime_check.cpp (what mros2's

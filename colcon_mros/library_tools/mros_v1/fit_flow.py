@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The fit flow: which types, against which settings headers, for an app or
 an export dir; the one flow ``genmros mros-v1-pc`` (before it builds) and
 ``genmros mros-v1-fit`` (its report, :mod:`.report`) both run.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """``genmros mros-v1-fit``: an app's message types against its mROS v1
 library's settings, one table row per type.
 

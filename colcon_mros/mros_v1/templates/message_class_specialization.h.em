@@ -1,3 +1,5 @@
+@# SPDX-License-Identifier: BSD-3-Clause
+@# What it renders is free to use without notice: LICENSE's exception.
 @# Per-firmware explicit instantiations of the mROS v1 API. Context: messages.
 // message_class_specialization.h: instantiates the mROS v1 publish and
 // subscribe templates for the message types of this firmware. Included once,

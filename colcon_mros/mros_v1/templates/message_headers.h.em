@@ -1,3 +1,5 @@
+@# SPDX-License-Identifier: BSD-3-Clause
+@# What it renders is free to use without notice: LICENSE's exception.
 @# Per-firmware aggregate of the message headers. Context: messages, delivery_header and
 @# fit_check_header (their names), frame_size_macro (rules.LIBRARY_PASSES_FRAME_SIZE).
 // message_headers.h: the message types of this firmware, for the mROS v1

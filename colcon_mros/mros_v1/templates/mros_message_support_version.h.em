@@ -1,3 +1,5 @@
+@# SPDX-License-Identifier: BSD-3-Clause
+@# What it renders is free to use without notice: LICENSE's exception.
 @# The support headers' version. Context: support_version (int).
 // mros_message_support_version.h: the genmros version of the support headers
 // beside it, as major * 10000 + minor * 100 + patch. Every message header

@@ -1,3 +1,5 @@
+@# SPDX-License-Identifier: BSD-3-Clause
+@# What it renders is free to use without notice: LICENSE's exception.
 @# On-board delivery for the mROS v1 library. Context: frame_size_macro, frame_slots_setting and
 @# default_frame_slots (colcon_mros.mros_v1.rules: the frame-slot rule), on_stack_max
 @# (rules.DELIVERY_ON_STACK_MAX).

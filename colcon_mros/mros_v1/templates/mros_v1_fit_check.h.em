@@ -1,3 +1,5 @@
+@# SPDX-License-Identifier: BSD-3-Clause
+@# What it renders is free to use without notice: LICENSE's exception.
 @# The rule table (colcon_mros.mros_v1.rules) as compile-time checks. Context:
 @# needs (rules.FirmwareNeeds), pool_kinds (rules.PoolKind), types (fit_check_header.CheckedType),
 @# library_guard (rules.LIBRARY_HEADER_GUARD), settings_headers (rules.SETTINGS_HEADERS) and

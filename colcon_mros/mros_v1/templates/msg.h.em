@@ -1,3 +1,5 @@
+@# SPDX-License-Identifier: BSD-3-Clause
+@# What it renders is free to use without notice: LICENSE's exception.
 @# Header of one message type. Context: msg (colcon_mros.mros_v1.cpp.CppMessage),
 @# support_header (str), support_version (int), genmros_version (str).
 // @(msg.full_name): mROS message header.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # 32-bit ARM Linux, linked statically so qemu-arm runs it without a sysroot.
 set(CMAKE_SYSTEM_NAME Linux)
 set(CMAKE_SYSTEM_PROCESSOR arm)

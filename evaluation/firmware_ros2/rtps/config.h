@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The board's embeddedRTPS settings the fit check reads (namespace
 // rtps::Config of rtps/config.h): names in 40 bytes and 16 writers and
 // readers a participant, as mros2-posix d267988 sets them; the rest chosen.

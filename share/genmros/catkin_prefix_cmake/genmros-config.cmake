@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # find_package(genmros) through the catkin prefix (genmros catkin-prefix):
 # with that prefix on CMAKE_PREFIX_PATH, CMake finds genmros here even when
 # the install's bin/ is not on PATH (pip --user before the next login), and

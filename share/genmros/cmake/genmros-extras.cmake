@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # genmros as a genmsg message generator, beside gencpp and genpy.
 #
 # genmsg's generate_messages() calls the three macros below for every package

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # find_package(genmros): the catkin message generator (genmros-extras.cmake)
 # and the firmware-side functions mros_import_messages() and
 # mros_generate_messages() (mros_generate.cmake).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # The mros2 generator's registration with rosidl and the program it runs.
 
 # rosidl_generate_interfaces() runs the extensions registered for

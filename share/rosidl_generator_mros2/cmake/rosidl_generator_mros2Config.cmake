@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # find_package(rosidl_generator_mros2): registers the mros2 generator with
 # rosidl, so that rosidl_generate_interfaces() called after it also writes
 # each interface's mros2 header (rosidl_generator_mros2-extras.cmake).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # The mros2 generator's part of rosidl_generate_interfaces(): included by
 # ament_execute_extensions("rosidl_generate_idl_interfaces") in the scope of
 # the package's CMakeLists.txt, with rosidl_generate_interfaces_TARGET,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // A stand-in of what mros2's src/mros2.cpp and include/mros2.h use of
 // embeddedRTPS (mROS-base/embeddedRTPS de70e01: rtps/rtps.h, the Domain,
 // Participant, Writer and Reader entities and rtps/config.h), for a unit

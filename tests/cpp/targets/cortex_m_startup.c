@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Start-up code of the Cortex-M test programs: the vector table, zeroed
  * .bss, newlib's semihosting handles and static constructors, then main().
  * The linker scripts beside this file place .data in RAM directly (QEMU

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // roscpp's wire images of the instances a target CPU checks, in the target's
 // report format (target_check.h), computed on the host with
 // ros::serialization. Usage: expected_bytes INSTANCES MODE [MODE ...]

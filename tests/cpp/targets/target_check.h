@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // What every target CPU checks on genmros' classes, one random instance at a
 // time, and the line format in which it reports the wire images:
 //

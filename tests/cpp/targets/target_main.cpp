@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The program each target CPU runs: every type of the set, TARGET_INSTANCES
 // seeds each, the seed's mode taken in turn from TARGET_MODES (harness::Mode
 // values; the build passes both, and the same plan to expected_bytes).

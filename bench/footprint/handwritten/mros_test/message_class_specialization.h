@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Hand-written per-app instantiations (mROS v1 style) for the footprint benchmark.
 #include "ros.h"
 #include "mros_test/PersonalData.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Hand-written per-app aggregate (mROS v1 style) for the footprint benchmark.
 #include "mros_test/PersonalData.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Stand-in for lwIP's socket API: the types mROS v1's headers name. */
 #ifndef STUB_LWIP_SOCKETS_H
 #define STUB_LWIP_SOCKETS_H

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The mROS v1 PC target: the user's mROS v1 library and app, unchanged, on a PC.
 
 ``genmros mros-v1-pc`` builds them with the stand-ins beside this package

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """TOPPERS/ASP's configurator for the PC target: app.cfg to kernel tables.
 
 On the board, ASP's ``cfg`` tool turns the static API of an app's

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """``genmros mros-v1-pc``: an unmodified mROS v1 app and library on a PC.
 
 Asks make what the app's own ``Makefile`` sets, reads its ``app.cfg`` and

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # mros_v1_pc.mk: an unmodified mROS v1 app and library, built for a PC.
 #
 # `genmros mros-v1-pc APP_DIR` runs this with the variables below, read

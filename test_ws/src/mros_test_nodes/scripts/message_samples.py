@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Sample messages for the round-trip checks: for every test message type,
 values that reach the edges of each field's range (extreme integers, exact
 float32 values, empty and non-ASCII strings, empty and full arrays, times

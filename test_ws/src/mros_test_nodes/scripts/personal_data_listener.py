@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """The ROS side of the paper's evaluation (Fig. 8), in rospy: prints the
 mros_test/PersonalData messages that the mROS node publishes on mros_str."""
 import rospy

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """The ROS side of the paper's evaluation (Fig. 9), in rospy: publishes
 mros_test/PersonalData ("Charlie", "Parker", 32, score counting up) on
 test_msg five times a second."""

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Sends every sample message of every test type to <from>/<Type> and checks
 that exactly the same bytes come back on <to>/<Type> (through one or more
 relays in between). Each sample is republished every 0.3 s until it comes

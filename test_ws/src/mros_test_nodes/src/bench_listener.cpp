@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The receiving roscpp node of bench/mros_v1_pc_bench.py: subscribes /bench
 // (PersonalData or Image, TCP_NODELAY), stamps every message on arrival in
 // its callback (CLOCK_MONOTONIC) and, after COUNT messages or IDLE_S seconds

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The roscpp talker of bench/mros_v1_pc_bench.py, the side the real mROS v1
 // library's talker (bench/mros_v1_pc/app.cpp) is compared with. Publishes COUNT messages on
 // /bench, either PersonalData (score = sequence number) or a 640x480 rgb8

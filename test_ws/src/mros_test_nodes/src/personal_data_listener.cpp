@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The ROS side of the paper's evaluation (Fig. 8): a roscpp node printing
 // the mros_test/PersonalData messages that the mROS node publishes on
 // mros_str.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The ROS side of the paper's evaluation (Fig. 9): a roscpp node publishing
 // mros_test/PersonalData ("Charlie", "Parker", 32, score counting up) on
 // test_msg five times a second.

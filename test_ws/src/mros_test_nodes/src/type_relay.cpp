@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The roscpp twin of the firmware's type_relay (used by the tests): for each
 // test message type it subscribes <from>/<Type> and republishes every
 // message unchanged on <to>/<Type>, so a chain rospy -> mROS -> roscpp ->

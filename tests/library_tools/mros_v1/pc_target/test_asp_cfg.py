@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """colcon_mros.library_tools.mros_v1.pc_target.asp_cfg: the PC target's TOPPERS/ASP configurator, on
 app.cfg files of its own and on the real mROS v1 kernel configuration when a
 checkout is given (MROS_V1_ROOT)."""

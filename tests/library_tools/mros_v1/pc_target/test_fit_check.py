@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The fit check on the real mROS v1 library's settings: genmros mros-v1-pc
 refuses before it builds, one line per setting with the value it needs;
 mros_v1_fit_check.h refuses in ros.cpp's compile where no genmros check

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """genmros mros-v1-pc --hardened: the sample string_pubsub on the real
 library with genmros' patch set applied to a copy (colcon_mros/mros_v1/
 patches), against the same app on the library as it is. Each patch's test

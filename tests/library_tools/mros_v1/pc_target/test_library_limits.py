@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """What the real mROS v1 library does past the sizes of its configuration
 where the fit check cannot refuse the firmware: a frame of heap storage
 (no largest size) beyond the largest memory pool, more ROS peers than its

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The real mROS v1 library, unchanged, with genmros' headers, on the PC
 target: `genmros mros-v1-pc` builds the sample apps
 custom_pubsub and string_pubsub from their own sources and the checkout's

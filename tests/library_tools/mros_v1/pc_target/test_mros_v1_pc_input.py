@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """genmros mros-v1-pc on bad input: one `genmros: error:` line naming the
 file (and line) and the problem, exit 1, nothing built. The cases with an
 app of the real checkout use the checkout MROS_V1_ROOT names and

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Every message type of test_ws through the real mROS v1 library:
 the aggregates (callCallback, getMD5Sum, the explicit instantiations) for
 all of them in one app, with both storage kinds, on the library's wire and

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The network fuzzer (bench/fuzz/network_fuzz.py), run for 45 s against
 the relay app on the hardened library under ASan+UBSan: no report, the node
 answering with its threads and memory bounded, and every type relayed

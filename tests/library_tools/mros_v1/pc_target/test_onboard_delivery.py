@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """On-board delivery while frames wait, on the real mROS v1 library: an app
 (tests/fixtures/mros_v1_pc_app/onboard_burst.cpp) keeps its subscriber
 task busy while one message waits on one topic and six more are published

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The PC target's TOPPERS/ASP scheduling
 (colcon_mros/library_tools/mros_v1/pc_target/asp/kernel*.c), on its own: a
 program of ours (tests/fixtures/pc_target_kernel) configured from its own

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The PC target's lwIP stand-in (colcon_mros/library_tools/mros_v1/pc_target/lwip), on its
 own with the kernel: a program of ours (tests/fixtures/pc_target_lwip),
 written against lwIP's socket API as mROS v1's network layer is and built

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The PC target's mbed stand-in (colcon_mros/library_tools/mros_v1/pc_target/mbed), on its
 own with the kernel: programs of ours (tests/fixtures/pc_target_mbed) built
 natively under AddressSanitizer: Ticker and Timeout share the kernel's timers

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The PC target's task stacks (colcon_mros/library_tools/mros_v1/pc_target/asp/task_stacks.c),
 on their own with the kernel: a program of ours (tests/fixtures/pc_target_stacks)
 configured from its own .cfg, built for 32-bit ARM as the arm target builds an

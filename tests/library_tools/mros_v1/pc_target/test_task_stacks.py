@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The board's task stacks on the PC target (asp/task_stacks.c), with the real
 mROS v1 library: an app (tests/fixtures/mros_v1_pc_app/stack_use.cpp) whose
 1 KiB user task keeps either a bounded mros_test/ArrayTypes (1.8 KB) or a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Hand-written mROS v1 header for bench_msgs/LEDValues (the footprint
 // benchmark's reference, in the style of mROS v1's custom_pubsub headers).
 #ifndef _BENCH_MSGS_LEDVALUES_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Hand-written mROS v1 header for mros_test/PersonalData, in the style of the
 // headers mROS v1 ships (mros_ws/custom_pubsub/include): the footprint
 // benchmark's reference. Trusts every length it reads.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * TOPPERS/ASP's task scheduling on POSIX threads, for running the unchanged
  * mROS v1 library and its apps on a PC.

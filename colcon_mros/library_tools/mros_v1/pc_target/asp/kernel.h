@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * TOPPERS/ASP's kernel API on a PC: the types, constants and service calls
  * that mROS v1 and its apps use, run by kernel*.c with ASP's

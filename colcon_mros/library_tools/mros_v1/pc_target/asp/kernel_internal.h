@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * What the files of the ASP kernel's stand-in share with each other, and
  * nothing else does: the task control block, the ready queues and the rest

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The ASP kernel stand-in's scheduling (kernel.c says how it keeps ASP's
  * rules): the lock that stands for ASP's interrupt masking, the ready

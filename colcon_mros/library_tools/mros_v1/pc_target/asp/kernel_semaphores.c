@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The ASP kernel stand-in's semaphores (CRE_SEM): sig_sem, wai_sem and their
  * variants. A task that waits is queued on the semaphore, FIFO, and woken by

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The ASP kernel stand-in's tasks: each task's thread, which runs the
  * task's code once per activation, and the task services (act_tsk, ext_tsk,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The ASP kernel stand-in's time and interrupt-level code: the clock
  * (get_tim), timers (pc_timer_start, pc_timer_stop) and raised interrupts

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * What the PC target's parts share beyond ASP's own API: the kernel object
  * tables the configurator writes from app.cfg (kernel_cfg.c), and the hooks

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * ASP's system log service (syssvc/syslog) on a PC: each syslog() call is
  * one line on stderr, "[level] text", formatted and written on the task

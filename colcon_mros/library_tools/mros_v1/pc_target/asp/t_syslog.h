@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * TOPPERS/ASP's system log on a PC: syslog() writes one line to stderr,
  * prefixed with its level, as ASP's log task writes to the serial port.

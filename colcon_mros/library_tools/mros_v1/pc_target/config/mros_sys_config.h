@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The app's own mros_sys_config.h, unchanged, with the addresses and ports
  * of the board's network replaced by the PC's ROS environment, read when

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Where the node on the PC finds the master and itself: ROS_MASTER_URI,
  * ROS_IP/ROS_HOSTNAME and the port variables of mros_sys_config.h. A value

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The host's C library in place of the board's newlib: the C library calls
  * the library and the app make run, on the arm target, on the calling task

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* mbed's Ethernet driver interface for lwIP, on a PC: no driver to start. */
 #ifndef MROS_PC_TARGET_ETH_ARCH_H
 #define MROS_PC_TARGET_ETH_ARCH_H

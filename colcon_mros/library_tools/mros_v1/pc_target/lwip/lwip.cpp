@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * lwIP on a PC: its socket calls on the host's sockets, its network
  * interface and DHCP client standing for the PC's own address. Every socket

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* mbed 2's EthernetInterface on a PC: the interface is the PC's, already up,
  * with the address the node uses for ROS (ROS_IP, ROS_HOSTNAME, 127.0.0.1). */
 #ifndef MROS_PC_TARGET_ETHERNETINTERFACE_H

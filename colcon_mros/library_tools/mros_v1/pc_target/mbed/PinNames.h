@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* GR-PEACH's pin names (port * 16 + bit), as mbed 2's PinNames.h has them. */
 #ifndef MROS_PC_TARGET_PINNAMES_H
 #define MROS_PC_TARGET_PINNAMES_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The SoftPWM library (software PWM on any pin) on a PC: the duty cycle is
  * an output, logged on every change (see mbed.h). */
 #ifndef MROS_PC_TARGET_SOFTPWM_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mbed 2's API on a PC (see mbed.h): pins as a logged output stream and an
 // input file, timers and tickers on the PC target's kernel clock.
 #include <fcntl.h>

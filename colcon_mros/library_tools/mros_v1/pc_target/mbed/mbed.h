@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * mbed 2's API as the mROS v1 sample apps use it, on a PC. Pins are not
  * hardware: an output's every change is logged ("P6_13 0.78125" to stderr,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* TOPPERS/ASP's syssvc/syslog.h on a PC: nothing to declare (the log goes
  * to stderr through syslog() in t_syslog.h; there is no serial port). */
 #ifndef MROS_PC_TARGET_SYSSVC_SYSLOG_H

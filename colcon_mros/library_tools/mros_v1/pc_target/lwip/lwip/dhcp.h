@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* lwIP's DHCP client on a PC: the "lease" is the PC's address for ROS. */
 #ifndef MROS_PC_TARGET_LWIP_DHCP_H
 #define MROS_PC_TARGET_LWIP_DHCP_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* lwIP's address conversions on a PC, taking ip_addr_t as lwIP 1.4's do. */
 #ifndef MROS_PC_TARGET_LWIP_INET_H
 #define MROS_PC_TARGET_LWIP_INET_H

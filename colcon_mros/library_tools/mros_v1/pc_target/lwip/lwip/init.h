@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* lwIP's initialisation on a PC: the host's network stack needs none. */
 #ifndef MROS_PC_TARGET_LWIP_INIT_H
 #define MROS_PC_TARGET_LWIP_INIT_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* lwIP's IPv4 address type on a PC (lwIP 1.4's layout: network order). */
 #ifndef MROS_PC_TARGET_LWIP_IP_ADDR_H
 #define MROS_PC_TARGET_LWIP_IP_ADDR_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* lwIP's name lookup on a PC: dotted quads, "localhost" and /etc/hosts
  * (no DNS, as a static binary's lookup without NSS). */
 #ifndef MROS_PC_TARGET_LWIP_NETDB_H

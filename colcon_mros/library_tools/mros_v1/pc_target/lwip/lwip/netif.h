@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * lwIP's network interface on a PC. The board's Ethernet interface gets its
  * address from DHCP or from mros_sys_config.h; here it gets the PC's address

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * lwIP's BSD-style socket API on a PC: each lwip_* call is the host's socket
  * call of the same name. The calling task gives up the CPU for the call, as

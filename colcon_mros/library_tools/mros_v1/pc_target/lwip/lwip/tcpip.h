@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* lwIP's tcpip thread on a PC: the host's stack runs it; init is done at once. */
 #ifndef MROS_PC_TARGET_LWIP_TCPIP_H
 #define MROS_PC_TARGET_LWIP_TCPIP_H
