@@ -5,20 +5,33 @@ Every back end keeps its templates and static headers in a directory of its
 own; this renders one template with the context a back end's C++ view
 gives it. Nothing is written here: writing is :mod:`.output`'s job.
 
-The templates are empy 3 templates, scanned by empy's own ``Scanner``, and
-hold no logic (tests/core/test_templates.py): text, expansions of
-expressions, ``for`` and ``if``/``elif``/``else``, comments. Running
-empy's interpreter over them took most of an export's time (an export
-renders msg.h.em once per type: bench/README.md), so each template is
-translated once per process into one Python code object that does what the
-interpreter does with those markups (write the text; write ``str()`` of an
-expression unless it is None; loop and branch, the loop variables among the
-template's globals), and each render runs that code over the context. A
-markup outside that set is refused when the template is read.
-tests/core/test_render.py holds the output equal to empy's interpreter.
+The templates hold no logic (tests/core/test_templates.py): text,
+expansions of expressions, ``for`` and ``if``/``elif``/``else``, comments.
+They render one of two ways, with the same text out
+(tests/core/test_render.py holds both to it over every template):
+
+- Where empy 3's scanner is (``em.Scanner(prefix, data)`` and its token
+  classes: Debian's python3-empy, the empy catkin needs), each template is
+  translated once per process into one Python code object that does what
+  empy's interpreter does with those markups (write the text; write
+  ``str()`` of an expression unless it is None; loop and branch, the loop
+  variables among the template's globals), and each render runs that code
+  over the context. Running empy's interpreter took most of an export's
+  time (an export renders msg.h.em once per type: bench/README.md). A
+  markup outside that set is refused when the template is read.
+- Elsewhere (empy 4, which rosidl >= 4 runs on, or any empy whose
+  internals are not empy 3's), each render runs empy's public
+  ``Interpreter`` over the template's text, its output a StringIO, the
+  context its globals, and shuts it down. On empy 4 its stdout proxy lives
+  only as long as that interpreter (sys.stdout is the same object after),
+  it installs no import finder, and an error in a template is raised, not
+  reported and exited on. This path refuses no markup: the package's own
+  templates are held logic-free by the test above, and a template
+  directory of the user's (genmros -e) is read as it is.
 """
 
 import functools
+import io
 import os
 
 import em
@@ -32,6 +45,14 @@ _WRITE = '_genmros_write'
 _VALUE = '_genmros_value'
 _STR = '_genmros_str'
 _INDENT = '    '
+# What the translation reads of empy 3's scanner; empy 4 has none of
+# NullToken and DEFAULT_PREFIX, and a Scanner that takes other arguments.
+_EMPY3_SCANNER = ('Scanner', 'DEFAULT_PREFIX', 'NullToken', 'LiteralToken', 'PrefixToken',
+                  'WhitespaceToken', 'CommentToken', 'ExpressionToken',
+                  'SimpleExpressionToken', 'ControlToken')
+# Whether templates are translated (empy 3's scanner is there) or run by
+# empy's interpreter.
+TRANSLATES = all(hasattr(em, name) for name in _EMPY3_SCANNER)
 
 
 class _Translation:
@@ -88,8 +109,7 @@ class _Translation:
 @functools.lru_cache(maxsize=None)
 def _compiled(path):
     """The template at path as one code object, once per process."""
-    with open(path) as template:
-        scanner = em.Scanner(em.DEFAULT_PREFIX, template.read())
+    scanner = em.Scanner(em.DEFAULT_PREFIX, _text(path))
     translation = _Translation(path)
     translation.tokens(iter(scanner.one, None), 0)
     return compile('\n'.join(translation.lines) + '\n', path, 'exec')
@@ -97,12 +117,47 @@ def _compiled(path):
 
 def render_template(template_dir, template_name, **context):
     """The text of the empy template template_name in template_dir."""
+    path = os.path.join(template_dir, template_name)
+    if not TRANSLATES:
+        return _interpreted(path, _text(path), context)
     parts = []
     namespace = dict(context)
     namespace[_WRITE] = parts.append
     namespace[_STR] = str
-    exec(_compiled(os.path.join(template_dir, template_name)), namespace)
+    exec(_compiled(path), namespace)
     return ''.join(parts)
+
+
+@functools.lru_cache(maxsize=None)
+def _text(path):
+    """The text of the template at path, read once per process as
+    _compiled reads it."""
+    with open(path) as template:
+        return template.read()
+
+
+def _interpreted(path, text, context):
+    """text (the template at path) run by empy's public interpreter over
+    context."""
+    output = io.StringIO()
+    options = {'output': output, 'globals': dict(context)}
+    if hasattr(em, 'Configuration'):  # empy 4
+        # The proxy explicitly (EMPY_NO_PROXY may not choose): empy 4.2's
+        # interpreter without one writes to sys.stdout, not to output.
+        # It is the interpreter's own and goes at its shutdown.
+        config = em.Configuration(prefix='@', useProxy=True)
+        if hasattr(config, 'supportModules'):  # empy >= 4.2: no finder in sys.meta_path
+            config.supportModules = False
+        # dispatcher=False: an error is raised, not printed with sys.exit().
+        options.update(config=config, dispatcher=False)
+    interpreter = em.Interpreter(**options)
+    try:
+        interpreter.string(text)
+        interpreter.flush()
+        # Before shutdown: empy 3 closes the output there.
+        return output.getvalue()
+    finally:
+        interpreter.shutdown()
 
 
 @functools.lru_cache(maxsize=None)

@@ -4,6 +4,9 @@ render as empy's own interpreter renders them, in the process a real run
 has (no test runner's stdout) too; what a logic-free template may not
 hold is refused."""
 
+import glob
+import json
+import os
 import re
 import subprocess
 import sys
@@ -107,3 +110,195 @@ def test_a_statement_is_refused_when_the_template_is_read(tmp_path):
         render_template(str(tmp_path), 'logic.em')
     assert str(error.value) == ('%s: @{total = 1 + 2} is more than a logic-free template holds'
                                 % (tmp_path / 'logic.em'))
+
+
+# Both ways over real contexts: every template of the package, with the
+# contexts genmros' own runs give it (an mROS v1 export of Debian's std_msgs,
+# std_srvs and geometry_msgs with its aggregates, an export dir's cmake
+# table, the mros2 headers and templates.hpp of ROS 2's test interface
+# files), rendered here the fast way, here through empy 3's interpreter, and
+# in a venv with empy 4 from PyPI (no genmsg, no rosidl there) through empy
+# 4's. What crosses to the venv is each context as the template saw it: a
+# traced render records, of every object it reaches, the attributes read,
+# the items iterated, str() and truth, and the venv rebuilds those answers.
+
+PLAIN = (type(None), bool, int, float, str)
+
+
+class _Traced:
+    """An object of a context, answering as it does and recording what the
+    template asked of it."""
+
+    def __init__(self, value):
+        self._value = value
+        self._node = {'attributes': {}}
+
+    def __getattr__(self, name):
+        attributes = self._node['attributes']
+        if name not in attributes:
+            attributes[name] = _traced(getattr(self._value, name))
+        return attributes[name]
+
+    def __iter__(self):
+        if 'items' not in self._node:
+            self._node['items'] = [_traced(item) for item in self._value]
+        return iter(self._node['items'])
+
+    def __str__(self):
+        self._node['str'] = str(self._value)
+        return self._node['str']
+
+    def __bool__(self):
+        self._node['bool'] = bool(self._value)
+        return self._node['bool']
+
+
+def _traced(value):
+    return value if isinstance(value, PLAIN) else _Traced(value)
+
+
+def _recorded(value):
+    """What the template saw of value, as JSON."""
+    if isinstance(value, PLAIN):
+        return {'value': value}
+    node = {key: part for key, part in value._node.items() if key != 'attributes'}
+    node['attributes'] = {name: _recorded(child)
+                          for name, child in value._node['attributes'].items()}
+    if 'items' in node:
+        node['items'] = [_recorded(item) for item in node['items']]
+    return {'object': node}
+
+
+# Run in the venv: renders each recorded context (JSON on stdin) through
+# colcon_mros.core.render, the checkout on PYTHONPATH, and writes the texts
+# and what it found to the file argv[1].
+EMPY4_RENDERS = '''
+import json, sys
+import em
+from colcon_mros.core import render
+
+
+class Recorded:
+    def __init__(self, node):
+        self._node = node
+
+    def __getattr__(self, name):
+        if name.startswith('__') or name not in self._node['attributes']:
+            raise AttributeError(name)
+        return decoded(self._node['attributes'][name])
+
+    def __iter__(self):
+        return iter([decoded(item) for item in self._node['items']])
+
+    def __str__(self):
+        return self._node['str']
+
+    def __bool__(self):
+        return self._node['bool']
+
+
+def decoded(node):
+    return node['value'] if 'value' in node else Recorded(node['object'])
+
+
+renders = json.load(sys.stdin)
+before = (sys.stdout, list(sys.meta_path))
+texts = [render.render_template(r['dir'], r['name'],
+                                **{k: decoded(v) for k, v in r['context'].items()})
+         for r in renders]
+with open(sys.argv[1], 'w') as stream:
+    json.dump({'version': em.__version__, 'translates': render.TRANSLATES, 'texts': texts,
+               'stdout_and_meta_path_kept': (sys.stdout, list(sys.meta_path)) == before,
+               'proxy_left': hasattr(sys, '_EmPy_proxy')}, stream)
+'''
+
+
+def _real_renders(tmp_path, monkeypatch):
+    """[(template_dir, template_name, context, text)] of genmros' own runs,
+    contexts traced: each render done the fast way with the traced context
+    and with the real one, the same text."""
+    from colcon_mros import cli
+    from colcon_mros.core import render
+    from colcon_mros.core.storage import HeapStorage
+    from colcon_mros.export.mros2_export import _endpoints
+    from colcon_mros.mros2 import render as mros2_render
+    from colcon_mros.mros_v1 import aggregates, fit_check_header
+    from colcon_mros.mros_v1 import render as mros_v1_render
+    from colcon_mros.ros2.interfaces import all_packages
+    from colcon_mros.ros2.model import ModelBuilder
+    renders = []
+    fast = render.render_template
+
+    def recording(template_dir, template_name, **context):
+        traced = {name: _traced(value) for name, value in context.items()}
+        text = fast(template_dir, template_name, **traced)
+        assert text == fast(template_dir, template_name, **context), template_name
+        renders.append((template_dir, template_name, traced, text))
+        return text
+
+    for module in (render, mros_v1_render, aggregates, fit_check_header, mros2_render):
+        monkeypatch.setattr(module, 'render_template', recording)
+    assert cli.main(['export', '-o', str(tmp_path / 'v1'), '--underlay', '/usr', '--package',
+                     'std_msgs', '--package', 'std_srvs', '--package', 'geometry_msgs']) == 0
+    assert cli.main(['generate', '/usr/share/std_msgs/msg/Header.msg', '-p', 'std_msgs',
+                     '-o', str(tmp_path / 'generated'), '-I', 'std_msgs:/usr/share/std_msgs/msg',
+                     '--add-to-export-dir', str(tmp_path / 'export_dir')]) == 0
+    package = 'test_interface_files'
+    builder = ModelBuilder(all_packages((), ['/usr']), HeapStorage())
+    interfaces = sorted(builder.packages[package].interfaces)
+    messages = [builder.message('%s/msg/%s' % (package, n)) for k, n in interfaces if k == 'msg']
+    for message in messages:
+        mros2_render.message_header(message)
+    for kind, name in interfaces:
+        if kind == 'srv':
+            mros2_render.service_header(builder.service('%s/srv/%s' % (package, name)))
+    mros2_render.templates_header(_endpoints(builder, ['%s/msg/%s' % (package, n) for k, n in
+                                                       interfaces if k == 'msg'][:3],
+                                             ['topic:%s/msg/Strings' % package]))
+    return renders
+
+
+@pytest.fixture(scope='session')
+def empy4_python(tmp_path_factory):
+    """A venv's python with empy 4 from PyPI and no system site packages,
+    made once per session; the test skips, saying why, without PyPI."""
+    venv = str(tmp_path_factory.mktemp('empy4_venv'))
+    subprocess.run(['/usr/bin/python3', '-m', 'venv', venv], check=True)
+    python = os.path.join(venv, 'bin', 'python')
+    result = subprocess.run([python, '-m', 'pip', 'install', '-q', 'empy>=4,<5'],
+                            capture_output=True, text=True)
+    if result.returncode != 0:
+        pytest.skip('no empy 4 from PyPI for the venv: %s'
+                    % (result.stderr.strip().splitlines() or ['pip failed'])[-1])
+    return python
+
+
+def test_every_template_renders_the_same_bytes_translated_and_through_empy_3_and_4(
+        tmp_path, monkeypatch, request):
+    from colcon_mros.core import render
+    assert render.TRANSLATES  # Debian's empy 3
+    renders = _real_renders(tmp_path, monkeypatch)
+    monkeypatch.undo()
+    templates = sorted(glob.glob(os.path.join(REPO, 'colcon_mros', '*', 'templates', '*.em')))
+    assert sorted({os.path.join(d, n) for d, n, _, _ in renders}) == templates
+    # empy 3's interpreter, here, over the traced contexts.
+    monkeypatch.setattr(render, 'TRANSLATES', False)
+    for template_dir, name, context, text in renders:
+        assert render.render_template(template_dir, name, **context) == text, name
+    monkeypatch.undo()
+    # empy 4's, in the venv, over what the traced renders recorded (after
+    # the above, which a skip for want of PyPI does not skip).
+    empy4_python = request.getfixturevalue('empy4_python')
+    out = tmp_path / 'empy4.json'
+    request = json.dumps([{'dir': d, 'name': n, 'context': {k: _recorded(v)
+                                                            for k, v in c.items()}}
+                          for d, n, c, _ in renders])
+    result = subprocess.run([empy4_python, '-c', EMPY4_RENDERS, str(out)], input=request,
+                            capture_output=True, text=True, env=dict(os.environ, PYTHONPATH=REPO))
+    assert (result.returncode, result.stdout, result.stderr) == (0, '', '')
+    empy4 = json.loads(out.read_text())
+    print('empy %s: %d templates, %d renders' % (empy4['version'], len(templates), len(renders)))
+    assert empy4['version'].startswith('4.') and not empy4['translates']
+    assert empy4['stdout_and_meta_path_kept'] and not empy4['proxy_left']
+    for (_, name, _, text), empy4_text in zip(renders, empy4['texts']):
+        assert empy4_text.encode() == text.encode(), name
