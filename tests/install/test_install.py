@@ -83,8 +83,8 @@ def test_a_user_install_registers_the_generator_through_its_catkin_prefix(tmp_pa
         prefix = user.run(['genmros', 'catkin-prefix'], user.root).stdout.strip()
         assert prefix == os.path.join(user.prefix, 'share', 'genmros', 'catkin_prefix')
         header = os.path.join('devel', 'share', 'genmros', 'include', 'mros_test_base', 'Vector3i.h')
-        # The README's line, run where ~/.local/bin is not on PATH yet.
-        registration = _readme_catkin_prefix_line()
+        # docs/install.md's line, run where ~/.local/bin is not on PATH yet.
+        registration = _docs_catkin_prefix_line()
         for registered in (True, False):
             workspace = os.path.join(user.root, 'ws_%s' % registered)
             shutil.copytree(os.path.join(TEST_WS, 'src', 'mros_test_base'),
@@ -107,9 +107,9 @@ def test_a_user_install_registers_the_generator_through_its_catkin_prefix(tmp_pa
         shutil.rmtree(user.root)
 
 
-def _readme_catkin_prefix_line():
-    """The README's command that puts an install's catkin prefix on CMAKE_PREFIX_PATH."""
-    with open(os.path.join(REPO, 'README.md')) as readme:
+def _docs_catkin_prefix_line():
+    """docs/install.md's command that puts an install's catkin prefix on CMAKE_PREFIX_PATH."""
+    with open(os.path.join(REPO, 'docs', 'install.md')) as readme:
         lines = [line.split('#')[0].strip() for line in readme
                  if 'catkin-prefix' in line and line.lstrip().startswith('prefix=')]
     assert len(set(lines)) == 1, lines
