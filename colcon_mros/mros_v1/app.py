@@ -6,8 +6,8 @@ An app is a directory of the checkout's ``mros_ws/`` with an ``app.cfg``
 (its kernel objects), a ``Makefile`` (its sources, flags and the old
 generator's JSON file of message types) and, optionally, its own
 ``mros_config/mros_usr_config.h``. The PC target builds it
-(:mod:`.pc_target.build`); the fit check and report read its settings
-(:mod:`.firmware_fit`).
+(:mod:`colcon_mros.library_tools.mros_v1.pc_target.build`); the fit check
+and report read its settings (:mod:`colcon_mros.library_tools.mros_v1.fit_flow`).
 """
 
 import json

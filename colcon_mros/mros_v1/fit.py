@@ -2,8 +2,8 @@
 """The fit check: a firmware's message types against its mROS v1 library's settings.
 
 Each :data:`.rules.RULES` entry is checked for each type against the
-settings (:mod:`.settings`). A setting too small for a type is a
-:class:`Misfit`: one line naming the type, the setting, the file and line
+settings (:mod:`colcon_mros.core.settings`). A setting too small for a type
+is a :class:`Misfit`: one line naming the type, the setting, the file and line
 that set it, its value and the value needed. A connection header that fits
 only while the names are short, and a type without a largest frame (a
 string or variable array in heap storage), which only might not fit a

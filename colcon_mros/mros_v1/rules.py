@@ -160,7 +160,7 @@ class FrameSlotsRule:
 
     def blocks(self, settings):
         """How many blocks the publishing pools have, from {name: Setting}
-        (:mod:`.settings`), and the settings that say so."""
+        (:mod:`colcon_mros.core.settings`), and the settings that say so."""
         count = settings[self.pools.count]
         lengths = [settings[name] for index, name in self.pools.queue_lengths
                    if index <= count.value and name in settings]

@@ -2,7 +2,7 @@
 """``genmros mros-v1-fit``: an app's message types against its mROS v1
 library's settings, one table row per type.
 
-The Fit comes from :mod:`.firmware_fit` (an app's, or an export dir's).
+The Fit comes from :mod:`.fit_flow` (an app's, or an export dir's).
 Each row shows what the type needs (definition
 text, the connection headers ROS nodes send, the largest frame) and, for
 each setting, ``ok`` or the value it needs; then the library's tables beside
