@@ -66,7 +66,8 @@ class _Subcommands:
 # Options more than one subcommand takes, each defined once.
 
 def _add_template_dir(parser):
-    parser.add_argument('-e', dest='template_dir', help='template directory to use instead of ours')
+    parser.add_argument('-e', dest='template_dir',
+                        help='template directory to use instead of ours')
 
 
 def _add_cmake_module(parser):

@@ -124,7 +124,8 @@ NOT_WRITABLE_HINT = (': make it writable for this user, or give another (-o, MRO
 
 def _write_error(error, root):
     hint = NOT_WRITABLE_HINT if error.errno in (errno.EACCES, errno.EPERM, errno.EROFS) else ''
-    return GenmrosError('cannot write to output directory (%s)%s' % (error.strerror or error, hint),
+    return GenmrosError('cannot write to output directory (%s)%s'
+                        % (error.strerror or error, hint),
                         getattr(error, 'filename', None) or root)
 
 
@@ -166,7 +167,8 @@ def _existing_files(root):
     found = []
     for directory, subdirectories, names in os.walk(root):
         relative_directory = os.path.relpath(directory, root)
-        for name in names + [d for d in subdirectories if os.path.islink(os.path.join(directory, d))]:
+        links = [d for d in subdirectories if os.path.islink(os.path.join(directory, d))]
+        for name in names + links:
             if not _TEMPORARY.search(name):
                 found.append(os.path.normpath(os.path.join(relative_directory, name)))
     return found
@@ -208,8 +210,8 @@ def _mirror(root, tree, skip):
     for directory, subdirectories, _ in os.walk(root):
         for name in subdirectories:
             if not os.path.islink(os.path.join(directory, name)):
-                os.makedirs(os.path.join(tree, os.path.relpath(os.path.join(directory, name), root)),
-                            exist_ok=True)
+                relative = os.path.relpath(os.path.join(directory, name), root)
+                os.makedirs(os.path.join(tree, relative), exist_ok=True)
 
 
 def write_tree(root, files, drop=lambda relative: False):

@@ -30,4 +30,4 @@ def require_modules(modules, what):
         if not any(importable(name) for name in names):
             raise GenmrosError('%s cannot import %s; install or source %s, or run genmros with '
                                'the Python that has it' % (sys.executable, ' or '.join(names),
-                                                          what(names[0])))
+                                                           what(names[0])))

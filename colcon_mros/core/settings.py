@@ -93,7 +93,7 @@ def read_settings(paths, role='the library settings', fix=None):
                 text = stream.read()
         except OSError as error:
             raise GenmrosError('cannot read %s: %s%s' % (role, error.strerror,
-                                                          '; ' + fix if fix else ''), path)
+                                                         '; ' + fix if fix else ''), path)
         found = [(number, match.group(1), match.group(2))
                  for number, match in enumerate(map(_DEFINE.match, text.splitlines()), 1)
                  if match]

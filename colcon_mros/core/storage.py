@@ -31,7 +31,8 @@ PACKAGE_OPTIONS_FILE = 'genmros.options'
 OPTION_KEYS = ('max_size', 'max_count')
 ANY_FIELD = '*'
 
-_TARGET = re.compile(r'^(?:(?P<package>[A-Za-z][\w]*)/)?(?P<type>[A-Za-z]\w*)\.(?P<field>[A-Za-z]\w*)$')
+_TARGET = re.compile(
+    r'^(?:(?P<package>[A-Za-z][\w]*)/)?(?P<type>[A-Za-z]\w*)\.(?P<field>[A-Za-z]\w*)$')
 
 
 class FieldShape:
@@ -81,8 +82,8 @@ def read_options_file(path, package=None):
         with open(path, encoding='utf-8') as stream:
             lines = stream.read().split('\n')
     except (OSError, UnicodeDecodeError) as error:
-        raise GenmrosError('cannot read options file: %s' % (getattr(error, 'strerror', None) or error),
-                           path)
+        raise GenmrosError('cannot read options file: %s'
+                           % (getattr(error, 'strerror', None) or error), path)
     entries = []
     for number, text in enumerate(lines, 1):
         words = text.split('#')[0].split()
@@ -129,7 +130,8 @@ class BoundedStorage:
 
     def __init__(self, firmware_option_files=(), package_option_files=()):
         # Later entries win: package files first, then the firmware's.
-        self.option_files = [path for _, path in package_option_files] + list(firmware_option_files)
+        self.option_files = [path for _, path in package_option_files] + \
+            list(firmware_option_files)
         self._entries = []
         for package, path in package_option_files:
             self._entries.extend(read_options_file(path, package))

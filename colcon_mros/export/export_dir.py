@@ -87,7 +87,8 @@ def _remove_with_empty_parents(root, relative):
 
 def _manifest_of(definition):
     """The package.xml beside a definition's msg/ or srv/ directory, if any."""
-    path = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(definition.path))), MANIFEST)
+    package_root = os.path.dirname(os.path.dirname(os.path.abspath(definition.path)))
+    path = os.path.join(package_root, MANIFEST)
     return path if os.path.isfile(path) else None
 
 
@@ -109,7 +110,8 @@ class ExportDir:
         packages = sorted(os.listdir(self.share_dir)) if os.path.isdir(self.share_dir) else []
         for package in packages:
             for kind in KINDS:
-                found.extend(definitions_in(package, os.path.join(self.share_dir, package, kind), kind))
+                directory = os.path.join(self.share_dir, package, kind)
+                found.extend(definitions_in(package, directory, kind))
         return found
 
     def types(self):
@@ -256,7 +258,8 @@ class ExportDir:
         claims_dir = os.path.join(self._state_dir, _CLAIMS_DIR)
         for directory, _, names in os.walk(claims_dir):
             for name in names:
-                if not name.endswith(tuple('.' + kind for kind in KINDS)):  # a killed writer's temporary
+                # Else a killed writer's temporary.
+                if not name.endswith(tuple('.' + kind for kind in KINDS)):
                     continue
                 relative = os.path.relpath(os.path.join(directory, name), self._state_dir)
                 claimed |= self._read_lines(relative)

@@ -147,8 +147,9 @@ class ExportRequest:
     def run_arguments(self):
         """Everything but the definitions that decides what the run writes:
         its arguments, and where the ROS environment finds packages."""
+        variables = ('ROS_PACKAGE_PATH', 'CMAKE_PREFIX_PATH')
         environment = (None if self.prefixes is not None else
-                       [os.environ.get(name) for name in ('ROS_PACKAGE_PATH', 'CMAKE_PREFIX_PATH')])
+                       [os.environ.get(name) for name in variables])
         return (os.path.abspath(self.output_dir), self.prefixes, environment,
                 [os.path.abspath(path) for path in self.workspaces], self.package_names,
                 self.type_names, self.variable_budget, self.parts, self.storage_kind,

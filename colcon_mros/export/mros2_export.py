@@ -55,8 +55,9 @@ def _select(builder, package_names, type_names):
     for name in package_names:
         if name not in builder.packages:
             raise GenmrosError("unknown ROS 2 package '%s' (not in the workspace or the installed "
-                               'ROS 2 packages%s; %s)' % (name, close_match(name, builder.packages),
-                                                          where_packages_come_from(name)))
+                               'ROS 2 packages%s; %s)'
+                               % (name, close_match(name, builder.packages),
+                                  where_packages_come_from(name)))
         for kind, type_name in sorted(builder.packages[name].interfaces):
             if kind == 'msg':
                 messages.append(builder.message('%s/msg/%s' % (name, type_name)))
@@ -65,7 +66,7 @@ def _select(builder, package_names, type_names):
     for full_name in type_names:
         parts = full_name.split('/')
         if len(parts) == 3 and parts[1] == 'srv' and not parts[2].endswith(('_Request',
-                                                                             '_Response')):
+                                                                            '_Response')):
             services.append(builder.service(full_name))
         else:
             messages.append(builder.message(full_name))

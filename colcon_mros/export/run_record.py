@@ -134,4 +134,3 @@ class RunRecord:
         write_files(os.path.dirname(path), {os.path.basename(path): text})
         if touch_ns is not None:
             os.utime(path, ns=(touch_ns, touch_ns))
-

@@ -58,7 +58,8 @@ class _Generated:
 
 def _load(loader, builder, definition):
     if definition.kind == 'msg':
-        model = builder.message(loader.load_message_file(definition.path, definition.package).full_name)
+        model = builder.message(loader.load_message_file(
+            definition.path, definition.package).full_name)
     elif definition.kind == 'srv':
         model = builder.service(loader.load_service_file(definition.path, definition.package))
     else:

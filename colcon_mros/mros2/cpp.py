@@ -142,7 +142,7 @@ class CppMessageName:
         self.dds_type_name_size = len(self.dds_type_name) + 1
         # A service's halves live in the service's header.
         stem = type_file_stem(message.name.rpartition('_')[0] if message.kind == 'srv'
-                           else message.name)
+                              else message.name)
         self.header = '%s/%s/%s.hpp' % (message.package, message.kind, stem)
 
 

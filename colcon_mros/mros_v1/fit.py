@@ -53,8 +53,8 @@ class FrameSlotsMisfit:
         """FILE:LINE of the slots' setting (else of the pools'), the blocks,
         the value needed and the value it has."""
         where = (self.slots or self.block_settings[-1]).where()
-        value = ('it is %d' % self.slots.value if self.slots
-                 else "it is not defined: mros_v1_delivery.h's default is %d" % FRAME_SLOTS.default)
+        value = ('it is %d' % self.slots.value if self.slots else
+                 "it is not defined: mros_v1_delivery.h's default is %d" % FRAME_SLOTS.default)
         return ('%s: the publishing pools hold %d blocks (%s), each of which can hold a frame '
                 'waiting for on-board delivery: %s needs >= %d in every file (%s), or the library '
                 "passes the frame's size (genmros' patch set)"

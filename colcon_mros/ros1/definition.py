@@ -50,8 +50,8 @@ def definitions_in(package, directory, kind):
     """The definitions of one kind in directory, by file name."""
     if not os.path.isdir(directory):
         return []
-    return [Definition(package, os.path.join(directory, name)) for name in sorted(os.listdir(directory))
-            if name.endswith('.' + kind)]
+    return [Definition(package, os.path.join(directory, name))
+            for name in sorted(os.listdir(directory)) if name.endswith('.' + kind)]
 
 
 def check_unique_headers(definition, sibling_paths):

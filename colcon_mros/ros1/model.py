@@ -153,8 +153,9 @@ class Message:
         self.is_fixed_size = self.max_size == self.min_size
         self.unbounded_reason = unbounded[0].unbounded_reason if unbounded else None
         if self.min_size > MAX_MESSAGE_SIZE:
-            raise GenmrosError('%s takes at least %d bytes on the wire, more than the %d a message '
-                               'can have' % (full_name, self.min_size, MAX_MESSAGE_SIZE), self.source)
+            raise GenmrosError('%s takes at least %d bytes on the wire, more than the %d a '
+                               'message can have' % (full_name, self.min_size, MAX_MESSAGE_SIZE),
+                               self.source)
         if self.max_size is not None and self.max_size > MAX_MESSAGE_SIZE:
             raise GenmrosError('%s can take %d bytes on the wire, more than the %d a message can '
                                'have' % (full_name, self.max_size, MAX_MESSAGE_SIZE), self.source)

@@ -143,8 +143,8 @@ def _check_integer_constants(spec, declarations):
         else:
             lower, upper = -(1 << (bits - 1)), (1 << (bits - 1)) - 1
         if not lower <= constant.val <= upper:
-            raise GenmrosError('cannot coerce [%s] to %s (out of bounds)' % (constant.val, constant.type),
-                               declarations.path, line)
+            raise GenmrosError('cannot coerce [%s] to %s (out of bounds)'
+                               % (constant.val, constant.type), declarations.path, line)
 
 
 def _is_infinity_text(text):
@@ -160,8 +160,9 @@ def _check_float_constants(spec, declarations):
         if cpp_type is None or _is_infinity_text(constant.val_text):
             continue
         largest = FLOAT_LIMITS[cpp_type]
-        if math.isinf(constant.val) or (not math.isnan(constant.val) and abs(constant.val) > largest
-                                        and math.isinf(round_to_type(cpp_type, constant.val))):
+        too_large = (not math.isnan(constant.val) and abs(constant.val) > largest
+                     and math.isinf(round_to_type(cpp_type, constant.val)))
+        if math.isinf(constant.val) or too_large:
             raise GenmrosError('%s constant %s is beyond the range of %s (largest finite value %r)'
                                % (constant.type, constant.val_text, constant.type, largest),
                                declarations.path, line)
@@ -221,7 +222,7 @@ class SpecLoader:
         spec = self._parse(
             text, definition.path, [numbered_lines],
             lambda context, source: msg_loader.load_msg_from_string(context, source,
-                                                                   definition.full_name))
+                                                                    definition.full_name))
         self.context.set_file(definition.full_name, definition.path)
         self._declarations[definition.full_name] = Declarations(definition.path, numbered_lines)
         return spec
@@ -235,7 +236,7 @@ class SpecLoader:
         spec = self._parse(
             text, path, halves,
             lambda context, source: msg_loader.load_srv_from_string(context, source,
-                                                                   definition.full_name))
+                                                                    definition.full_name))
         for half, numbered_lines in zip((spec.request, spec.response), halves):
             self.context.set_file(half.full_name, path)
             self._declarations[half.full_name] = Declarations(path, numbered_lines)
@@ -324,9 +325,11 @@ class SpecLoader:
                 continue
             index = visit.next_field
             visit.next_field += 1
-            dependency_spec = self._field_dependency(visit, index, [v.spec.full_name for v in stack])
+            dependency_spec = self._field_dependency(
+                visit, index, [v.spec.full_name for v in stack])
             if dependency_spec is not None:
-                stack.append(_Visit(dependency_spec, self._declarations[dependency_spec.full_name]))
+                stack.append(
+                    _Visit(dependency_spec, self._declarations[dependency_spec.full_name]))
                 self._check_declarations(stack[-1])
 
     def _check_declarations(self, visit):

@@ -33,7 +33,8 @@ class Package:
 
     def definitions(self):
         """The package's .msg and .srv files, as :class:`Definition` values."""
-        return [Definition(self.name, path) for path in self.message_files() + self.service_files()]
+        return [Definition(self.name, path)
+                for path in self.message_files() + self.service_files()]
 
     def type_names(self):
         """Names of every type the package defines, services' halves included."""
@@ -120,7 +121,8 @@ def installed_packages(prefixes):
         for name in sorted(os.listdir(share)):
             root = os.path.join(share, name)
             devel_msg_dirs = _devel_space_msg_dirs(root)
-            if name in packages or not (devel_msg_dirs or os.path.isfile(os.path.join(root, 'package.xml'))):
+            has_manifest = os.path.isfile(os.path.join(root, 'package.xml'))
+            if name in packages or not (devel_msg_dirs or has_manifest):
                 continue
             # A devel space's srv/ sits beside the msg/ its sources have.
             msg_dirs = list(dict.fromkeys([os.path.join(root, 'msg')] + devel_msg_dirs))

@@ -215,7 +215,8 @@ class ModelBuilder:
         if package not in self.packages:
             raise GenmrosError("unknown package '%s' of type '%s/%s/%s' (not in the workspace or "
                                'the installed ROS 2 packages%s; %s)'
-                               % (package, package, kind, name, close_match(package, self.packages),
+                               % (package, package, kind, name,
+                                  close_match(package, self.packages),
                                   self.where_missing(package)), path, line)
         try:
             return self.packages[package].interface(kind, name)
@@ -229,8 +230,8 @@ class ModelBuilder:
         if len(parts) == 2:
             parts = [parts[0], 'msg', parts[1]]
         if len(parts) != 3 or parts[1] not in ('msg', 'srv') or not all(parts):
-            raise GenmrosError("bad type name '%s' (expected PKG/msg/TYPE or PKG/TYPE)" % full_name,
-                               path, line)
+            raise GenmrosError("bad type name '%s' (expected PKG/msg/TYPE or PKG/TYPE)"
+                               % full_name, path, line)
         package, kind, name = parts
         key = '/'.join(parts)
         if key in self._messages:

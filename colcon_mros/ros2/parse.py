@@ -99,7 +99,7 @@ def _first_bad_line(package, kind, name, text):
     lines = text.split('\n')
     for count in range(1, len(lines) + 1):
         prefix = '\n'.join(lines[:count])
-        if kind == 'srv' and _SECTION_SEPARATOR not in [l.strip() for l in lines[:count]]:
+        if kind == 'srv' and _SECTION_SEPARATOR not in [line.strip() for line in lines[:count]]:
             prefix += '\n' + _SECTION_SEPARATOR
         try:
             _quietly(parse, package, name, prefix)
@@ -133,4 +133,3 @@ def parse_interface(interface):
         line = getattr(error, 'line', None) if is_idl else None
         raise GenmrosError(_problem(error), path, line)
     return Parsed(path, content, _declaration_lines(text, is_idl))
-

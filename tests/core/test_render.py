@@ -220,8 +220,8 @@ def _real_renders(tmp_path, monkeypatch):
     from colcon_mros import cli
     from colcon_mros.core import render
     from colcon_mros.core.storage import HeapStorage
-    from colcon_mros.export.mros2_export import _endpoints
     from colcon_mros.mros2 import render as mros2_render
+    from colcon_mros.mros2.endpoints import parse_endpoints
     from colcon_mros.mros_v1 import aggregates, fit_check_header
     from colcon_mros.mros_v1 import render as mros_v1_render
     from colcon_mros.ros2.interfaces import all_packages
@@ -252,9 +252,10 @@ def _real_renders(tmp_path, monkeypatch):
     for kind, name in interfaces:
         if kind == 'srv':
             mros2_render.service_header(builder.service('%s/srv/%s' % (package, name)))
-    mros2_render.templates_header(_endpoints(builder, ['%s/msg/%s' % (package, n) for k, n in
-                                                       interfaces if k == 'msg'][:3],
-                                             ['topic:%s/msg/Strings' % package]))
+    endpoints, _ = parse_endpoints(['%s/msg/%s' % (package, n) for k, n in interfaces
+                                    if k == 'msg'][:3], ['topic:%s/msg/Strings' % package],
+                                   builder.message)
+    mros2_render.templates_header(endpoints)
     return renders
 
 

@@ -133,7 +133,8 @@ def build(request):
         ('-hardened' if request.hardened else '')
     build_dir = os.path.abspath(request.build_dir or os.path.join(app.dir, 'build-pc-' + flavour))
     write_kernel_config(config, os.path.join(build_dir, 'cfg'))
-    library_root = hardened_library(app.mros_root, build_dir) if request.hardened else app.mros_root
+    library_root = hardened_library(
+        app.mros_root, build_dir) if request.hardened else app.mros_root
     variables = {
         'MROS_ROOT': library_root, 'APP_NAME': app.name, 'APP_DIRS': ' '.join(app.source_dirs),
         'APP_OBJS': ' '.join(app.objects), 'APP_CXXFLAGS': ' '.join(app.cxx_flags),
@@ -152,7 +153,8 @@ def build(request):
         'GENMROS_MK': installed_file(MAKE_FRAGMENT),
     }
     command = ['make', '--no-print-directory', '-f', MAKEFILE, '-j%d' % request.jobs] + \
-        ([] if request.verbose else ['-s']) + ['%s=%s' % item for item in sorted(variables.items())]
+        ([] if request.verbose else ['-s']) + ['%s=%s' %
+                                               item for item in sorted(variables.items())]
     program = os.path.join(build_dir, app.name)
     words = {'root': app.mros_root + (' (hardened)' if request.hardened else ''),
              'name': app.name, 'program': program}
