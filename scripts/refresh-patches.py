@@ -32,9 +32,8 @@ def _diff(before, after, path):
     new = os.path.join(after, path)
     labels = ['--label', 'a/' + path if os.path.exists(old) else '/dev/null',
               '--label', 'b/' + path if os.path.exists(new) else '/dev/null']
-    result = subprocess.run(['diff', '-u'] + labels + [old if os.path.exists(old) else '/dev/null',
-                                                       new if os.path.exists(new) else '/dev/null'],
-                            capture_output=True, text=True)
+    files = [path if os.path.exists(path) else '/dev/null' for path in (old, new)]
+    result = subprocess.run(['diff', '-u'] + labels + files, capture_output=True, text=True)
     if result.returncode > 1:
         raise SystemExit('diff failed: %s' % result.stderr.strip())
     return result.stdout
