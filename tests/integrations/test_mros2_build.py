@@ -162,6 +162,21 @@ def test_a_field_added_reaches_the_export_and_the_firmware(workspace):
     assert sent.endswith('04030201')
 
 
+def test_the_export_dirs_mros2_half_is_refused_naming_its_parent(workspace, tmp_path):
+    firmware = tmp_path / 'firmware'
+    shutil.copytree(workspace.firmware, str(firmware), ignore=shutil.ignore_patterns('build'))
+    half = os.path.join(workspace.export_dir, 'mros2')
+    cmake = firmware / 'CMakeLists.txt'
+    cmake.write_text(cmake.read_text().replace('EXPORT_DIR %s' % workspace.export_dir,
+                                               'EXPORT_DIR %s' % half))
+    result = run(['cmake', '-S', str(firmware), '-B', str(firmware / 'build')], workspace.root,
+                 check=False)
+    assert result.returncode != 0
+    assert ("mros2_import_messages(): EXPORT_DIR '%s' is the mros2 half of an export dir: give "
+            "the dir colcon build --mros-export wrote, '%s'" % (half, workspace.export_dir)) \
+        in unwrapped(result.stdout), result.stdout[-3000:]
+
+
 def test_a_board_config_too_small_stops_the_configure_step(workspace):
     """The fit check runs in mros2_import_messages(); the config is a
     configure dependency, so editing it configures again."""

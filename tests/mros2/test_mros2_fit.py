@@ -155,3 +155,14 @@ def test_genmros_mros2_fit_and_mros2_export_refuse_a_misfit(tmp_path):
     run_genmros('mros2-export', '-o', str(output), *endpoints[:-2], '--subscribe',
                 'state:%sEmpty' % TIF)
     assert os.path.exists(str(output / 'templates.hpp'))
+
+
+def test_a_missing_rtps_config_says_which_file_and_what_to_give(tmp_path):
+    missing = str(tmp_path / 'rtps' / 'config.h')
+    result = run_genmros('mros2-fit', '--prefix', '/usr', '--rtps-config', missing,
+                         '--subscribe', 'state:%sEmpty' % TIF, check=False)
+    assert result.returncode == 1
+    assert result.stderr == (
+        "genmros: error: %s: cannot read the board's rtps/config.h (--rtps-config, "
+        'RTPS_CONFIG): No such file or directory; give the rtps/config.h the firmware compiles '
+        "with (the mros2 port's include/rtps/config.h, or its own)\n" % missing)
