@@ -198,9 +198,9 @@ def export_built_packages(args, export_dir):
                                   package_names=sorted(names), only='headers'))
     exported = {message.package for message in result.messages}
     exported.update(service.package for service in result.services)
-    target.replace_packages({name: packages[name] for name in exported}, installed_file(CMAKE_MODULE))
+    target.replace_packages({name: packages[name] for name in exported},
+                            installed_file(CMAKE_MODULE))
     # Also the definitions of types contained from packages not named.
     sources = {model.source for model in result.messages + result.services} | set(named)
     RunRecord(run, snapshot(sorted(sources) + definition_directories(named), started_ns),
               [target.include_dir, target.cmake_file]).write(target.colcon_record)
-

@@ -18,8 +18,8 @@ from colcon_mros.mros_v1.cpp import SUPPORT_HEADERS
 from fixtures.build_integration.tools import (
     MESSAGE_PACKAGES, TEST_WS_SRC,
     build_firmware_of_whole_export, compile_headers, expected_header_names, genmros_export,
-    genmsg_md5, genpy_default_size, headers_under, imported_firmware_output, mtimes, new_workspace, run, search_path_of,
-    unwrapped, user_environment)
+    genmsg_md5, genpy_default_size, headers_under, imported_firmware_output, mtimes,
+    new_workspace, run, search_path_of, unwrapped, user_environment)
 
 # cmake, colcon, catkin or make builds: more than half a minute.
 pytestmark = pytest.mark.slow
@@ -150,7 +150,8 @@ def test_a_build_that_changed_no_definition_leaves_the_export_as_it_is(workspace
 def test_selected_packages_add_to_the_export_and_never_shrink_it(workspace):
     with open(os.path.join(workspace.export_dir, 'mros_export.cmake')) as stream:
         before = stream.read()
-    run(['colcon', 'build', '--packages-select', 'mros_test_base', '--mros-export', workspace.export_dir],
+    run(['colcon', 'build', '--packages-select', 'mros_test_base', '--mros-export',
+         workspace.export_dir],
         workspace.root)
     with open(os.path.join(workspace.export_dir, 'mros_export.cmake')) as stream:
         after = stream.read()

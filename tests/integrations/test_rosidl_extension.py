@@ -54,7 +54,8 @@ class Workspace:
         self.genmros = os.path.join(root, 'rosidl_generator_mros2')
         with open(self.genmros, 'w') as stream:
             stream.write('#!/bin/sh\necho "$*" >> "%s"\n'
-                         'exec /usr/bin/python3 -m colcon_mros.integrations.rosidl_generator "$@"\n'
+                         'exec /usr/bin/python3 -m colcon_mros.integrations.rosidl_generator '
+                         '"$@"\n'
                          % self.genmros_log)
         os.chmod(self.genmros, 0o755)
         self.env = {key: value for key, value in os.environ.items() if key not in ROS_VARIABLES}
@@ -85,7 +86,8 @@ class Workspace:
 
     def generator_runs(self):
         """The runs that generated headers."""
-        return [run for run in self.genmros_runs() if run.startswith('--generator-arguments-file ')]
+        return [run for run in self.genmros_runs()
+                if run.startswith('--generator-arguments-file ')]
 
     def mros2_include(self, package):
         """The package's mros2 include root in the install."""

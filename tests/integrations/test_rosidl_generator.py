@@ -145,7 +145,8 @@ def test_the_depfile_names_its_code_templates_and_static_headers(tmp_path):
     assert target == stamp
     files = [name.strip() for name in dependencies.split(' \\\n')]
     package = os.path.join(REPO, 'colcon_mros')
-    for relative in ('mros2/templates/message_class.hpp.em', 'mros2/support/mros2_message_wire.hpp',
+    for relative in ('mros2/templates/message_class.hpp.em',
+                     'mros2/support/mros2_message_wire.hpp',
                      'core/support/mros_message_containers.h', 'ros2/model.py',
                      'integrations/rosidl_generator.py'):
         assert os.path.join(package, relative) in files

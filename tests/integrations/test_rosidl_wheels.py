@@ -49,7 +49,8 @@ def wheel_build(tmp_path_factory):
     root = tmp_path_factory.mktemp('wheels')
     generator = str(root / 'rosidl_generator_mros2')
     with open(generator, 'w') as stream:
-        stream.write('#!/bin/sh\nPYTHONPATH=%s exec %s -m colcon_mros.integrations.rosidl_generator'
+        stream.write('#!/bin/sh\nPYTHONPATH=%s exec %s -m '
+                     'colcon_mros.integrations.rosidl_generator'
                      ' "$@"\n' % (REPO, os.path.join(VENV, 'bin', 'python')))
     os.chmod(generator, 0o755)
     env = {key: value for key, value in os.environ.items()
