@@ -366,6 +366,20 @@ def test_ament_index_discovery_finds_the_generator(workspace, tmp_path):
     assert lines['mros2 dir'] == CHECKOUT_EXTENSION_DIR
 
 
+def test_a_generator_without_its_support_headers_stops_the_configure(workspace, tmp_path):
+    """The checkout's share/ as the CMake package: no include/rosidl_generator_mros2 beside it."""
+    build = str(tmp_path / 'build')
+    result = subprocess.run(
+        ['cmake', '-S', workspace.source('mros2_base_msgs'), '-B', build,
+         '-Drosidl_generator_mros2_DIR=%s' % CHECKOUT_EXTENSION_DIR,
+         '-Drosidl_generator_mros2_BIN=%s' % workspace.genmros],
+        env=workspace.env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    assert result.returncode != 0
+    assert ('rosidl_generator_mros2: no support headers in %s; reinstall colcon-mros '
+            '(scripts/setup.sh)' % os.path.join(REPO, 'include', 'rosidl_generator_mros2')) \
+        in ' '.join(result.stdout.split()), result.stdout[-3000:]
+
+
 LISTED_PACKAGE_CMAKE = '''cmake_minimum_required(VERSION 3.16)
 project(mros2_listed_msgs)
 

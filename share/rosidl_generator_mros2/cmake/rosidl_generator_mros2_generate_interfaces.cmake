@@ -42,8 +42,9 @@
 
 # Every header includes the support headers, which the target below names
 # by absolute path: a generator installed without them (an older
-# colcon-mros) would give a target no app can use.
-if(NOT EXISTS "${rosidl_generator_mros2_SUPPORT_INCLUDE_DIR}/mros2_message_wire.hpp")
+# colcon-mros, or the checkout's share/ used as the CMake package) would
+# give a target no app can use.
+if(NOT IS_DIRECTORY "${rosidl_generator_mros2_SUPPORT_INCLUDE_DIR}")
   message(FATAL_ERROR "rosidl_generator_mros2: no support headers in "
     "${rosidl_generator_mros2_SUPPORT_INCLUDE_DIR}; reinstall colcon-mros (scripts/setup.sh)")
 endif()
@@ -158,9 +159,13 @@ foreach(_mros2_pkg ${rosidl_generate_interfaces_DEPENDENCY_PACKAGE_NAMES})
   # Empty for a package built without the mros2 generator.
   target_link_libraries(${_mros2_target} INTERFACE ${${_mros2_pkg}_TARGETS${_mros2_target_suffix}})
 endforeach()
-# A target of the package that links it waits for the headers.
-add_dependencies(${_mros2_target} ${rosidl_generate_interfaces_TARGET}__mros2)
-add_dependencies(${rosidl_generate_interfaces_TARGET} ${_mros2_target})
+# A target of the package that links it waits for the headers (CMake takes
+# target-level dependencies of an INTERFACE library from 3.19; before, the
+# package's target waits for them through the __mros2 target above).
+if(NOT CMAKE_VERSION VERSION_LESS 3.19)
+  add_dependencies(${_mros2_target} ${rosidl_generate_interfaces_TARGET}__mros2)
+  add_dependencies(${rosidl_generate_interfaces_TARGET} ${_mros2_target})
+endif()
 
 if(NOT rosidl_generate_interfaces_SKIP_INSTALL)
   # Exactly the listed interfaces' headers (not the output dir, which may
