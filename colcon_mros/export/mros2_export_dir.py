@@ -13,6 +13,11 @@ writes for the ROS 2 packages it built, and what a firmware's
                                              DIR/mros2 reads them again
     DIR/mros2/COLCON_IGNORE                  so no tool takes share/<pkg> for packages
 
+The headers are rendered from the definitions (the workspace's sources,
+the prefixes' ``.msg``/``.srv``/``.idl``), never copied from the headers
+rosidl_generator_mros2 installed, so the export does not depend on that
+install's layout, nor on the generator having run for a package.
+
 The include dir is switched in one step
 (:func:`colcon_mros.core.output.write_tree`); the definitions are
 written with :func:`colcon_mros.core.output.write_files`.

@@ -11,7 +11,11 @@ packages it depends on (``ros_interface_dependencies``: ``<pkg>:<path>``)
 and the output directory. Exactly the listed interfaces get a header,
 ``<output_dir>/<pkg>/<kind>/<type>.hpp``; an action is skipped with one
 line, as mros2 has none. genmros' own errors name the ``.msg`` or ``.srv``
-the user wrote, with its line.
+the user wrote, with its line. The support headers they include are not
+written: the generator's install holds them once
+(``<prefix>/include/rosidl_generator_mros2``), and the CMake side installs
+each package's headers under an include root of its own
+(``<prefix>/include/<pkg>/mros2``, :data:`MROS2_INCLUDE_ROOT`).
 
 With ``--dependency-file FILE --dependency-target OUTPUT`` it also writes
 a make depfile (CMake's ``DEPFILE``): OUTPUT depends on the files the
@@ -36,6 +40,16 @@ from colcon_mros.ros2.model import ModelBuilder
 from colcon_mros.ros2.rosidl import read_generator_arguments
 
 PROGRAM = 'rosidl_generator_mros2'
+# Below an install prefix, what rosidl_generator_mros2_generate_interfaces.cmake
+# installs for a package ('%s': its name): its mros2 include root, and the
+# ament index marker saying the generator ran for it.
+MROS2_INCLUDE_ROOT = ('include', '%s', 'mros2')
+MARKER_RESOURCE = 'rosidl_generator_mros2__packages'
+# The include root an earlier colcon-mros shared between every package
+# (include/mros2/<pkg>/...): what an install made then holds.
+OLD_INCLUDE_ROOT = ('include', 'mros2')
+# The generator's support headers, below its install prefix (setup.cfg).
+SUPPORT_INCLUDE_DIR = ('include', PROGRAM)
 GENERATED_KINDS = ('msg', 'srv')
 # What rosidl_generate_interfaces() may pass that mros2 cannot carry.
 SKIPPED_KINDS = {'action': 'mros2 has no actions'}
@@ -89,10 +103,9 @@ def generate(arguments):
                 for kind, stem in sorted(own) if kind == 'msg']
     services = [builder.service('%s/srv/%s' % (name, stem))
                 for kind, stem in sorted(own) if kind == 'srv']
+    # The support headers are not the package's: the generator's install
+    # holds them once (SUPPORT_INCLUDE_DIR), which the package's target names.
     files = render_types(messages, services)
-    # Every package's install holds the support headers too, so that its
-    # include/mros2 is a whole include root (same text in every package).
-    files.update(render.support_headers())
     notices = []
     for kind, reason in sorted(SKIPPED_KINDS.items()):
         names = ['%s/%s/%s' % (name, i.kind, i.name) for i in skipped if i.kind == kind]

@@ -3,19 +3,24 @@
 
 DIR sits inside the workspace, where a user is likely to put it; the second
 build in the module also shows that colcon does not take DIR/share for
-packages. The steps share one workspace and run in file order.
+packages. The steps share one workspace and run in file order. The last
+test builds ROS 2 interface packages, one without the mros2 generator.
 """
 
 import os
+import shutil
 
 import pytest
+
+from checkout_install import checkout_install
+from conftest import REPO
 
 from colcon_mros.mros_v1.cpp import SUPPORT_HEADERS
 from fixtures.build_integration.tools import (
     MESSAGE_PACKAGES, TEST_WS_SRC,
     build_firmware_of_whole_export, compile_headers, expected_header_names, genmros_export,
-    genmsg_md5, genpy_default_size, headers_under, imported_firmware_output, mtimes, new_workspace, run, search_path_of,
-    unwrapped)
+    genmsg_md5, genpy_default_size, headers_under, imported_firmware_output, mtimes,
+    new_workspace, run, search_path_of, unwrapped, user_environment)
 
 # cmake, colcon, catkin or make builds: more than half a minute.
 pytestmark = pytest.mark.slow
@@ -146,7 +151,8 @@ def test_a_build_that_changed_no_definition_leaves_the_export_as_it_is(workspace
 def test_selected_packages_add_to_the_export_and_never_shrink_it(workspace):
     with open(os.path.join(workspace.export_dir, 'mros_export.cmake')) as stream:
         before = stream.read()
-    run(['colcon', 'build', '--packages-select', 'mros_test_base', '--mros-export', workspace.export_dir],
+    run(['colcon', 'build', '--packages-select', 'mros_test_base', '--mros-export',
+         workspace.export_dir],
         workspace.root)
     with open(os.path.join(workspace.export_dir, 'mros_export.cmake')) as stream:
         after = stream.read()
@@ -173,3 +179,67 @@ def test_a_firmware_imports_the_whole_export_with_its_services(workspace, tmp_pa
     types = build_firmware_of_whole_export(workspace.export_dir, str(tmp_path))
     assert {'mros_test/LookupPerson', 'mros_test/LookupPersonRequest',
             'mros_test/LookupPersonResponse', 'std_msgs/Header'} <= set(types)
+
+
+# An interface package as Debian 12 lets one be written without the mros2
+# generator: rosidl_generator_cpp alone, and rosidl_cmake for
+# rosidl_generate_interfaces() (no rosidl_default_generators there to find
+# generators in the ament index), so the mros2 generator never runs for it.
+PLAIN_CMAKE = '''cmake_minimum_required(VERSION 3.16)
+project(mros2_plain_msgs)
+find_package(ament_cmake REQUIRED)
+find_package(rosidl_cmake REQUIRED)
+find_package(rosidl_generator_cpp REQUIRED)
+rosidl_generate_interfaces(${PROJECT_NAME} "msg/Plain.msg")
+ament_package()
+'''
+
+
+def test_a_ros2_package_built_without_the_mros2_generator_is_named_with_the_fix(tmp_path):
+    root = str(tmp_path / 'ws')
+    ros2_src = os.path.join(REPO, 'test_ws_ros2', 'src')
+    shutil.copytree(os.path.join(ros2_src, 'mros2_base_msgs'),
+                    os.path.join(root, 'src', 'mros2_base_msgs'))
+    plain = os.path.join(root, 'src', 'mros2_plain_msgs')
+    os.makedirs(os.path.join(plain, 'msg'))
+    with open(os.path.join(ros2_src, 'mros2_base_msgs', 'package.xml')) as stream:
+        manifest = stream.read().replace('mros2_base_msgs', 'mros2_plain_msgs').replace(
+            '  <buildtool_depend>rosidl_generator_mros2</buildtool_depend>\n', '')
+    for name, text in (('package.xml', manifest), ('CMakeLists.txt', PLAIN_CMAKE),
+                       (os.path.join('msg', 'Plain.msg'), 'int32 value\n')):
+        with open(os.path.join(plain, name), 'w') as stream:
+            stream.write(text)
+    export_dir = os.path.join(root, 'mros_export')
+    # A Debian 12 user's environment: no AMENT_PREFIX_PATH names the generator.
+    env = user_environment(AMENT_PREFIX_PATH=None)
+    result = run(['colcon', 'build', '--merge-install', '--event-handlers', 'console_direct+',
+                  '--mros-export', export_dir], root, env=env)
+    warnings = [line for line in result.stdout.splitlines()
+                if line.startswith('genmros: warning: ')]
+    assert warnings == [
+        'genmros: warning: mros2_plain_msgs was built without the mros2 generator (its install '
+        'has no mros2 headers; they are exported all the same): add '
+        'find_package(rosidl_generator_mros2 REQUIRED) before rosidl_generate_interfaces() in '
+        '%s, or put %s on AMENT_PREFIX_PATH'
+        % (os.path.join(plain, 'CMakeLists.txt'), checkout_install().prefix)], result.stdout
+    install = os.path.join(root, 'install')
+    assert os.path.isfile(os.path.join(install, 'include', 'mros2_base_msgs', 'mros2',
+                                       'mros2_base_msgs', 'msg', 'stamp.hpp'))
+    assert not os.path.exists(os.path.join(install, 'include', 'mros2_plain_msgs', 'mros2'))
+    # Its headers are exported all the same, made from its sources.
+    include = os.path.join(export_dir, 'mros2', 'include')
+    for relative in (('mros2_plain_msgs', 'msg', 'plain.hpp'),
+                     ('mros2_base_msgs', 'msg', 'stamp.hpp')):
+        assert os.path.isfile(os.path.join(include, *relative)), relative
+
+    # A second build, the generator found: the line is gone.
+    with open(os.path.join(plain, 'CMakeLists.txt'), 'w') as stream:
+        stream.write(PLAIN_CMAKE.replace(
+            'find_package(rosidl_generator_cpp REQUIRED)\n',
+            'find_package(rosidl_generator_cpp REQUIRED)\n'
+            'find_package(rosidl_generator_mros2 REQUIRED)\n'))
+    result = run(['colcon', 'build', '--merge-install', '--event-handlers', 'console_direct+',
+                  '--mros-export', export_dir], root, env=env)
+    assert 'genmros: warning: ' not in result.stdout
+    assert os.path.isfile(os.path.join(install, 'include', 'mros2_plain_msgs', 'mros2',
+                                       'mros2_plain_msgs', 'msg', 'plain.hpp'))

@@ -3,14 +3,16 @@
 
 A fresh copy of test_ws_ros2 (mros2_base_msgs, and mros2_test_msgs, whose
 Reading contains mros2_base_msgs/Stamp) is built with colcon as a Debian 12
-user builds it: /usr/bin first on PATH, no ROS variables set. The packages
-find_package(rosidl_generator_cpp) and find_package(rosidl_generator_mros2);
-this checkout's generator is used, not an installed one:
-rosidl_generator_mros2_DIR names the checkout's share/rosidl_generator_mros2/cmake
-and rosidl_generator_mros2_BIN a wrapper that runs the checkout's entry
-point (and logs each run). The steps share one workspace and run in file
-order; a package of its own shows that exactly the listed interfaces get
-headers.
+user builds it (--merge-install): /usr/bin first on PATH, no ROS variables
+set. The packages find_package(rosidl_generator_cpp) and
+find_package(rosidl_generator_mros2); this checkout's generator is used, not
+an installed one: rosidl_generator_mros2_DIR names the CMake package of this
+checkout's install (tests/checkout_install.py, which also holds the support
+headers) and rosidl_generator_mros2_BIN a wrapper that runs the checkout's
+entry point (and logs each run). Each package installs its headers under
+include/<pkg>/mros2, no file twice, and exports a target an app links. The
+steps share one workspace and run in file order; a package of its own shows
+that exactly the listed interfaces get headers.
 """
 
 import json
@@ -22,6 +24,9 @@ import time
 
 import pytest
 
+from checkout_install import checkout_install
+from colcon_mros.integrations.rosidl_generator import (MARKER_RESOURCE, MROS2_INCLUDE_ROOT,
+                                                       SUPPORT_INCLUDE_DIR)
 from colcon_mros.mros2 import render
 
 # cmake and colcon builds.
@@ -29,7 +34,8 @@ pytestmark = pytest.mark.slow
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 TEST_WS_ROS2 = os.path.join(REPO, 'test_ws_ros2')
-EXTENSION_DIR = os.path.join(REPO, 'share', 'rosidl_generator_mros2', 'cmake')
+# The checkout as a prefix: what test_ament_index_discovery_finds_the_generator reads.
+CHECKOUT_EXTENSION_DIR = os.path.join(REPO, 'share', 'rosidl_generator_mros2', 'cmake')
 STRICT_CXX = ['g++', '-std=c++11', '-Wall', '-Wextra', '-Werror', '-pedantic', '-fsyntax-only']
 # Variables of a sourced ROS environment the build must not see.
 ROS_VARIABLES = ('AMENT_PREFIX_PATH', 'CMAKE_PREFIX_PATH', 'COLCON_PREFIX_PATH', 'PYTHONPATH',
@@ -41,12 +47,16 @@ class Workspace:
         self.root = root
         shutil.copytree(os.path.join(TEST_WS_ROS2, 'src'), os.path.join(root, 'src'))
         self.install = os.path.join(root, 'install')
-        self.mros2_include = os.path.join(self.install, 'include', 'mros2')
+        self.generator_prefix = checkout_install().prefix
+        self.extension_dir = os.path.join(self.generator_prefix, 'share',
+                                          'rosidl_generator_mros2', 'cmake')
+        self.support_include = os.path.join(self.generator_prefix, *SUPPORT_INCLUDE_DIR)
         self.genmros_log = os.path.join(root, 'genmros-runs.log')
         self.genmros = os.path.join(root, 'rosidl_generator_mros2')
         with open(self.genmros, 'w') as stream:
             stream.write('#!/bin/sh\necho "$*" >> "%s"\n'
-                         'exec /usr/bin/python3 -m colcon_mros.integrations.rosidl_generator "$@"\n'
+                         'exec /usr/bin/python3 -m colcon_mros.integrations.rosidl_generator '
+                         '"$@"\n'
                          % self.genmros_log)
         os.chmod(self.genmros, 0o755)
         self.env = {key: value for key, value in os.environ.items() if key not in ROS_VARIABLES}
@@ -60,7 +70,7 @@ class Workspace:
         result = subprocess.run(
             ['colcon', 'build', '--merge-install', '--event-handlers', 'console_direct+',
              '--cmake-args', '-Drosidl_generator_mros2_BIN=%s' % self.genmros,
-             '-Drosidl_generator_mros2_DIR=%s' % EXTENSION_DIR],
+             '-Drosidl_generator_mros2_DIR=%s' % self.extension_dir],
             cwd=self.root, env=self.env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
             text=True)
         if check and result.returncode != 0:
@@ -77,11 +87,23 @@ class Workspace:
 
     def generator_runs(self):
         """The runs that generated headers."""
-        return [run for run in self.genmros_runs() if run.startswith('--generator-arguments-file ')]
+        return [run for run in self.genmros_runs()
+                if run.startswith('--generator-arguments-file ')]
+
+    def mros2_include(self, package):
+        """The package's mros2 include root in the install."""
+        return os.path.join(self.install, *MROS2_INCLUDE_ROOT) % package
 
     def mros2_header(self, relative):
-        with open(os.path.join(self.mros2_include, relative)) as stream:
+        """An installed header, by its name below an include root (<pkg>/msg/<type>.hpp)."""
+        package = relative.split(os.sep)[0]
+        with open(os.path.join(self.mros2_include(package), relative)) as stream:
             return stream.read()
+
+    def install_manifest(self, package):
+        """The files the package's last install wrote (CMake's install_manifest.txt)."""
+        with open(os.path.join(self.root, 'build', package, 'install_manifest.txt')) as stream:
+            return stream.read().splitlines()
 
     def append(self, source_file, line):
         with open(source_file, 'a') as stream:
@@ -100,8 +122,8 @@ def test_build_used_the_checkouts_generator(workspace):
         with open(os.path.join(workspace.root, 'build', package, 'CMakeCache.txt')) as stream:
             cache = stream.read()
         # -D without a type: the cache keeps them UNINITIALIZED.
-        assert re.search(r'^rosidl_generator_mros2_DIR:\w+=%s$' % re.escape(EXTENSION_DIR),
-                         cache, re.M)
+        assert re.search(r'^rosidl_generator_mros2_DIR:\w+=%s$'
+                         % re.escape(workspace.extension_dir), cache, re.M)
         assert re.search(r'^rosidl_generator_mros2_BIN:\w+=%s$' % re.escape(workspace.genmros),
                          cache, re.M)
     runs = workspace.generator_runs()
@@ -125,13 +147,45 @@ def test_build_used_the_checkouts_generator(workspace):
                             'message_class.hpp.em') in stream.read()
 
 
-def test_mros2_headers_are_installed(workspace):
-    found = sorted(os.path.relpath(os.path.join(directory, name), workspace.mros2_include)
-                   for directory, _, names in os.walk(workspace.mros2_include) for name in names)
-    assert found == sorted([os.path.join('mros2_base_msgs', 'msg', 'stamp.hpp'),
-                            os.path.join('mros2_test_msgs', 'msg', 'reading.hpp'),
-                            os.path.join('mros2_test_msgs', 'srv', 'query.hpp'),
-                            'mros2_message_wire.hpp', 'mros_message_containers.h'])
+def _files_under(directory):
+    return sorted(os.path.relpath(os.path.join(d, name), directory)
+                  for d, _, names in os.walk(directory) for name in names)
+
+
+def test_mros2_headers_are_installed_under_each_packages_include_root(workspace):
+    assert _files_under(workspace.mros2_include('mros2_base_msgs')) == [
+        os.path.join('mros2_base_msgs', 'msg', 'stamp.hpp')]
+    assert _files_under(workspace.mros2_include('mros2_test_msgs')) == [
+        os.path.join('mros2_test_msgs', 'msg', 'reading.hpp'),
+        os.path.join('mros2_test_msgs', 'srv', 'query.hpp')]
+    # No shared include root any more, and no support header in the workspace.
+    assert not os.path.exists(os.path.join(workspace.install, 'include', 'mros2'))
+    for directory, _, names in os.walk(workspace.install):
+        assert not set(names) & set(render.support_headers()), directory
+
+
+def test_no_file_is_installed_by_both_packages(workspace):
+    base = workspace.install_manifest('mros2_base_msgs')
+    test = workspace.install_manifest('mros2_test_msgs')
+    assert os.path.join(workspace.mros2_include('mros2_base_msgs'), 'mros2_base_msgs', 'msg',
+                        'stamp.hpp') in base
+    assert set(base) & set(test) == set()
+
+
+def test_each_package_has_the_generators_marker(workspace):
+    index = os.path.join(workspace.install, 'share', 'ament_index', 'resource_index',
+                         MARKER_RESOURCE)
+    assert _files_under(index) == ['mros2_base_msgs', 'mros2_test_msgs']
+    with open(os.path.join(index, 'mros2_test_msgs')) as stream:
+        assert stream.read().split() == ['mros2_test_msgs/msg/reading.hpp',
+                                         'mros2_test_msgs/srv/query.hpp']
+
+
+def test_the_support_headers_are_the_generators_once(workspace):
+    assert _files_under(workspace.support_include) == sorted(render.support_headers())
+    for name, text in render.support_headers().items():
+        with open(os.path.join(workspace.support_include, name)) as stream:
+            assert stream.read() == text, name
 
 
 def test_message_header_declares_the_type_and_its_dds_name(workspace):
@@ -163,22 +217,59 @@ def test_rosidls_own_cpp_headers_are_installed_too(workspace):
         assert os.path.isfile(os.path.join(workspace.install, 'include', *relative)), relative
 
 
+APP_SOURCE = '''#include "mros2_base_msgs/msg/stamp.hpp"
+#include "mros2_test_msgs/msg/reading.hpp"
+#include "mros2_test_msgs/srv/query.hpp"
+int main()
+{
+  mros2_test_msgs::msg::Reading reading;
+  mros2_base_msgs::msg::Stamp stamp;
+  reading.stamp = stamp;
+  reading.stamp.nanosec = 1u;
+  return static_cast<int>(reading.samples.size());
+}
+'''
+# An app of the installed packages, as a user writes one: the targets their
+# packages export, nothing else named.
+APP_CMAKE = '''cmake_minimum_required(VERSION 3.16)
+project(app CXX)
+find_package(mros2_base_msgs REQUIRED)
+find_package(mros2_test_msgs REQUIRED)
+add_executable(app app.cpp)
+target_compile_options(app PRIVATE -Wall -Wextra -Werror -pedantic)
+target_link_libraries(app PRIVATE
+  mros2_base_msgs::mros2_base_msgs__rosidl_generator_mros2
+  ${mros2_test_msgs_TARGETS__rosidl_generator_mros2})
+message(STATUS "mros2 targets: ${mros2_test_msgs_TARGETS__rosidl_generator_mros2}")
+'''
+
+
 def test_installed_headers_compile_with_the_support_headers(workspace, tmp_path):
-    support = str(tmp_path / 'support')
-    for name, text in render.support_headers().items():
-        os.makedirs(os.path.dirname(os.path.join(support, name)), exist_ok=True)
-        with open(os.path.join(support, name), 'w') as stream:
-            stream.write(text)
     source = str(tmp_path / 'use.cpp')
     with open(source, 'w') as stream:
-        stream.write('#include "mros2_test_msgs/msg/reading.hpp"\n'
-                     '#include "mros2_test_msgs/srv/query.hpp"\n'
-                     'int main()\n{\n  mros2_test_msgs::msg::Reading reading;\n'
-                     '  reading.stamp.nanosec = 1u;\n'
-                     '  return static_cast<int>(reading.samples.size());\n}\n')
-    result = subprocess.run(STRICT_CXX + ['-I', workspace.mros2_include, '-I', support, source],
+        stream.write(APP_SOURCE)
+    result = subprocess.run(STRICT_CXX + ['-I', workspace.mros2_include('mros2_test_msgs'),
+                                          '-I', workspace.mros2_include('mros2_base_msgs'),
+                                          '-I', workspace.support_include, source],
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     assert result.returncode == 0, result.stdout
+
+
+def test_an_app_links_the_exported_targets_and_compiles(workspace, tmp_path):
+    app = tmp_path / 'app'
+    app.mkdir()
+    (app / 'CMakeLists.txt').write_text(APP_CMAKE)
+    (app / 'app.cpp').write_text(APP_SOURCE)
+    build = str(tmp_path / 'build')
+    env = dict(workspace.env, CMAKE_PREFIX_PATH=workspace.install)
+    for command in (['cmake', '-S', str(app), '-B', build], ['cmake', '--build', build]):
+        result = subprocess.run(command, env=env, stdout=subprocess.PIPE,
+                                stderr=subprocess.STDOUT, text=True)
+        assert result.returncode == 0, result.stdout[-6000:]
+        if command[1] == '-S':
+            assert '-- mros2 targets: mros2_test_msgs::mros2_test_msgs__rosidl_generator_mros2' \
+                in result.stdout.splitlines()
+    assert os.access(os.path.join(build, 'app'), os.X_OK)
 
 
 def test_unchanged_rebuild_runs_no_genmros(workspace):
@@ -273,7 +364,21 @@ def test_ament_index_discovery_finds_the_generator(workspace, tmp_path):
     assert 'rosidl_generator_mros2' in lines['generators'].split(';')
     assert ('rosidl_generator_mros2:rosidl_generator_mros2_generate_interfaces.cmake'
             in lines['extensions'].split(';'))
-    assert lines['mros2 dir'] == EXTENSION_DIR
+    assert lines['mros2 dir'] == CHECKOUT_EXTENSION_DIR
+
+
+def test_a_generator_without_its_support_headers_stops_the_configure(workspace, tmp_path):
+    """The checkout's share/ as the CMake package: no include/rosidl_generator_mros2 beside it."""
+    build = str(tmp_path / 'build')
+    result = subprocess.run(
+        ['cmake', '-S', workspace.source('mros2_base_msgs'), '-B', build,
+         '-Drosidl_generator_mros2_DIR=%s' % CHECKOUT_EXTENSION_DIR,
+         '-Drosidl_generator_mros2_BIN=%s' % workspace.genmros],
+        env=workspace.env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    assert result.returncode != 0
+    assert ('rosidl_generator_mros2: no support headers in %s; reinstall colcon-mros '
+            '(scripts/setup.sh)' % os.path.join(REPO, 'include', 'rosidl_generator_mros2')) \
+        in ' '.join(result.stdout.split()), result.stdout[-3000:]
 
 
 LISTED_PACKAGE_CMAKE = '''cmake_minimum_required(VERSION 3.16)
@@ -313,7 +418,7 @@ def listed_workspace(tmp_path_factory):
 
 
 def _package_headers(workspace, package):
-    directory = os.path.join(workspace.mros2_include, package)
+    directory = os.path.join(workspace.mros2_include(package), package)
     return sorted(os.path.relpath(os.path.join(d, name), directory)
                   for d, _, names in os.walk(directory) for name in names)
 

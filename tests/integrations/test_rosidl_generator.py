@@ -88,8 +88,8 @@ def test_an_action_is_skipped_with_one_line_and_the_rest_is_written(tmp_path):
     assert (result.returncode, result.stderr) == (0, '')
     assert result.stdout == ('rosidl_generator_mros2: skipped demo/action/Fibonacci: mros2 has '
                              'no actions\n')
-    assert _written(tmp_path) == ['demo/msg/ping.hpp', 'mros2_message_wire.hpp',
-                                  'mros_message_containers.h']
+    # The support headers are the generator's install's, not the package's.
+    assert _written(tmp_path) == ['demo/msg/ping.hpp']
 
 
 def test_an_error_names_the_msg_the_user_wrote_at_its_line(tmp_path):
@@ -119,8 +119,7 @@ def test_contained_types_come_from_the_dependencies_listed(tmp_path):
         ros_interface_dependencies=['other:%s' % inner]))
     assert (result.returncode, result.stderr) == (0, '')
     # The contained type's header is its own package's to write.
-    assert _written(tmp_path) == ['demo/msg/wrapped.hpp', 'mros2_message_wire.hpp',
-                                  'mros_message_containers.h']
+    assert _written(tmp_path) == ['demo/msg/wrapped.hpp']
     with open(str(tmp_path / 'out' / 'demo' / 'msg' / 'wrapped.hpp')) as stream:
         assert 'other::msg::Inner inner;' in stream.read()
 
@@ -147,7 +146,8 @@ def test_the_depfile_names_its_code_templates_and_static_headers(tmp_path):
     assert target == stamp
     files = [name.strip() for name in dependencies.split(' \\\n')]
     package = os.path.join(REPO, 'colcon_mros')
-    for relative in ('mros2/templates/message_class.hpp.em', 'mros2/support/mros2_message_wire.hpp',
+    for relative in ('mros2/templates/message_class.hpp.em',
+                     'mros2/support/mros2_message_wire.hpp',
                      'core/support/mros_message_containers.h', 'ros2/model.py',
                      'integrations/rosidl_generator.py'):
         assert os.path.join(package, relative) in files
@@ -182,8 +182,7 @@ def test_it_runs_on_humbles_rosidl_without_rosidl_pycommon(tmp_path):
     result = _without(['rosidl_pycommon'], humble, '--generator-arguments-file', arguments)
     assert (result.returncode, result.stdout, result.stderr) == (0, '', '')
     # The header names come from the helper: TwoWords -> two_words.hpp.
-    assert _written(tmp_path) == ['demo/msg/ping.hpp', 'demo/msg/two_words.hpp',
-                                  'mros2_message_wire.hpp', 'mros_message_containers.h']
+    assert _written(tmp_path) == ['demo/msg/ping.hpp', 'demo/msg/two_words.hpp']
 
 
 def test_without_either_helper_module_it_says_what_to_install(tmp_path):

@@ -3,7 +3,9 @@
 mros2_base_msgs of test_ws_ros2 built with CMake against the rosidl that
 scripts/setup.sh --tests installs into build/ros2-wheels (its
 rosidl_write_generator_arguments(), rosidl_find_package_idl(), Python and
-rosidl_pycommon), with this checkout's rosidl_generator_mros2. Its header is
+rosidl_pycommon), with this checkout's rosidl_generator_mros2 (the CMake
+package and support headers of its install, tests/checkout_install.py; the
+checkout's entry point). Its header is
 the one genmros writes for the same message with Debian's rosidl (3.3). And
 an interface package as ROS 2's tutorials write it, naming only
 rosidl_default_generators, gets its mros2 headers beside rosidl's C++ and
@@ -14,14 +16,24 @@ import subprocess
 
 import pytest
 
+from checkout_install import checkout_install
 from conftest import REPO, run_genmros
 
 pytestmark = pytest.mark.slow
 
 VENV = os.path.join(REPO, 'build', 'ros2-wheels')
 PACKAGE = os.path.join(REPO, 'test_ws_ros2', 'src', 'mros2_base_msgs')
-EXTENSION_DIR = os.path.join(REPO, 'share', 'rosidl_generator_mros2', 'cmake')
 STAMP = os.path.join('mros2_base_msgs', 'msg', 'stamp.hpp')
+
+
+def _extension_dir():
+    """The CMake package of this checkout's install (with its support headers)."""
+    return os.path.join(checkout_install().prefix, 'share', 'rosidl_generator_mros2', 'cmake')
+
+
+def _mros2_include(install, package):
+    """The package's mros2 include root: <install>/include/<pkg>/mros2."""
+    return os.path.join(str(install), 'include', package, 'mros2')
 
 
 def _run(argv, env):
@@ -38,7 +50,8 @@ def wheel_build(tmp_path_factory):
     root = tmp_path_factory.mktemp('wheels')
     generator = str(root / 'rosidl_generator_mros2')
     with open(generator, 'w') as stream:
-        stream.write('#!/bin/sh\nPYTHONPATH=%s exec %s -m colcon_mros.integrations.rosidl_generator'
+        stream.write('#!/bin/sh\nPYTHONPATH=%s exec %s -m '
+                     'colcon_mros.integrations.rosidl_generator'
                      ' "$@"\n' % (REPO, os.path.join(VENV, 'bin', 'python')))
     os.chmod(generator, 0o755)
     env = {key: value for key, value in os.environ.items()
@@ -47,7 +60,7 @@ def wheel_build(tmp_path_factory):
     build, install = str(root / 'build'), str(root / 'install')
     _run(['cmake', '-S', PACKAGE, '-B', build, '-DCMAKE_PREFIX_PATH=%s' % VENV,
           '-DPython3_EXECUTABLE=%s' % os.path.join(VENV, 'bin', 'python'),
-          '-Drosidl_generator_mros2_DIR=%s' % EXTENSION_DIR,
+          '-Drosidl_generator_mros2_DIR=%s' % _extension_dir(),
           '-Drosidl_generator_mros2_BIN=%s' % generator, '-DCMAKE_INSTALL_PREFIX=%s' % install],
          env)
     _run(['cmake', '--build', build], env)
@@ -72,7 +85,7 @@ def test_its_header_is_the_one_debians_rosidl_gives(wheel_build, tmp_path):
     _, install = wheel_build
     run_genmros('mros2-export', '--workspace', os.path.join(REPO, 'test_ws_ros2'),
                 '--type', 'mros2_base_msgs/msg/Stamp', '-o', str(tmp_path))
-    with open(os.path.join(install, 'include', 'mros2', STAMP)) as wheels, \
+    with open(os.path.join(_mros2_include(install, 'mros2_base_msgs'), STAMP)) as wheels, \
             open(str(tmp_path / STAMP)) as debian:
         assert wheels.read() == debian.read()
 
@@ -124,13 +137,14 @@ def test_a_package_naming_only_rosidl_default_generators_gets_mros2_headers(tmp_
     build, install = str(tmp_path / 'build'), tmp_path / 'install'
     _run(['cmake', '-S', str(source), '-B', build, '-DCMAKE_PREFIX_PATH=%s;%s' % (VENV, REPO),
           '-DPython3_EXECUTABLE=%s' % os.path.join(VENV, 'bin', 'python'),
-          '-Drosidl_generator_mros2_DIR=%s' % EXTENSION_DIR,
+          '-Drosidl_generator_mros2_DIR=%s' % _extension_dir(),
           '-Drosidl_generator_mros2_BIN=%s' % generator,
           '-DCMAKE_INSTALL_PREFIX=%s' % install], env)
     _run(['cmake', '--build', build, '-j2'], env)
     _run(['cmake', '--install', build], env)
-    for relative in ('include/mros2/tutorial_interfaces/msg/num.hpp',
-                     'include/mros2/tutorial_interfaces/srv/add_three_ints.hpp',
+    for relative in ('include/tutorial_interfaces/mros2/tutorial_interfaces/msg/num.hpp',
+                     'include/tutorial_interfaces/mros2/tutorial_interfaces/srv/'
+                     'add_three_ints.hpp',
                      'include/tutorial_interfaces/tutorial_interfaces/msg/num.hpp',
                      'lib/python3.11/site-packages/tutorial_interfaces/msg/_num.py',
                      'lib/python3.11/site-packages/tutorial_interfaces/srv/_add_three_ints.py'):
@@ -139,5 +153,5 @@ def test_a_package_naming_only_rosidl_default_generators_gets_mros2_headers(tmp_
                 'tutorial_interfaces', '-o', str(tmp_path / 'export'))
     for relative in ('tutorial_interfaces/msg/num.hpp',
                      'tutorial_interfaces/srv/add_three_ints.hpp'):
-        assert (install / 'include' / 'mros2' / relative).read_text() == \
+        assert (install / 'include' / 'tutorial_interfaces' / 'mros2' / relative).read_text() == \
             (tmp_path / 'export' / relative).read_text()

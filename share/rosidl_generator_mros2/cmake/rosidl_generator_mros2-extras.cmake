@@ -24,3 +24,18 @@ if(NOT rosidl_generator_mros2_BIN)
   message(FATAL_ERROR "rosidl_generator_mros2: its program was not found; install colcon-mros "
     "(scripts/setup.sh) or set rosidl_generator_mros2_BIN")
 endif()
+
+# The static headers every mros2 header includes (mros2_message_wire.hpp,
+# mros_message_containers.h), installed once with the generator, not with
+# each interface package (colcon-mros' setup.cfg puts them in
+# <prefix>/include/rosidl_generator_mros2). Each package's exported target
+# names this directory; an app that reads mros2 headers some other way
+# links rosidl_generator_mros2::support.
+set(rosidl_generator_mros2_SUPPORT_INCLUDE_DIR
+  "${rosidl_generator_mros2_IMPORT_PREFIX}/include/rosidl_generator_mros2")
+if(NOT TARGET rosidl_generator_mros2::support
+    AND EXISTS "${rosidl_generator_mros2_SUPPORT_INCLUDE_DIR}")
+  add_library(rosidl_generator_mros2::support INTERFACE IMPORTED)
+  set_target_properties(rosidl_generator_mros2::support PROPERTIES
+    INTERFACE_INCLUDE_DIRECTORIES "${rosidl_generator_mros2_SUPPORT_INCLUDE_DIR}")
+endif()

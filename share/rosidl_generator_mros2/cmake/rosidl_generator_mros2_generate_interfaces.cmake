@@ -13,8 +13,42 @@
 # (rosidl_write_generator_arguments(), the same keywords on rosidl 3.1
 # (Humble), 3.3 and 4.x) and runs its program over it, which writes
 # <output>/<pkg>/msg/<type>.hpp and <output>/<pkg>/srv/<service>.hpp for
-# exactly the listed interfaces, installed to <prefix>/include/mros2/. An
-# action has no mros2 header: the program says so in one line.
+# exactly the listed interfaces. An action has no mros2 header: the program
+# says so in one line.
+#
+# The install layout, one include root per package, so that no two
+# interface packages (in a merged install, or two Debian packages) install
+# the same file:
+#
+#   <prefix>/include/<pkg>/mros2/<pkg>/msg/<type>.hpp   the package's mros2
+#   <prefix>/include/<pkg>/mros2/<pkg>/srv/<name>.hpp   include root
+#   <prefix>/share/ament_index/resource_index/rosidl_generator_mros2__packages/<pkg>
+#                                                       the marker: the
+#                                                       generator ran (its
+#                                                       headers, one a line)
+#
+# rosidl_generator_cpp installs <pkg>/msg/<type>.hpp under include/<pkg>
+# (Humble on); the mros2 headers have the same relative names (an app's
+# #include "pkg/msg/type.hpp" is the same for both), so they need a root of
+# their own: include/<pkg>/mros2. The support headers every mros2 header
+# includes ("mros2_message_wire.hpp", "mros_message_containers.h") are the
+# generator's, installed once with it in
+# <generator prefix>/include/rosidl_generator_mros2
+# (rosidl_generator_mros2_SUPPORT_INCLUDE_DIR, rosidl_generator_mros2-extras.cmake).
+#
+# The exported target ${rosidl_generate_interfaces_TARGET}__rosidl_generator_mros2
+# (<pkg>::<pkg>__rosidl_generator_mros2 after find_package(<pkg>), also in
+# <pkg>_TARGETS__rosidl_generator_mros2, as rosidl_generator_cpp's) carries
+# both include dirs and those of the interface packages it depends on.
+
+# Every header includes the support headers, which the target below names
+# by absolute path: a generator installed without them (an older
+# colcon-mros, or the checkout's share/ used as the CMake package) would
+# give a target no app can use.
+if(NOT IS_DIRECTORY "${rosidl_generator_mros2_SUPPORT_INCLUDE_DIR}")
+  message(FATAL_ERROR "rosidl_generator_mros2: no support headers in "
+    "${rosidl_generator_mros2_SUPPORT_INCLUDE_DIR}; reinstall colcon-mros (scripts/setup.sh)")
+endif()
 
 set(_mros2_output_dir "${CMAKE_CURRENT_BINARY_DIR}/rosidl_generator_mros2")
 set(_mros2_stamp "${CMAKE_CURRENT_BINARY_DIR}/rosidl_generator_mros2__${rosidl_generate_interfaces_TARGET}.stamp")
@@ -69,8 +103,16 @@ rosidl_write_generator_arguments(
   OUTPUT_DIR "${_mros2_output_dir}"
   TARGET_DEPENDENCIES ${_mros2_target_dependencies})
 
-# The program leaves unchanged headers as they are (what includes them is
-# not rebuilt for nothing); the stamp marks the rule as done. The program
+# The headers are the rule's BYPRODUCTS, the stamp its OUTPUT: the program
+# leaves an unchanged header as it is (what includes it is not rebuilt for
+# nothing), so a header may stay older than the .idl it comes from, which
+# is what CMake's BYPRODUCTS are for ("files the command is expected to
+# produce but whose modification time may or may not be newer than the
+# dependencies"; Ninja restats them, and regenerates a missing one). As
+# OUTPUTs, an unchanged header would leave the rule out of date forever
+# (make and Ninja compare each output's time), or be touched by make's
+# rules for the outputs after the first, rebuilding its includers. The
+# stamp is what keeps the rule from running again. The program
 # also writes a depfile naming its own files (code, templates, static
 # headers, as rosidl_generator_cpp's GENERATOR_FILES), so a new genmros
 # regenerates the headers without a program run at configure time (CMake
@@ -98,11 +140,64 @@ add_custom_command(
 add_custom_target(${rosidl_generate_interfaces_TARGET}__mros2 DEPENDS "${_mros2_stamp}")
 add_dependencies(${rosidl_generate_interfaces_TARGET} ${rosidl_generate_interfaces_TARGET}__mros2)
 
+# The target an app links, as rosidl_generator_cpp's
+# ${target}__rosidl_generator_cpp: the package's mros2 include root (the
+# build tree's, or the install's), the generator's support headers and,
+# through the dependency packages' targets, their include roots (a header
+# includes those of the types it contains).
+set(_mros2_target_suffix "__rosidl_generator_mros2")
+set(_mros2_target "${rosidl_generate_interfaces_TARGET}${_mros2_target_suffix}")
+add_library(${_mros2_target} INTERFACE)
+add_library(${PROJECT_NAME}::${_mros2_target} ALIAS ${_mros2_target})
+# The support dir is absolute in both interfaces: it is the generator's
+# install, not the package's, and an app of the package needs no
+# find_package(rosidl_generator_mros2) for it.
+target_include_directories(${_mros2_target} INTERFACE
+  "$<BUILD_INTERFACE:${_mros2_output_dir}>"
+  "$<INSTALL_INTERFACE:include/${PROJECT_NAME}/mros2>"
+  "${rosidl_generator_mros2_SUPPORT_INCLUDE_DIR}")
+foreach(_mros2_pkg ${rosidl_generate_interfaces_DEPENDENCY_PACKAGE_NAMES})
+  # Empty for a package built without the mros2 generator.
+  target_link_libraries(${_mros2_target} INTERFACE ${${_mros2_pkg}_TARGETS${_mros2_target_suffix}})
+endforeach()
+# A target of the package that links it waits for the headers (CMake takes
+# target-level dependencies of an INTERFACE library from 3.19; before, the
+# package's target waits for them through the __mros2 target above).
+if(NOT CMAKE_VERSION VERSION_LESS 3.19)
+  add_dependencies(${_mros2_target} ${rosidl_generate_interfaces_TARGET}__mros2)
+  add_dependencies(${rosidl_generate_interfaces_TARGET} ${_mros2_target})
+endif()
+
 if(NOT rosidl_generate_interfaces_SKIP_INSTALL)
-  # <prefix>/include/mros2/<pkg>/msg/<type>.hpp: one include root for every
-  # package's mros2 headers, beside rosidl's include/<pkg>/<pkg>/...
-  install(
-    DIRECTORY "${_mros2_output_dir}/"
-    DESTINATION "include/mros2"
-    FILES_MATCHING PATTERN "*.hpp" PATTERN "*.h")
+  # Exactly the listed interfaces' headers (not the output dir, which may
+  # keep the header of an interface since removed), per kind.
+  set(_mros2_marker_content "")
+  foreach(_mros2_kind msg srv)
+    set(_mros2_kind_headers "")
+    foreach(_mros2_header ${_mros2_headers})
+      get_filename_component(_mros2_header_dir "${_mros2_header}" DIRECTORY)
+      get_filename_component(_mros2_header_dir "${_mros2_header_dir}" NAME)
+      if(_mros2_header_dir STREQUAL _mros2_kind)
+        list(APPEND _mros2_kind_headers "${_mros2_header}")
+        file(RELATIVE_PATH _mros2_relative "${_mros2_output_dir}" "${_mros2_header}")
+        string(APPEND _mros2_marker_content "${_mros2_relative}\n")
+      endif()
+    endforeach()
+    if(_mros2_kind_headers)
+      install(
+        FILES ${_mros2_kind_headers}
+        DESTINATION "include/${PROJECT_NAME}/mros2/${PROJECT_NAME}/${_mros2_kind}")
+    endif()
+  endforeach()
+  # What colcon build --mros-export reads to tell a package the generator
+  # did not run for (a package with actions alone has no header and still
+  # has the marker).
+  ament_index_register_resource("rosidl_generator_mros2__packages"
+    CONTENT "${_mros2_marker_content}")
+
+  install(TARGETS ${_mros2_target} EXPORT export_${_mros2_target})
+  ament_export_targets(export_${_mros2_target})
+  # <pkg>_TARGETS__rosidl_generator_mros2 in an app's scope after
+  # find_package(<pkg>), which the loop above reads for dependencies.
+  rosidl_export_typesupport_targets(${_mros2_target_suffix} ${_mros2_target})
 endif()
