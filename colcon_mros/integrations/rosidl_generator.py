@@ -72,6 +72,12 @@ def _user_files(ros_interface_files):
     return files
 
 
+def _where_dependencies_come_from(package):
+    """What rosidl passes of another package: the ones its call names."""
+    return ('rosidl_generate_interfaces() passes only the packages it names: add %s to its '
+            'DEPENDENCIES, with find_package(%s REQUIRED) before it' % (package, package))
+
+
 def generate(arguments):
     """Write the headers of the interfaces an arguments file (as a dict)
     lists; returns (the paths written, the notices to print)."""
@@ -98,7 +104,7 @@ def generate(arguments):
     packages = {package: Package(package, None, interfaces)
                 for package, interfaces in dependencies.items()}
     packages[name] = Package(name, None, own)
-    builder = ModelBuilder(packages, HeapStorage())
+    builder = ModelBuilder(packages, HeapStorage(), _where_dependencies_come_from)
     messages = [builder.message('%s/msg/%s' % (name, stem))
                 for kind, stem in sorted(own) if kind == 'msg']
     services = [builder.service('%s/srv/%s' % (name, stem))

@@ -103,7 +103,9 @@ def test_an_error_names_the_msg_the_user_wrote_at_its_line(tmp_path):
     assert (result.returncode, result.stdout) == (1, '')
     assert result.stderr == ("genmros: error: %s:2: unknown package 'other' of type "
                              "'other/msg/Inner' (not in the workspace or the installed ROS 2 "
-                             'packages)\n' % source)
+                             'packages; rosidl_generate_interfaces() passes only the packages it '
+                             'names: add other to its DEPENDENCIES, with find_package(other '
+                             'REQUIRED) before it)\n' % source)
     assert _written(tmp_path) == []
 
 
