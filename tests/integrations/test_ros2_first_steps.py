@@ -10,10 +10,12 @@
   line names the wheel.
 - On ROS 2 Humble (opt-in: HUMBLE_ROSIDL_PREFIX, a prefix holding Humble's
   rosidl 3.1.6, rosidl_defaults and ament_cmake 1.3.11 built from their
-  checkouts, with a setup.bash; docs/testing.md), test_ws_ros2 builds with
-  that rosidl, sourced as a Humble user sources /opt/ros/humble, the
-  generator's prefix not on AMENT_PREFIX_PATH, and gets its mros2 headers,
-  equal to genmros' own.
+  checkouts, with a setup.bash or setup.sh; docs/testing.md), test_ws_ros2
+  builds with that rosidl (its CMake and its Python), sourced as a Humble
+  user sources /opt/ros/humble, the generator's prefix not on
+  AMENT_PREFIX_PATH, and gets its mros2 headers, equal to genmros' own. A
+  package naming only rosidl_default_generators gets none there, and gets
+  them once genmros' prefix is on AMENT_PREFIX_PATH.
 """
 
 import os
@@ -24,6 +26,7 @@ import subprocess
 import pytest
 
 from conftest import REPO, run_genmros
+from checkout_install import checkout_install
 from fixtures.build_integration.tools import run, user_environment
 
 DOCS = os.path.join(REPO, 'docs', 'mros2.md')
@@ -31,6 +34,10 @@ INTERFACE_PACKAGE = os.path.join(REPO, 'test_ws_ros2', 'src', 'mros2_base_msgs')
 WHEELS = os.path.join(REPO, 'build', 'ros2-wheels')
 WHEEL_PINS = os.path.join(REPO, 'scripts', 'test-requirements-ros2-wheels.txt')
 HUMBLE = os.environ.get('HUMBLE_ROSIDL_PREFIX', '')
+# /opt/ros/humble has setup.bash; a prefix built by Debian 12's colcon (no
+# colcon-bash) has the POSIX setup.sh, which bash sources the same way.
+HUMBLE_SETUP = next((os.path.join(HUMBLE, name) for name in ('setup.bash', 'setup.sh')
+                     if HUMBLE and os.path.isfile(os.path.join(HUMBLE, name))), None)
 
 
 def _docs():
@@ -87,36 +94,139 @@ def test_without_them_the_unknown_package_names_the_wheel(tmp_path):
         'with the wheel ros-geometry-msgs holds it: --prefix VENV, docs/mros2.md)\n')
 
 
+def _humble_shell(tmp_path, **overrides):
+    """A Humble user's shell: the distribution sourced (AMENT_PREFIX_PATH
+    holds only it, unless overrides say otherwise), genmros installed
+    elsewhere (this checkout's install). Returns (environment, command
+    prefix sourcing the setup file)."""
+    environment = user_environment(**dict({'AMENT_PREFIX_PATH': None}, **overrides))
+    environment['PATH'] = '/usr/bin:' + environment['PATH']
+    # Humble's rosidl 3.1 has no rosidl_pycommon (its helpers live in
+    # rosidl_cmake); Debian's python3-rosidl 3.3.1, in /usr's dist-packages
+    # on every sys.path here, has one. Hidden, as on a Humble machine, so the
+    # generator takes Humble's rosidl_cmake.
+    hidden = tmp_path / 'no_rosidl_pycommon'
+    hidden.mkdir()
+    (hidden / 'rosidl_pycommon.py').write_text(
+        "raise ImportError('no rosidl_pycommon in ROS 2 Humble')\n")
+    environment['PYTHONPATH'] = str(hidden) + os.pathsep + environment['PYTHONPATH']
+    return environment, '. "%s" && ' % HUMBLE_SETUP
+
+
+def _assert_humble_python(workspace, environment, source):
+    """The rosidl Python modules that shell imports are the prefix's."""
+    script = ('import rosidl_adapter, rosidl_parser\n'
+              'from colcon_mros.ros2.rosidl import _helpers\n'
+              'print(rosidl_adapter.__file__); print(rosidl_parser.__file__)\n'
+              'print(_helpers().__file__)\n')
+    result = run(['bash', '-c', source + 'exec python3 -W ignore -c "$0"', script], workspace,
+                 environment)
+    files = result.stdout.split()
+    assert len(files) == 3 and files[2].endswith(os.path.join('rosidl_cmake', '__init__.py')), files
+    for path in files:
+        assert os.path.realpath(path).startswith(os.path.realpath(HUMBLE)), path
+
+
+def _mros2_headers(workspace):
+    """The installed files holding an mros2 header (the DDS type name)."""
+    return [os.path.join(directory, name)
+            for directory, _, names in os.walk(os.path.join(workspace, 'install'))
+            for name in names
+            if 'dds_::' in open(os.path.join(directory, name), errors='replace').read()]
+
+
+def _assert_found_in_humble(workspace, package, names):
+    with open(os.path.join(workspace, 'build', package, 'CMakeCache.txt')) as stream:
+        cache = stream.read()
+    for name in names:
+        found = re.search(r'^%s_DIR:PATH=(.*)$' % name, cache, re.M).group(1)
+        assert os.path.realpath(found).startswith(os.path.realpath(HUMBLE)), (name, found)
+
+
+humble = pytest.mark.skipif(
+    HUMBLE_SETUP is None,
+    reason='needs ROS 2 Humble\'s rosidl built into a prefix (setup.bash or setup.sh): set '
+           'HUMBLE_ROSIDL_PREFIX (docs/testing.md)')
+
+
 @pytest.mark.slow
-@pytest.mark.skipif(not os.path.isfile(os.path.join(HUMBLE, 'setup.bash')),
-                    reason='needs ROS 2 Humble\'s rosidl built into a prefix: set '
-                           'HUMBLE_ROSIDL_PREFIX (docs/testing.md)')
+@humble
 def test_humble_builds_the_docs_package_with_its_rosidl(tmp_path):
     workspace = str(tmp_path / 'ws')
     shutil.copytree(os.path.join(REPO, 'test_ws_ros2', 'src'), os.path.join(workspace, 'src'))
-    # A Humble user's shell: the distribution sourced (AMENT_PREFIX_PATH holds
-    # only it), genmros installed elsewhere (this checkout's install).
-    environment = user_environment(AMENT_PREFIX_PATH=None)
-    environment['PATH'] = '/usr/bin:' + environment['PATH']
-    command = '. "%s/setup.bash" && exec colcon build --event-handlers console_direct+' % HUMBLE
-    run(['bash', '-c', command], workspace, environment)
-    with open(os.path.join(workspace, 'build', 'mros2_base_msgs', 'CMakeCache.txt')) as stream:
-        cache = stream.read()
-    for package in ('rosidl_cmake', 'rosidl_default_generators'):
-        found = re.search(r'^%s_DIR:PATH=(.*)$' % package, cache, re.M).group(1)
-        assert found.startswith(os.path.realpath(HUMBLE)) or found.startswith(HUMBLE), found
+    environment, source = _humble_shell(tmp_path)
+    _assert_humble_python(workspace, environment, source)
+    run(['bash', '-c', source + 'exec colcon build --event-handlers console_direct+'],
+        workspace, environment)
+    _assert_found_in_humble(workspace, 'mros2_base_msgs',
+                            ('rosidl_cmake', 'rosidl_default_generators', 'rosidl_generator_cpp'))
     expected = tmp_path / 'expected'
     run_genmros('mros2-export', '--workspace', os.path.join(REPO, 'test_ws_ros2'), '-o',
                 str(expected), '--package', 'mros2_base_msgs', '--package', 'mros2_test_msgs')
-    installed = [os.path.join(directory, name)
-                 for directory, _, names in os.walk(os.path.join(workspace, 'install'))
-                 for name in names]
+    installed = _mros2_headers(workspace)
     for header in ('mros2_base_msgs/msg/stamp.hpp', 'mros2_test_msgs/msg/reading.hpp',
                    'mros2_test_msgs/srv/query.hpp'):
         # rosidl_generator_cpp's header has the same name: the mros2 one
         # carries the DDS type name.
-        ours = [path for path in installed if path.endswith(os.sep + header)
-                and 'dds_::' in open(path, errors='replace').read()]
+        ours = [path for path in installed if path.endswith(os.sep + header)]
         assert len(ours) == 1, (header, ours)
         with open(ours[0]) as built, open(str(expected / header)) as exported:
             assert built.read() == exported.read(), header
+
+
+DEFAULTS_ONLY_CMAKELISTS = """cmake_minimum_required(VERSION 3.16)
+project(defaults_only_msgs)
+
+find_package(ament_cmake REQUIRED)
+find_package(rosidl_default_generators REQUIRED)
+
+rosidl_generate_interfaces(${PROJECT_NAME}
+  "msg/Stamp.msg")
+
+ament_package()
+"""
+
+
+@pytest.mark.slow
+@humble
+@pytest.mark.parametrize('on_ament_prefix_path', [False, True], ids=['elsewhere', 'indexed'])
+def test_humble_defaults_find_the_generator_only_through_the_ament_index(
+        tmp_path, on_ament_prefix_path):
+    # A package naming only rosidl_default_generators (no
+    # find_package(rosidl_generator_mros2)): Humble's extras file
+    # find_package()s the rosidl_generator_packages of the ament index under
+    # AMENT_PREFIX_PATH, so the mros2 headers come only with genmros'
+    # prefix there (design.md: the Humble trap, silent without it).
+    package = tmp_path / 'ws' / 'src' / 'defaults_only_msgs'
+    shutil.copytree(os.path.join(INTERFACE_PACKAGE, 'msg'), str(package / 'msg'))
+    (package / 'CMakeLists.txt').write_text(DEFAULTS_ONLY_CMAKELISTS)
+    with open(os.path.join(INTERFACE_PACKAGE, 'package.xml'), encoding='utf-8') as stream:
+        manifest = stream.read().replace('mros2_base_msgs', 'defaults_only_msgs').replace(
+            '  <buildtool_depend>rosidl_generator_mros2</buildtool_depend>\n', '').replace(
+            'rosidl_generator_cpp</buildtool_depend>',
+            'rosidl_default_generators</buildtool_depend>')
+    (package / 'package.xml').write_text(manifest)
+    workspace = str(tmp_path / 'ws')
+    overrides = {'AMENT_PREFIX_PATH': checkout_install().prefix} if on_ament_prefix_path else {}
+    environment, source = _humble_shell(tmp_path, **overrides)
+    run(['bash', '-c', source + 'exec colcon build --event-handlers console_direct+'],
+        workspace, environment)
+    _assert_found_in_humble(workspace, 'defaults_only_msgs',
+                            ('rosidl_default_generators', 'rosidl_generator_cpp'))
+    installed = _mros2_headers(workspace)
+    # Any file or directory the mros2 generator would have made.
+    mros2_paths = [os.path.join(directory, name)
+                   for directory, directories, files in os.walk(workspace)
+                   for name in directories + files if 'mros2' in name]
+    if not on_ament_prefix_path:
+        assert installed == [] and mros2_paths == [], (installed, mros2_paths)
+        return
+    header = os.path.join(workspace, 'install', 'defaults_only_msgs', 'include', 'mros2',
+                          'defaults_only_msgs', 'msg', 'stamp.hpp')
+    assert installed == [header], installed
+    expected = tmp_path / 'expected'
+    run_genmros('mros2-export', '--workspace', workspace, '-o', str(expected),
+                '--package', 'defaults_only_msgs')
+    with open(header) as built, open(str(expected / 'defaults_only_msgs' / 'msg' /
+                                         'stamp.hpp')) as exported:
+        assert built.read() == exported.read()
