@@ -221,8 +221,8 @@ def test_humble_defaults_find_the_generator_only_through_the_ament_index(
     if not on_ament_prefix_path:
         assert installed == [] and mros2_paths == [], (installed, mros2_paths)
         return
-    header = os.path.join(workspace, 'install', 'defaults_only_msgs', 'include', 'mros2',
-                          'defaults_only_msgs', 'msg', 'stamp.hpp')
+    header = os.path.join(workspace, 'install', 'defaults_only_msgs', 'include',
+                          'defaults_only_msgs', 'mros2', 'defaults_only_msgs', 'msg', 'stamp.hpp')
     assert installed == [header], installed
     expected = tmp_path / 'expected'
     run_genmros('mros2-export', '--workspace', workspace, '-o', str(expected),
