@@ -26,7 +26,7 @@ from colcon_core.package_selection import get_packages
 from colcon_mros.errors import GenmrosError
 from colcon_mros.export.export_dir import ExportDir
 from colcon_mros.export.run_record import RunRecord, definition_directories, snapshot
-from colcon_mros.integrations.installed_files import (CMAKE_MODULE, REPOSITORY_ROOT,
+from colcon_mros.integrations.installed_files import (CMAKE_MODULE, install_prefix,
                                                       installed_file)
 from colcon_mros.ros1.environment import require_ros_python
 
@@ -49,8 +49,6 @@ ROSIDL_INTERFACES_RESOURCE = 'rosidl_interfaces'
 # The generator's CMake package below its prefix.
 GENERATOR_CONFIG = ('share', 'rosidl_generator_mros2', 'cmake',
                     'rosidl_generator_mros2Config.cmake')
-# <prefix>/lib/python3/dist-packages, <prefix>/lib/pythonX.Y/site-packages.
-_SITE_DEPTH = 3
 # What _generator_state() finds of a package's last install.
 WITH_GENERATOR, WITHOUT_GENERATOR, OLD_LAYOUT, NO_ROSIDL = (
     'with', 'without', 'old layout', 'no rosidl')
@@ -97,9 +95,7 @@ def _generator_state(package, build_base, prefixes):
 def _generator_prefix():
     """The install prefix of this colcon-mros' rosidl generator, or None
     (a source checkout)."""
-    prefix = REPOSITORY_ROOT
-    for _ in range(_SITE_DEPTH):
-        prefix = os.path.dirname(prefix)
+    prefix = install_prefix()
     return prefix if os.path.isfile(os.path.join(prefix, *GENERATOR_CONFIG)) else None
 
 

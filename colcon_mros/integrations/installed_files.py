@@ -43,11 +43,17 @@ def _checkout_file(name):
     return path if os.path.isfile(path) else None
 
 
-def _installed_file(name):
+def install_prefix():
+    """The prefix this package's install went into (for a source checkout:
+    a directory above it, where nothing of genmros is)."""
     prefix = REPOSITORY_ROOT
     for _ in range(_SITE_DEPTH):
         prefix = os.path.dirname(prefix)
-    path = os.path.join(prefix, *INSTALLED_PATHS[name])
+    return prefix
+
+
+def _installed_file(name):
+    path = os.path.join(install_prefix(), *INSTALLED_PATHS[name])
     return path if os.path.isfile(path) else None
 
 
