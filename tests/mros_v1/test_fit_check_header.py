@@ -15,6 +15,7 @@ from colcon_mros.export.firmware_export import firmware_messages
 from colcon_mros.mros_v1.fit import Fit
 from conftest import TEST_WS, run_genmros
 from settings_headers import header_paths, small_settings
+from testing.ros_paths import prefix_arguments, ros1_prefixes
 
 TYPES = ['std_msgs/String', 'mros_test_base/Vector3i', 'geometry_msgs/Quaternion',
          'mros_test/PersonalData', 'sensor_msgs/JointState']
@@ -29,7 +30,8 @@ def bounded_export(tmp_path_factory):
     options = root / 'bounds.options'
     options.write_text(BOUNDS)
     include = str(root / 'include')
-    arguments = ['export', '-o', include, '--workspace', TEST_WS, '--underlay', '/usr',
+    arguments = ['export', '-o', include, '--workspace', TEST_WS,
+                 *prefix_arguments(ros1_prefixes()),
                  '--storage', 'bounded', '--options', str(options)]
     for type_name in TYPES:
         arguments += ['--type', type_name]

@@ -10,6 +10,7 @@ import pytest
 
 from colcon_mros.mros_v1.cpp import SUPPORT_HEADER, SUPPORT_HEADERS, SUPPORT_VERSION_HEADER
 from conftest import REPO, TEST_WS, run_genmros
+from testing.ros_paths import prefix_arguments, ros1_prefixes
 
 FIXTURES = os.path.join(REPO, 'tests', 'fixtures')
 STRICT = ['g++', '-std=c++11', '-Wall', '-Wextra', '-Werror', '-pedantic']
@@ -34,7 +35,8 @@ AGGREGATES = ['message_class_specialization.h', 'message_headers.h', 'msg_max_si
 
 
 def test_export_of_one_type_brings_its_whole_closure(tmp_path):
-    run_genmros('export', '--type', 'geometry_msgs/PoseStamped', '-o', str(tmp_path), '--underlay', '/usr')
+    run_genmros('export', '--type', 'geometry_msgs/PoseStamped', '-o', str(tmp_path),
+                *prefix_arguments(ros1_prefixes()))
     assert _tree(str(tmp_path)) == sorted(AGGREGATES + [
         'geometry_msgs/Point.h', 'geometry_msgs/Pose.h', 'geometry_msgs/PoseStamped.h',
         'geometry_msgs/Quaternion.h', 'std_msgs/Header.h'] + list(SUPPORT_HEADERS))
@@ -111,7 +113,8 @@ def test_the_msg_comments_become_the_type_and_members_comments(tmp_path):
         '</license></package>\n')
     (package / 'msg' / 'Commented.msg').write_text(COMMENTED_MSG)
     include = str(tmp_path / 'include')
-    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', include, '--underlay', '/usr')
+    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', include,
+                *prefix_arguments(ros1_prefixes()))
     with open(os.path.join(include, 'commented', 'Commented.h')) as stream:
         header = stream.read()
     assert ('  // above a\n  // after a\n  int32_t a;  // int32 a\n'
@@ -132,9 +135,10 @@ def test_the_msg_comments_become_the_type_and_members_comments(tmp_path):
 
 
 def test_type_ids_depend_on_the_type_name_only(tmp_path):
-    run_genmros('export', '--type', 'std_msgs/Header', '-o', str(tmp_path / 'a'), '--underlay', '/usr')
+    run_genmros('export', '--type', 'std_msgs/Header', '-o', str(tmp_path / 'a'),
+                *prefix_arguments(ros1_prefixes()))
     run_genmros('export', '--package', 'sensor_msgs', '--type', 'std_msgs/Header', '-o', str(tmp_path / 'b'),
-                '--underlay', '/usr')
+                *prefix_arguments(ros1_prefixes()))
     assert filecmp.cmp(str(tmp_path / 'a' / 'std_msgs' / 'Header.h'), str(tmp_path / 'b' / 'std_msgs' / 'Header.h'),
                        shallow=False)
 
@@ -143,7 +147,8 @@ def test_fields_named_like_cpp_keywords_compile_and_round_trip(tmp_path):
     workspace = tmp_path / 'ws' / 'src'
     shutil.copytree(os.path.join(FIXTURES, 'keyword_msgs'), str(workspace / 'keyword_msgs'))
     include = str(tmp_path / 'include')
-    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', include, '--underlay', '/usr')
+    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', include,
+                *prefix_arguments(ros1_prefixes()))
     output = _build_and_run(tmp_path, [include], r'''
 #include <cstdio>
 #include <keyword_msgs/Keywords.h>
@@ -201,7 +206,8 @@ int main() {
 
 def test_variable_size_budget_sizes_the_publish_buffer(tmp_path):
     run_genmros('export', '--workspace', TEST_WS, '--type', 'mros_test/PersonalData', '--type',
-                'mros_test_base/Vector3i', '-o', str(tmp_path), '--underlay', '/usr', '--variable-size-budget', '96')
+                'mros_test_base/Vector3i', '-o', str(tmp_path), *prefix_arguments(ros1_prefixes()),
+                '--variable-size-budget', '96')
     with open(str(tmp_path / 'msg_max_size.h')) as stream:
         assert '#define PUB_MSG_MAX_SIZE 96' in stream.read()
 
@@ -261,6 +267,6 @@ def test_catkin_devel_space_underlays_are_found(tmp_path):
         'set(mros_test_base_MSG_INCLUDE_DIRS "%s")\nset(mros_test_base_MSG_DEPENDENCIES std_msgs)\n'
         % os.path.join(TEST_WS, 'src', 'mros_test_base', 'msg'))
     run_genmros('export', '--type', 'mros_test_base/Labeled', '-o', str(tmp_path / 'include'),
-                '--underlay', str(devel), '--underlay', '/usr')
+                '--prefix', str(devel), *prefix_arguments(ros1_prefixes()))
     assert _tree(str(tmp_path / 'include')) == sorted(AGGREGATES + [
         'mros_test_base/Labeled.h', 'std_msgs/ColorRGBA.h'] + list(SUPPORT_HEADERS))

@@ -17,6 +17,7 @@ from testing.ros_graph import PYTHON
 from conftest import run_genmros
 from user_checkouts import MROS_V1_ROOT
 from settings_headers import define
+from testing.ros_paths import prefix_arguments, ros1_prefixes
 
 pytestmark = pytest.mark.needs_mros_v1
 
@@ -140,7 +141,8 @@ def test_ros_cpp_refuses_to_compile_where_no_genmros_check_ran(tmp_path, compile
     # aggregate it includes stops the compile, also with a compiler that has
     # no __has_include (gcc-arm-none-eabi 4.9, which mROS v1's README lists).
     include = str(tmp_path / 'include')
-    run_genmros('export', '--type', 'sensor_msgs/JointState', '-o', include, '--underlay', '/usr')
+    run_genmros('export', '--type', 'sensor_msgs/JointState', '-o', include,
+                *prefix_arguments(ros1_prefixes()))
     source = tmp_path / 'ros_like.cpp'
     # ros.cpp's first two lines.
     source.write_text('#include "ros.h"\n#include "message_headers.h"\nint main() { return 0; }\n')
