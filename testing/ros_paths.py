@@ -65,6 +65,14 @@ def ros2_package_dir(package, kind='msg'):
     return _first(ros2_prefixes(), 'share', package, kind)
 
 
+def ros2_include_prefix(directory):
+    """The first ROS 2 prefix whose include/ holds directory (Fast DDS'
+    fastdds: Debian's libfastrtps-dev in /usr, a distribution's in its
+    prefix), else None."""
+    return next((prefix for prefix in ros2_prefixes() + [DEBIAN_PREFIX]
+                 if os.path.isdir(os.path.join(prefix, 'include', directory))), None)
+
+
 def ros1_definitions(package, kind='msg'):
     """The sorted paths of an installed ROS 1 package's .msg (kind msg) or
     .srv (kind srv) files."""

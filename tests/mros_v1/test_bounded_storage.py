@@ -223,8 +223,8 @@ def test_package_options_apply_to_bounded_exports_only(tmp_path):
     firmware = _options(tmp_path / 'firmware.options', '* max_size:40 max_count:9\n')
     run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', str(tmp_path / 'heap'),
                 *prefix_arguments(ros1_prefixes()))
-    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', str(tmp_path / 'bounded'), '--underlay',
-                '/usr', '--storage', 'bounded', '--options', firmware)
+    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', str(tmp_path / 'bounded'),
+                *prefix_arguments(ros1_prefixes()), '--storage', 'bounded', '--options', firmware)
     heap = (tmp_path / 'heap' / 'mros_test_base' / 'Labeled.h').read_text()
     bounded = (tmp_path / 'bounded' / 'mros_test_base' / 'Labeled.h').read_text()
     assert 'std::string label;' in heap and 'std::vector<double> weights;' in heap

@@ -42,7 +42,7 @@ def bounded_export(tmp_path_factory):
 def _python_refusals(options, settings_dir):
     """(type, setting) of each misfit of the Python check; a memory pool as
     'publishing' or 'receiving'."""
-    messages = firmware_messages(TYPES, [TEST_WS, '/usr'], 'bounded', [options])
+    messages = firmware_messages(TYPES, [TEST_WS] + ros1_prefixes(), 'bounded', [options])
     fit = Fit(messages, read_settings(header_paths(settings_dir)))
     return sorted((misfit.type_name, misfit.what.split(', ')[1].rstrip(',') if 'frame' in misfit.what
                    else misfit.setting.name) for misfit in fit.misfits)

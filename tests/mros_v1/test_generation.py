@@ -10,7 +10,7 @@ import pytest
 
 from colcon_mros.mros_v1.cpp import SUPPORT_HEADER, SUPPORT_HEADERS, SUPPORT_VERSION_HEADER
 from conftest import REPO, TEST_WS, run_genmros
-from testing.ros_paths import prefix_arguments, ros1_prefixes
+from testing.ros_paths import prefix_arguments, ros1_package_dir, ros1_prefixes
 
 FIXTURES = os.path.join(REPO, 'tests', 'fixtures')
 STRICT = ['g++', '-std=c++11', '-Wall', '-Wextra', '-Werror', '-pedantic']
@@ -53,7 +53,8 @@ def test_export_of_a_workspace_covers_every_type_and_dependency(test_ws_export):
 
 
 def test_generator_mode_writes_what_export_writes(test_ws_export, tmp_path):
-    flags = ['-I', 'std_msgs:/usr/share/std_msgs/msg', '-I', 'geometry_msgs:/usr/share/geometry_msgs/msg']
+    flags = ['-I', 'std_msgs:' + ros1_package_dir('std_msgs'),
+             '-I', 'geometry_msgs:' + ros1_package_dir('geometry_msgs')]
     for package in ('mros_test_base', 'mros_test'):
         flags += ['-I', '%s:%s' % (package, os.path.join(TEST_WS, 'src', package, 'msg'))]
     definitions = sorted(glob.glob(os.path.join(TEST_WS, 'src', '*', 'msg', '*.msg')) +
@@ -236,7 +237,8 @@ def test_help_describes_both_modes(arguments, expected):
 
 
 def test_generator_mode_fills_an_export_dir_with_the_whole_closure(test_ws_export, tmp_path):
-    flags = ['-I', 'std_msgs:/usr/share/std_msgs/msg', '-I', 'geometry_msgs:/usr/share/geometry_msgs/msg']
+    flags = ['-I', 'std_msgs:' + ros1_package_dir('std_msgs'),
+             '-I', 'geometry_msgs:' + ros1_package_dir('geometry_msgs')]
     for package in ('mros_test_base', 'mros_test'):
         flags += ['-I', '%s:%s' % (package, os.path.join(TEST_WS, 'src', package, 'msg'))]
     export_dir = tmp_path / 'export'
@@ -253,7 +255,7 @@ def test_generator_mode_fills_an_export_dir_with_the_whole_closure(test_ws_expor
     assert definitions == ['geometry_msgs/msg/Point.msg', 'geometry_msgs/package.xml',
                            'mros_test/msg/PersonalData.msg', 'mros_test/package.xml', 'mros_test/srv/LookupPerson.srv']
     assert filecmp.cmp(str(export_dir / 'share' / 'geometry_msgs' / 'msg' / 'Point.msg'),
-                       '/usr/share/geometry_msgs/msg/Point.msg', shallow=False)
+                       os.path.join(ros1_package_dir('geometry_msgs'), 'Point.msg'), shallow=False)
 
 
 def test_catkin_devel_space_underlays_are_found(tmp_path):

@@ -22,7 +22,7 @@ from genmsg.msgs import bare_msg_type, is_builtin, parse_type
 
 from conftest import run_genmros
 from file_trees import assert_one_line_error, package_xml, snapshot, write_tree
-from testing.ros_paths import prefix_arguments, ros1_prefixes
+from testing.ros_paths import prefix_arguments, ros1_package_dir, ros1_prefixes
 
 pytestmark = pytest.mark.slow
 
@@ -394,8 +394,9 @@ def test_header_guards_are_unique(accepted_export, tmp_path):
 def test_accepted_messages_round_trip_under_asan(accepted_export, tmp_path):
     _, package, output = accepted_export
     full_names = _accepted_types(package)
-    search_path = {'hostile_ok': [os.path.join(package, 'msg')], 'std_msgs': ['/usr/share/std_msgs/msg'],
-                   'geometry_msgs': ['/usr/share/geometry_msgs/msg']}
+    search_path = {'hostile_ok': [os.path.join(package, 'msg')],
+                   'std_msgs': [ros1_package_dir('std_msgs')],
+                   'geometry_msgs': [ros1_package_dir('geometry_msgs')]}
     context = _load_specs(search_path, [n for n in full_names if not n.endswith(('Request', 'Response'))])
     service = msg_loader.load_srv_from_file(context, os.path.join(package, 'srv', 'Ask.srv'), 'hostile_ok/Ask')
     msg_loader.load_depends(context, service, search_path)
@@ -514,7 +515,7 @@ def test_refused_definition(good_export, tmp_path, package_name, files, target, 
     assert_one_line_error(result, location, problem)
     assert snapshot(output) == before
     includes = ['-I', '%s:%s' % (package_name, os.path.join(package, 'msg')),
-                '-I', 'std_msgs:/usr/share/std_msgs/msg']
+                '-I', 'std_msgs:' + ros1_package_dir('std_msgs')]
     if not os.path.isdir(os.path.join(package, 'msg')):
         includes = includes[2:]
     result = run_genmros('generate', os.path.join(package, target), '-p', package_name,

@@ -9,7 +9,7 @@ import pytest
 
 from conftest import REPO, TEST_WS, run_genmros
 from file_trees import assert_one_line_error, snapshot, write_tree
-from testing.ros_paths import prefix_arguments, ros1_prefixes
+from testing.ros_paths import prefix_arguments, ros1_package_dir, ros1_prefixes
 
 PACKAGE_XML = '''<?xml version="1.0"?>
 <package format="2">
@@ -106,7 +106,7 @@ def test_bad_definition_in_generator_mode(workspace, files, location, problem):
     before = snapshot(output)
     result = run_genmros('generate', os.path.join(package, target), '-p', 'mros_bad', '-o', os.path.join(output, 'mros_bad'),
                          '-I', 'mros_bad:' + os.path.join(package, 'msg'),
-                         '-I', 'std_msgs:/usr/share/std_msgs/msg', check=False)
+                         '-I', 'std_msgs:' + ros1_package_dir('std_msgs'), check=False)
     assert_one_line_error(result, os.path.join(package, location), problem)
     assert snapshot(output) == before
 

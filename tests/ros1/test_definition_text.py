@@ -205,8 +205,9 @@ def test_cmake_module_and_make_fragment_take_the_choice(tmp_path):
     app = tmp_path / 'app'
     app.mkdir()
     (app / 'Makefile').write_text(
-        'MROS_MSG_TYPES := std_msgs/Header\nMROS_MSG_PATHS := /usr\nMROS_MSG_DEFINITION_TEXT := compact\n'
-        'include %s/cmake/genmros.mk\nall:\n\t@true\n' % REPO)
+        'MROS_MSG_TYPES := std_msgs/Header\nMROS_MSG_PATHS := %s\n'
+        'MROS_MSG_DEFINITION_TEXT := compact\ninclude %s/cmake/genmros.mk\nall:\n\t@true\n'
+        % (' '.join(ros1_prefixes()), REPO))
     subprocess.run(['make', '-C', str(app)], check=True, capture_output=True)
     assert _definition_in_header(str(app / 'include' / 'std_msgs' / 'Header.h')) == \
         'uint32 seq\ntime stamp\nstring frame_id\n'

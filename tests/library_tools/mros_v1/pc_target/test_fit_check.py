@@ -17,7 +17,7 @@ from testing.ros_graph import PYTHON
 from conftest import run_genmros
 from user_checkouts import MROS_V1_ROOT
 from settings_headers import define
-from testing.ros_paths import prefix_arguments, ros1_prefixes
+from testing.ros_paths import prefix_arguments, ros1_package_dir, ros1_prefixes
 
 pytestmark = pytest.mark.needs_mros_v1
 
@@ -124,10 +124,11 @@ def _full_text_size_of_user_type():
     msg_dir = os.path.join(MROS_V1_ROOT, 'ros_catkin_ws', 'src', 'custom_pubsub', 'msg')
     code = ('from genmsg import msg_loader, gentools\n'
             'context = msg_loader.MsgContext.create_default()\n'
-            'search = {"custom_pubsub": [%r], "std_msgs": ["/usr/share/std_msgs/msg"]}\n'
+            'search = {"custom_pubsub": [%r], "std_msgs": [%r]}\n'
             'spec = msg_loader.load_msg_by_type(context, "custom_pubsub/UserTypeTest", search)\n'
             'msg_loader.load_depends(context, spec, search)\n'
-            'print(len(gentools.compute_full_text(context, spec).encode()))\n' % msg_dir)
+            'print(len(gentools.compute_full_text(context, spec).encode()))\n'
+            % (msg_dir, ros1_package_dir('std_msgs')))
     return int(subprocess.run([PYTHON, '-c', code], capture_output=True, text=True,
                               check=True).stdout)
 
