@@ -38,6 +38,10 @@ import tempfile
 import time
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, REPO)  # the shared testing package
+
+from testing.ros_paths import ros1_package_dir  # noqa: E402
+
 TOOLS = ('catkin_make', 'catkin_make_ninja', 'catkin_build', 'colcon')
 # Wraps genmros to count its processes and their CPU time (bash's times).
 WRAPPER = '''#!/bin/bash
@@ -240,7 +244,8 @@ def print_start_up(workspace, genmros):
     scratch = os.path.join(workspace, 'start_up')
     include_flags = ['-I', 'bench_msgs_01:%s' % os.path.join(package, 'msg'),
                      '-I', 'bench_msgs_00:%s' % os.path.join(workspace, 'src', 'bench_msgs_00', 'msg'),
-                     '-I', 'std_msgs:/usr/share/std_msgs/msg', '-I', 'geometry_msgs:/usr/share/geometry_msgs/msg']
+                     '-I', 'std_msgs:' + ros1_package_dir('std_msgs'),
+                     '-I', 'geometry_msgs:' + ros1_package_dir('geometry_msgs')]
     commands = {
         'generator run (build, once per package; none at configure)': ['generate'] + files + [
             '-p', 'bench_msgs_01', '-o', os.path.join(scratch, 'bench_msgs_01'),

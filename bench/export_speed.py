@@ -13,7 +13,6 @@ sides taking turns, and their ratio.
 """
 
 import argparse
-import glob
 import os
 import statistics
 import subprocess
@@ -22,10 +21,13 @@ import tempfile
 import time
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, REPO)  # the shared testing package
+
+from testing import ros_paths  # noqa: E402
+
 PACKAGES = ['std_msgs', 'geometry_msgs', 'sensor_msgs', 'nav_msgs', 'trajectory_msgs',
             'visualization_msgs', 'diagnostic_msgs', 'actionlib_msgs', 'shape_msgs',
             'stereo_msgs', 'tf2_msgs', 'map_msgs', 'pcl_msgs', 'std_srvs', 'rosgraph_msgs']
-GENCPP = ['/usr/bin/python3', '/usr/lib/gencpp/gen_cpp.py']
 GENMROS = ['/usr/bin/python3', '-m', 'colcon_mros']
 ENVIRONMENT = dict(os.environ, PYTHONPATH=REPO)
 
@@ -34,8 +36,7 @@ def _definitions():
     found = []
     for package in PACKAGES:
         for kind in ('msg', 'srv'):
-            found += [(package, path) for path in
-                      sorted(glob.glob('/usr/share/%s/%s/*.%s' % (package, kind, kind)))]
+            found += [(package, path) for path in ros_paths.ros1_definitions(package, kind)]
     return found
 
 
@@ -53,14 +54,16 @@ def main():
     definitions = _definitions()
     includes = []
     for package in sorted({package for package, _ in definitions} | {'std_msgs', 'geometry_msgs'}):
-        includes += ['-I', '%s:/usr/share/%s/msg' % (package, package)]
+        includes += ['-I', '%s:%s' % (package, ros_paths.ros1_package_dir(package))]
+    gen_cpp, templates = ros_paths.gencpp()
     samples = {'genmros': [], 'gencpp': [], 'version': []}
     with tempfile.TemporaryDirectory(prefix='export_speed_') as scratch:
-        export = GENMROS + ['export', '--underlay', '/usr', '-o', os.path.join(scratch, 'mros')]
+        export = GENMROS + ['export', *ros_paths.prefix_arguments(ros_paths.ros1_prefixes()),
+                            '-o', os.path.join(scratch, 'mros')]
         for package in PACKAGES:
             export += ['--package', package]
-        gencpp = [GENCPP + [path, '-p', package, '-o', os.path.join(scratch, 'gencpp', package),
-                            '-e', '/usr/share/gencpp'] + includes
+        gencpp = [['/usr/bin/python3', gen_cpp, path, '-p', package,
+                   '-o', os.path.join(scratch, 'gencpp', package), '-e', templates] + includes
                   for package, path in definitions]
         for _ in range(args.rounds):
             samples['genmros'].append(_timed([export]))

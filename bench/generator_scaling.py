@@ -20,6 +20,9 @@ import tempfile
 import time
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, REPO)  # the shared testing package
+
+from testing.ros_paths import prefix_arguments, ros1_prefixes  # noqa: E402
 
 PACKAGE_XML = '''<?xml version="1.0"?>
 <package format="2"><name>%s</name><version>0.0.1</version><description>bench</description>
@@ -103,13 +106,14 @@ def main(argv=None):
             for name, text in files().items():
                 with open(os.path.join(package, 'msg', name), 'w') as stream:
                     stream.write(text)
-            export = ['export', '--workspace', os.path.join(root, 'ws'), '-o', os.path.join(root, 'out'),
-                      '--underlay', '/usr']
-            ours = _timed([sys.executable, '-m', 'colcon_mros'] + export, options.limit, cwd=REPO)
+            export = ['export', '--workspace', os.path.join(root, 'ws'),
+                      *prefix_arguments(ros1_prefixes())]
+            ours = _timed([sys.executable, '-m', 'colcon_mros'] + export
+                          + ['-o', os.path.join(root, 'out')], options.limit, cwd=REPO)
             if options.baseline:
-                theirs = _timed([sys.executable, '-m', 'colcon_mros'] + export[:-4] + [
-                    '-o', os.path.join(root, 'baseline'), '--underlay', '/usr'], options.limit,
-                    cwd=options.baseline)
+                theirs = _timed([sys.executable, '-m', 'colcon_mros'] + export
+                                + ['-o', os.path.join(root, 'baseline')], options.limit,
+                                cwd=options.baseline)
             elif identity:
                 theirs = _timed([sys.executable, '-c', GENMSG_IDENTITY, os.path.join(package, 'msg')],
                                 options.limit)

@@ -45,6 +45,8 @@ import subprocess
 import threading
 import time
 
+from testing.ros_paths import DEBIAN_PREFIX, ros2_include_prefix
+
 SOURCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'dds_raw_peer.cpp')
 # How long discovery and delivery may take on a loaded machine.
 DELIVERY_TIMEOUT = 30
@@ -70,8 +72,13 @@ def build(out_dir):
     if os.path.exists(program) and os.path.getmtime(program) >= os.path.getmtime(SOURCE):
         return program
     partial = '%s.%d' % (program, os.getpid())
-    argv = ['g++', '-std=c++14', '-O1', '-Wall', '-Wextra', '-o', partial, SOURCE,
-            '-lfastrtps', '-lfastcdr']
+    # Fast DDS where the ROS 2 prefixes have it; Debian's is the compiler's default.
+    prefix = ros2_include_prefix('fastdds')
+    paths = ([] if prefix in (None, DEBIAN_PREFIX)
+             else ['-I' + os.path.join(prefix, 'include'), '-L' + os.path.join(prefix, 'lib'),
+                   '-Wl,-rpath,' + os.path.join(prefix, 'lib')])
+    argv = ['g++', '-std=c++14', '-O1', '-Wall', '-Wextra', '-o', partial, SOURCE] + paths + [
+        '-lfastrtps', '-lfastcdr']
     result = subprocess.run(argv, capture_output=True, text=True)
     if result.returncode != 0:
         raise RuntimeError('%s failed:\n%s' % (' '.join(argv), result.stderr[-6000:]))

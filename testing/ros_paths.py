@@ -15,6 +15,7 @@ and ROS 2's build side are installed under /usr and need no sourcing.
 """
 
 import functools
+import glob
 import os
 
 # Where Debian 12 installs ROS, with nothing sourced.
@@ -63,6 +64,20 @@ def ros1_package_dir(package, kind='msg'):
 def ros2_package_dir(package, kind='msg'):
     """The kind (msg or srv) directory of an installed ROS 2 package."""
     return _first(ros2_prefixes(), 'share', package, kind)
+
+
+def ros2_include_prefix(directory):
+    """The first ROS 2 prefix whose include/ holds directory (Fast DDS'
+    fastdds: Debian's libfastrtps-dev in /usr, a distribution's in its
+    prefix), else None."""
+    return next((prefix for prefix in ros2_prefixes() + [DEBIAN_PREFIX]
+                 if os.path.isdir(os.path.join(prefix, 'include', directory))), None)
+
+
+def ros1_definitions(package, kind='msg'):
+    """The sorted paths of an installed ROS 1 package's .msg (kind msg) or
+    .srv (kind srv) files."""
+    return sorted(glob.glob(os.path.join(ros1_package_dir(package, kind), '*.' + kind)))
 
 
 @functools.lru_cache(maxsize=None)

@@ -72,7 +72,7 @@ def run_genmros(*arguments, check=True):
 def debian_export(tmp_path_factory):
     """genmros export of every Debian message package: the include root."""
     root = str(tmp_path_factory.mktemp('debian_export'))
-    arguments = ['export', '-o', root, '--underlay', '/usr']
+    arguments = ['export', '-o', root, *ros_paths.prefix_arguments(ros_paths.ros1_prefixes())]
     for package in DEBIAN_MESSAGE_PACKAGES:
         arguments += ['--package', package]
     run_genmros(*arguments)
@@ -83,7 +83,8 @@ def debian_export(tmp_path_factory):
 def test_ws_export(tmp_path_factory):
     """genmros export of test_ws: the include root."""
     root = str(tmp_path_factory.mktemp('test_ws_export'))
-    run_genmros('export', '--workspace', TEST_WS, '-o', root, '--underlay', '/usr')
+    run_genmros('export', '--workspace', TEST_WS, '-o', root,
+                *ros_paths.prefix_arguments(ros_paths.ros1_prefixes()))
     return root
 
 

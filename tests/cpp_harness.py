@@ -16,6 +16,8 @@ import sys
 from genmsg import msg_loader
 from genmsg.msgs import bare_msg_type, is_builtin
 
+from testing import ros_paths
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 RANDOM_HEADER_DIR = os.path.join(HERE, 'cpp')
 
@@ -263,16 +265,14 @@ def write_sources(directory, type_set, with_roscpp=True, for_targets=False):
 TARGETS_DIR = os.path.join(HERE, 'cpp', 'targets')
 TEST_WS = os.path.join(os.path.dirname(HERE), 'test_ws')
 TEST_WS_PACKAGES = ['mros_test', 'mros_test_base']
-GENCPP = '/usr/lib/gencpp/gen_cpp.py'
-GENCPP_TEMPLATES = '/usr/share/gencpp'
 BINARY, TEXT, COMPACT = 0, 1, 2  # harness::Mode
 
 
-def search_path():
-    """genmsg's search path: Debian's message packages and test_ws's."""
-    search_path = {p: ['/usr/share/%s/msg' % p] for p in os.listdir('/usr/share')
-                   if os.path.isdir('/usr/share/%s/msg' % p)}
-    for package in TEST_WS_PACKAGES:
+def search_path(with_test_ws=True):
+    """genmsg's search path: the installed ROS message packages
+    (testing.ros_paths) and, with_test_ws, test_ws's."""
+    search_path = ros_paths.ros1_search_path()
+    for package in TEST_WS_PACKAGES if with_test_ws else ():
         search_path[package] = [os.path.join(TEST_WS, 'src', package, 'msg')]
     return search_path
 
@@ -285,14 +285,16 @@ def test_ws_definitions(kind):
 
 
 def gencpp_headers(search_path, output_root):
-    """roscpp's headers of the test_ws types, from Debian's real gencpp."""
+    """roscpp's headers of the test_ws types, from the installed real gencpp."""
+    gencpp, templates = ros_paths.gencpp()
     includes = []
     for package, directories in sorted(search_path.items()):
         includes += ['-I', '%s:%s' % (package, directories[0])]
     for kind in ('msg', 'srv'):
         for package, path in test_ws_definitions(kind):
-            subprocess.run([sys.executable, GENCPP, path, '-p', package, '-o', os.path.join(output_root, package),
-                            '-e', GENCPP_TEMPLATES] + includes, check=True, capture_output=True)
+            subprocess.run([sys.executable, gencpp, path, '-p', package,
+                            '-o', os.path.join(output_root, package), '-e', templates] + includes,
+                           check=True, capture_output=True)
     return output_root
 
 

@@ -16,6 +16,7 @@ from testing import fastcdr, mros2_harness, ros2_messages
 from colcon_mros.core.storage import HeapStorage
 from colcon_mros.ros2.interfaces import all_packages
 from colcon_mros.ros2.model import ModelBuilder
+from testing.ros_paths import prefix_arguments, ros2_prefixes
 
 TEST_INTERFACE_PACKAGE = 'test_interface_files'
 ROSBAGS_PACKAGES = ('std_msgs', 'geometry_msgs', 'sensor_msgs')
@@ -66,10 +67,10 @@ def typestore():
 @pytest.fixture(scope='module')
 def test_interface_corpus(tmp_path_factory):
     include_dir = str(tmp_path_factory.mktemp('tif_export'))
-    run_genmros('mros2-export', '--prefix', '/usr', '--package', TEST_INTERFACE_PACKAGE,
-                '-o', include_dir)
-    builder = ModelBuilder(all_packages((), ['/usr']), HeapStorage())
-    names = sorted(n for k, n in all_packages((), ['/usr'])[TEST_INTERFACE_PACKAGE].interfaces
+    run_genmros('mros2-export', *prefix_arguments(ros2_prefixes()),
+                '--package', TEST_INTERFACE_PACKAGE, '-o', include_dir)
+    builder = ModelBuilder(all_packages((), ros2_prefixes()), HeapStorage())
+    names = sorted(n for k, n in builder.packages[TEST_INTERFACE_PACKAGE].interfaces
                    if k == 'msg')
     messages = [builder.message('%s/msg/%s' % (TEST_INTERFACE_PACKAGE, n)) for n in names]
     services = [builder.service('%s/srv/%s' % (TEST_INTERFACE_PACKAGE, n)) for n in

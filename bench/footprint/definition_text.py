@@ -12,6 +12,7 @@ from colcon_mros.mros_v1.names import RESERVED_NAMES
 from colcon_mros.ros1.model import gencpp_definition_text
 from colcon_mros.ros1.parse import SpecLoader
 from colcon_mros.ros1.workspace import installed_packages, msg_search_path
+from testing.ros_paths import ros1_prefixes
 
 DEBIAN_MESSAGE_PACKAGES = [
     'std_msgs', 'geometry_msgs', 'sensor_msgs', 'nav_msgs', 'trajectory_msgs',
@@ -35,7 +36,7 @@ def _type_names(loader, packages):
 
 
 def main():
-    packages = installed_packages(['/usr'])
+    packages = installed_packages(ros1_prefixes())
     loader = SpecLoader(msg_search_path(packages), RESERVED_NAMES)
     names = _type_names(loader, packages)
 

@@ -37,11 +37,13 @@ link=(--specs=nosys.specs -Wl,--gc-sections)
 
 genmros() { PYTHONPATH="$repo" /usr/bin/python3 -m colcon_mros "$@" >/dev/null; }
 # include dir of genmros' export of one type: heap or bounded storage, full or
-# compact definition text
+# compact definition text; the installed message packages from the ROS
+# environment (ROS_PACKAGE_PATH, CMAKE_PREFIX_PATH; with nothing sourced,
+# Debian's /usr), as testing/ros_paths.py reads it
 export_type() {  # name type storage definition_text
   local flags=(--definition-text "$4")
   [ "$3" = bounded ] && flags+=(--storage bounded --options "$here/bounds.options")
-  genmros export --workspace "$repo/test_ws" --workspace "$here/msgs" --underlay /usr --type "$2" \
+  genmros export --workspace "$repo/test_ws" --workspace "$here/msgs" --type "$2" \
     -o "$work/$1" "${flags[@]}"
   echo "$work/$1"
 }

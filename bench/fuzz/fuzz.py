@@ -26,9 +26,11 @@ import libfuzzer  # beside this script
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, REPO)  # the shared testing package
+
+from testing import ros_paths  # noqa: E402
+
 TEST_WS = os.path.join(REPO, 'test_ws')
-GENPY_MSG = '/usr/lib/genpy/genmsg_py.py'
-GENPY_SRV = '/usr/lib/genpy/gensrv_py.py'
 # The largest input libFuzzer makes: a frame of any test type fits.
 MAX_INPUT_BYTES = 65536
 
@@ -64,7 +66,7 @@ def _run(command, **keywords):
 
 def export_headers(include_dir):
     arguments = [sys.executable, '-m', 'colcon_mros', 'export', '--workspace', TEST_WS, '-o', include_dir,
-                 '--underlay', '/usr']
+                 *ros_paths.prefix_arguments(ros_paths.ros1_prefixes())]
     for package_dir in sorted(glob.glob(os.path.join(TEST_WS, 'src', '*'))):
         if _definitions(package_dir, 'msg') or _definitions(package_dir, 'srv'):
             arguments += ['--package', os.path.basename(package_dir)]
@@ -99,7 +101,7 @@ def build(build_dir, std, portable):
 
 def _genpy_classes(root):
     """Generate genpy classes for test_ws and GENERATED_TYPES under root."""
-    search = {os.path.basename(os.path.dirname(d)): d for d in glob.glob('/usr/share/*/msg')}
+    search = {package: dirs[0] for package, dirs in ros_paths.ros1_search_path().items()}
     search.update({os.path.basename(os.path.dirname(d)): d
                    for d in glob.glob(os.path.join(TEST_WS, 'src', '*', 'msg'))})
     flags = []
@@ -110,7 +112,7 @@ def _genpy_classes(root):
     packages += [(os.path.basename(d), {kind: _definitions(d, kind) for kind in ('msg', 'srv')})
                  for d in sorted(glob.glob(os.path.join(TEST_WS, 'src', '*')))]
     for package, files in packages:
-        for kind, generator in (('msg', GENPY_MSG), ('srv', GENPY_SRV)):
+        for kind, generator in zip(('msg', 'srv'), ros_paths.genpy()):
             paths = files.get(kind)
             if not paths:
                 continue

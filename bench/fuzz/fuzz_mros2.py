@@ -33,14 +33,15 @@ from colcon_mros.mros2.cpp import CppMessageName  # noqa: E402
 from colcon_mros.ros2.interfaces import all_packages  # noqa: E402
 from colcon_mros.ros2.model import ModelBuilder  # noqa: E402
 from testing import fastcdr, ros2_messages  # noqa: E402
+from testing.ros_paths import prefix_arguments, ros2_prefixes  # noqa: E402
 
 import libfuzzer  # noqa: E402  (beside this script)
 
 TEST_WS_ROS2 = os.path.join(REPO, 'test_ws_ros2')
 WORKSPACE_PACKAGES = ('mros2_base_msgs', 'mros2_test_msgs')
-# Debian's ros2-test-interface-files: /usr/share/test_interface_files/{msg,srv}.
+# ROS 2's test interface files (Debian's ros2-test-interface-files), in the
+# ROS 2 prefixes (testing.ros_paths).
 TEST_INTERFACE_PACKAGE = 'test_interface_files'
-PREFIX = '/usr'
 SEEDS_PER_TYPE = 6
 MAX_INPUT_BYTES = 4096
 COMPILE_FLAGS = ['-std=c++11', '-O1', '-g', '-fsanitize=fuzzer,address,undefined',
@@ -58,7 +59,7 @@ def _run(command, **keywords):
 def fuzz_messages():
     """The models of every message and service half of the fuzzed packages,
     in selector order: each package's messages, then its services' halves."""
-    packages = all_packages([TEST_WS_ROS2], [PREFIX])
+    packages = all_packages([TEST_WS_ROS2], ros2_prefixes())
     builder = ModelBuilder(packages, HeapStorage())
     messages = []
     for package in WORKSPACE_PACKAGES + (TEST_INTERFACE_PACKAGE,):
@@ -74,8 +75,8 @@ def fuzz_messages():
 def export_headers(include_dir):
     packages = WORKSPACE_PACKAGES + (TEST_INTERFACE_PACKAGE,)
     _run([sys.executable, '-m', 'colcon_mros', 'mros2-export', '--workspace', TEST_WS_ROS2,
-          '--prefix', PREFIX, '-o', include_dir] + ['--package=%s' % p for p in packages],
-         cwd=REPO)
+          *prefix_arguments(ros2_prefixes()), '-o', include_dir]
+         + ['--package=%s' % p for p in packages], cwd=REPO)
 
 
 def write_type_list(build_dir, messages):

@@ -8,7 +8,7 @@ For std_msgs/String, geometry_msgs/Twist, sensor_msgs/JointState (6 joints),
 sensor_msgs/Imu, sensor_msgs/Image (640x480 rgb8) and
 test_interface_files/msg/MultiNested: the headers of `genmros mros2-export`
 (the ROS 2 packages written from rosbags' type store, as the tests do, and
-ROS 2's test interface files from /usr), and one C++ program (-O2, host)
+ROS 2's test interface files from the ROS 2 prefixes), and one C++ program (-O2, host)
 that fills an instance of each type with fixed data and times, on that same
 C++ object:
 
@@ -70,7 +70,8 @@ def _models(workspace):
     from colcon_mros.ros2.interfaces import all_packages
     from colcon_mros.ros2.model import ModelBuilder
     ours = ModelBuilder(all_packages([workspace], []), HeapStorage())
-    installed = ModelBuilder(all_packages((), ['/usr']), HeapStorage())
+    from testing.ros_paths import ros2_prefixes
+    installed = ModelBuilder(all_packages((), ros2_prefixes()), HeapStorage())
     return ([ours.message(name) for name in ROSBAGS_TYPES]
             + [installed.message(name) for name in PREFIX_TYPES])
 
@@ -351,6 +352,7 @@ def main():
     sys.path.insert(0, REPO)
     from rosbags.typesys import Stores, get_typestore
     from testing import ros2_messages
+    from testing.ros_paths import prefix_arguments, ros2_prefixes
 
     with tempfile.TemporaryDirectory(prefix='codec_speed_') as scratch:
         work = args.keep or scratch
@@ -361,7 +363,8 @@ def main():
         subprocess.run(GENMROS + ['mros2-export', '--workspace', workspace, '-o', include_ws]
                        + ['--type=%s' % name for name in ROSBAGS_TYPES],
                        check=True, stdout=subprocess.DEVNULL, env=ENVIRONMENT)
-        subprocess.run(GENMROS + ['mros2-export', '--prefix', '/usr', '-o', include_usr]
+        subprocess.run(GENMROS + ['mros2-export', *prefix_arguments(ros2_prefixes()),
+                                  '-o', include_usr]
                        + ['--type=%s' % name for name in PREFIX_TYPES],
                        check=True, stdout=subprocess.DEVNULL, env=ENVIRONMENT)
         messages = _models(workspace)

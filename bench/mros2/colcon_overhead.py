@@ -42,9 +42,10 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.dirname(HERE))
 from build_overhead import WRAPPER, measure, timed_build  # noqa: E402
+from testing.ros_paths import ros2_package_dir  # noqa: E402
 
 TEST_WS_ROS2 = os.path.join(REPO, 'test_ws_ros2', 'src')
-TEST_INTERFACE_FILES = '/usr/share/test_interface_files'
+TEST_INTERFACE_FILES = os.path.dirname(ros2_package_dir('test_interface_files'))
 MROS2_GENERATOR_LINE = re.compile(r'^\s*find_package\(rosidl_generator_mros2 REQUIRED\)\s*$',
                                   re.M)
 INTERFACES_CMAKE = '''cmake_minimum_required(VERSION 3.16)

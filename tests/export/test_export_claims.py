@@ -8,8 +8,9 @@ import os
 
 from colcon_mros.mros_v1.cpp import SUPPORT_HEADERS
 from conftest import run_genmros
+from testing.ros_paths import ros1_package_dir
 
-STD_MSGS = '/usr/share/std_msgs/msg'
+STD_MSGS = ros1_package_dir('std_msgs')
 
 
 def _generate(tmp_path, name, text):

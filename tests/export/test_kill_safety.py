@@ -21,6 +21,7 @@ import pytest
 
 from conftest import REPO, run_genmros
 from file_trees import package_xml, snapshot, write_tree
+from testing.ros_paths import prefix_arguments, ros1_prefixes
 
 TYPES = 40
 KILLS = 30
@@ -96,13 +97,14 @@ def exports(tmp_path_factory):
         workspace = root / version / 'ws'
         write_tree(str(workspace / 'src' / 'kill_ws'), _sources(version))
         output = str(root / version / 'out')
-        run_genmros('export', '--workspace', str(workspace), '-o', output, '--underlay', '/usr')
+        run_genmros('export', '--workspace', str(workspace), '-o', output,
+                    *prefix_arguments(ros1_prefixes()))
         states[version] = output
     return str(root / 'new' / 'ws'), states['old'], states['new']
 
 
 def _export_arguments(workspace, output):
-    return ['export', '--workspace', workspace, '-o', output, '--underlay', '/usr']
+    return ['export', '--workspace', workspace, '-o', output, *prefix_arguments(ros1_prefixes())]
 
 
 def _median_duration(workspace, old, tmp_path):

@@ -20,6 +20,7 @@ from fixtures.build_integration.tools import (
     build_firmware_of_whole_export, compile_headers, expected_header_names, genmros_export,
     genmsg_md5, genpy_default_size, headers_under, imported_firmware_output, new_workspace, package_headers, run,
     search_path_of, unwrapped, user_environment)
+from testing.ros_paths import prefix_arguments, ros1_prefixes
 
 pytestmark = pytest.mark.slow
 
@@ -65,8 +66,8 @@ class Build:
         self.install_root = install_root
         self.export_dir = export_dir
         self.log = log
-        self.reference = genmros_export(os.path.join(workspace, 'reference'),
-                                        '--workspace', workspace, '--underlay', '/usr')
+        self.reference = genmros_export(os.path.join(workspace, 'reference'), '--workspace',
+                                        workspace, *prefix_arguments(ros1_prefixes()))
 
     def devel_headers(self):
         headers = {}

@@ -19,6 +19,7 @@ import pytest
 
 from fixtures.build_integration.tools import (
     GENERATOR_LOG_LINE, MESSAGE_PACKAGES, genmros_export, headers_under, mtimes, new_workspace, run)
+from testing.ros_paths import prefix_arguments, ros1_prefixes
 
 pytestmark = pytest.mark.slow
 
@@ -92,7 +93,7 @@ def test_edited_msg_reaches_devel_space_and_export_dir(workspace, tmp_path):
     log = workspace.build()
     assert 'mros_test/PersonalData.msg' in _generated_types(log)
     reference = genmros_export(str(tmp_path), '--workspace', workspace.root,
-                               '--underlay', '/usr')
+                               *prefix_arguments(ros1_prefixes()))
     header = os.path.join('mros_test', 'PersonalData.h')
     expected = headers_under(reference)[header]
     assert b'height_m' in expected

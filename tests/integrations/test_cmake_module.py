@@ -17,6 +17,7 @@ import pytest
 from settings_headers import header_paths, small_settings
 from fixtures.build_integration.tools import (
     FIRMWARE_FIXTURE, TEST_WS_SRC, genmsg_md5, new_workspace, run, search_path_of, unwrapped)
+from testing.ros_paths import ros1_package_dir, ros1_prefixes
 
 # cmake, colcon, catkin or make builds: more than half a minute.
 pytestmark = pytest.mark.slow
@@ -63,7 +64,7 @@ def workspace(tmp_path):
 
 def test_generate_builds_the_firmware_from_msg_files(firmware, workspace):
     source = os.path.join(workspace, 'src')
-    firmware.configure(MROS_PACKAGE_PATHS=[source, '/usr'])
+    firmware.configure(MROS_PACKAGE_PATHS=[source] + ros1_prefixes())
     firmware.build()
     output = firmware.output()
     assert output['md5'] == genmsg_md5('mros_test/PersonalData', search_path_of(source))
@@ -74,7 +75,7 @@ def test_generate_builds_the_firmware_from_msg_files(firmware, workspace):
 
 def test_generate_rebuilds_after_a_msg_change_and_not_otherwise(firmware, workspace):
     source = os.path.join(workspace, 'src')
-    firmware.configure(MROS_PACKAGE_PATHS=[source, '/usr'])
+    firmware.configure(MROS_PACKAGE_PATHS=[source] + ros1_prefixes())
     firmware.build()
     assert REGENERATION_LOG_LINE not in firmware.build()
 
@@ -89,16 +90,18 @@ def test_generate_rebuilds_after_a_msg_change_and_not_otherwise(firmware, worksp
 
 def test_generate_takes_installed_packages_from_the_ros_environment(firmware, workspace):
     # Only the source tree: geometry_msgs and std_msgs come from the ROS
-    # environment (Debian's /usr/share through rospkg), and a change there
-    # would regenerate the headers too.
-    firmware.configure(MROS_PACKAGE_PATHS=os.path.join(workspace, 'src'), FIRMWARE_TYPES='mros_test/NestedTypes')
+    # environment (rospkg's: where nothing is sourced, Debian's /usr/share),
+    # and a change there would regenerate the headers too.
+    firmware.configure(MROS_PACKAGE_PATHS=os.path.join(workspace, 'src'),
+                       FIRMWARE_TYPES='mros_test/NestedTypes')
     firmware.build()
     with open(firmware.build_dir + '/mros_messages/firmware.d') as stream:
         record = stream.read()
-    for definition in ('/usr/share/geometry_msgs/msg/Pose.msg', '/usr/share/std_msgs/msg/Header.msg',
+    pose = os.path.join(ros1_package_dir('geometry_msgs'), 'Pose.msg')
+    for definition in (pose, os.path.join(ros1_package_dir('std_msgs'), 'Header.msg'),
                        os.path.join(workspace, 'src', 'mros_test', 'msg', 'NestedTypes.msg')):
         assert '\n%s:\n' % definition in record
-    assert '/usr/share/geometry_msgs/msg/Pose.msg' in _makefiles(firmware, 'build.make')
+    assert pose in _makefiles(firmware, 'build.make')
 
 
 def _makefiles(firmware, name):
@@ -112,7 +115,7 @@ def _makefiles(firmware, name):
 
 
 def test_aggregates_hold_exactly_the_listed_types(firmware, workspace):
-    firmware.configure(MROS_PACKAGE_PATHS=[os.path.join(workspace, 'src'), '/usr'],
+    firmware.configure(MROS_PACKAGE_PATHS=[os.path.join(workspace, 'src')] + ros1_prefixes(),
                        FIRMWARE_TYPES=['mros_test_base/Vector3i', 'std_msgs/ColorRGBA'])
     firmware.build()
     # Three int32 (12 bytes) and four float32 (16 bytes): both fixed-size.
@@ -127,7 +130,8 @@ def test_aggregates_hold_exactly_the_listed_types(firmware, workspace):
 
 def test_generate_fails_at_configure_time_for_an_unknown_type(firmware, workspace):
     result = firmware.configure(check=False, FIRMWARE_TYPES='mros_test/NoSuchType',
-                                MROS_PACKAGE_PATHS=[os.path.join(workspace, 'src'), '/usr'])
+                                MROS_PACKAGE_PATHS=[os.path.join(workspace, 'src')]
+                                + ros1_prefixes())
     assert result.returncode != 0
     assert "unknown type 'mros_test/NoSuchType'" in unwrapped(result.stdout)
 
@@ -136,7 +140,8 @@ def test_generate_fails_at_configure_time_for_a_missing_package(firmware, worksp
     # mros_test needs mros_test_base, which is not on the search path.
     shutil.rmtree(os.path.join(workspace, 'src', 'mros_test_base'))
     result = firmware.configure(check=False, FIRMWARE_TYPES='mros_test/NestedTypes',
-                                MROS_PACKAGE_PATHS=[os.path.join(workspace, 'src'), '/usr'])
+                                MROS_PACKAGE_PATHS=[os.path.join(workspace, 'src')]
+                                + ros1_prefixes())
     assert result.returncode != 0
     assert "unknown package 'mros_test_base'" in unwrapped(result.stdout)
 

@@ -21,6 +21,7 @@ import pytest
 from compile_checks import LANGUAGE_MODES, STRICT_FLAGS, TARGETS, every_header_translation_unit
 from conftest import REPO, TEST_WS, run_genmros
 from settings_headers import define, header_paths, small_settings
+from testing.ros_paths import prefix_arguments, ros1_prefixes
 
 # cmake, colcon, catkin or make builds: more than half a minute.
 pytestmark = pytest.mark.slow
@@ -176,7 +177,7 @@ def test_genmros_names_its_make_fragment():
 
 def test_aggregates_cover_the_named_types_and_headers_their_closure(tmp_path):
     run_genmros('export', '--workspace', TEST_WS, '--type', 'mros_test/NestedTypes', '-o', str(tmp_path),
-                '--underlay', '/usr')
+                *prefix_arguments(ros1_prefixes()))
     assert os.path.isfile(str(tmp_path / 'geometry_msgs' / 'Pose.h'))
     with open(str(tmp_path / 'message_class_specialization.h')) as stream:
         instantiations = [line for line in stream if line.startswith('template ')]

@@ -18,6 +18,7 @@ import sys
 import pytest
 
 from conftest import TEST_WS
+from testing.ros_paths import ros1_package_dir
 from user_install import copy_sources
 
 pytestmark = pytest.mark.slow
@@ -57,7 +58,7 @@ class Noetic:
 def _make_prefix(prefix):
     share = os.path.join(prefix, 'share')
     for package in ('std_msgs', 'geometry_msgs'):
-        shutil.copytree(os.path.join('/usr/share', package), os.path.join(share, package))
+        shutil.copytree(os.path.dirname(ros1_package_dir(package)), os.path.join(share, package))
     os.makedirs(os.path.join(share, 'ros'))
     with open(os.path.join(share, 'std_msgs', 'msg', 'NoeticOnly.msg'), 'w') as stream:
         stream.write('Header header\nstring distro\n')

@@ -24,6 +24,7 @@ import pytest
 from testing import fastcdr, ros2_messages
 
 from mros2_corpus import TEST_INTERFACE_PACKAGE, typestore
+from testing.ros_paths import ros2_package_dir
 
 INSTANCES_PER_TYPE = 12
 # mros2's fragment buffer is 64 bytes; smaller ones cut inside every value.
@@ -86,9 +87,10 @@ def test_generated_bytes_read_back_in_fastcdr(test_interface_corpus, rosbags_cor
 def test_rosbags_bytes_come_back_and_rosbags_reads_ours(test_interface_corpus, rosbags_corpus):
     from rosbags.typesys import get_types_from_msg
     store = typestore()
-    for path in sorted(os.listdir('/usr/share/test_interface_files/msg')):
+    msg_dir = ros2_package_dir(TEST_INTERFACE_PACKAGE)
+    for path in sorted(os.listdir(msg_dir)):
         name = '%s/msg/%s' % (TEST_INTERFACE_PACKAGE, path[:-4])
-        with open(os.path.join('/usr/share/test_interface_files/msg', path)) as stream:
+        with open(os.path.join(msg_dir, path)) as stream:
             store.register(get_types_from_msg(stream.read(), name))
     checked = 0
     for number, corpus in enumerate((test_interface_corpus, rosbags_corpus)):

@@ -8,14 +8,14 @@ back what it received. The samples
 are CDR written by hand, so a fault here is the peer's, not generated
 code's."""
 
-import os
 import struct
 
 import pytest
 
 from testing.dds_peer import PeerError, build, echoer, free_domain_id, receiver, send
+from testing.ros_paths import ros2_include_prefix
 
-pytestmark = pytest.mark.skipif(not os.path.isdir('/usr/include/fastdds'),
+pytestmark = pytest.mark.skipif(ros2_include_prefix('fastdds') is None,
                                 reason='needs Fast DDS (Debian: libfastrtps-dev)')
 
 TOPIC = 'rt/chatter'

@@ -14,6 +14,7 @@ from conftest import run_genmros
 from testing import fastcdr, ros2_messages
 
 from mros2_corpus import ECHO_TARGETS
+from testing.ros_paths import prefix_arguments, ros2_prefixes
 
 # Fragment sizes for the echo program, which drives copyToFragBuf as mros2's
 # runtime does: the first fragment carries the 4-byte header, the last is
@@ -114,7 +115,7 @@ int main() {
 @pytest.fixture(scope='module')
 def export(tmp_path_factory):
     root = str(tmp_path_factory.mktemp('fragment_cursor_export'))
-    run_genmros('mros2-export', '--prefix', '/usr', '-o', root,
+    run_genmros('mros2-export', *prefix_arguments(ros2_prefixes()), '-o', root,
                 '--type', 'test_interface_files/msg/MultiNested',
                 '--type', 'test_interface_files/msg/UnboundedSequences')
     return root

@@ -13,6 +13,7 @@ import os
 from colcon_mros.export.mros2_export import Board, firmware_fit
 
 from conftest import run_genmros
+from testing.ros_paths import prefix_arguments, ros2_prefixes
 
 CONFIG = '''\
 #ifndef RTPS_CONFIG_H
@@ -62,7 +63,7 @@ def _fit(tmp_path, publish, subscribe, config=CONFIG, limit=None, publisher=None
         _write(tmp_path / 'mros2' / 'include' / 'mros2.h', publisher)
         mros2_root = str(tmp_path / 'mros2')
     board = Board(_write(tmp_path / 'rtps' / 'config.h', config), limit, mros2_root)
-    return firmware_fit(board, prefixes=['/usr'], publish=publish, subscribe=subscribe)
+    return firmware_fit(board, prefixes=ros2_prefixes(), publish=publish, subscribe=subscribe)
 
 
 def _roomy():
@@ -139,7 +140,7 @@ def test_the_receive_limit_is_read_from_the_ports_setting(tmp_path):
 
 def test_genmros_mros2_fit_and_mros2_export_refuse_a_misfit(tmp_path):
     config = _write(tmp_path / 'rtps' / 'config.h', CONFIG)
-    endpoints = ['--prefix', '/usr', '--rtps-config', config,
+    endpoints = [*prefix_arguments(ros2_prefixes()), '--rtps-config', config,
                  '--subscribe', 'state:%sBasicTypes' % TIF]
     result = run_genmros('mros2-fit', *endpoints, check=False)
     assert result.returncode == 1

@@ -20,6 +20,7 @@ import sys
 from conftest import REPO
 
 import pytest
+from testing.ros_paths import ros2_package_dir
 
 pytestmark = pytest.mark.slow
 
@@ -27,7 +28,7 @@ FUZZ_SECONDS = 60
 # Where the fuzzed definitions are: test_ws_ros2's packages and Debian's
 # ros2-test-interface-files.
 DEFINITION_DIRS = glob.glob(os.path.join(REPO, 'test_ws_ros2', 'src', '*')) + [
-    '/usr/share/test_interface_files']
+    os.path.dirname(ros2_package_dir('test_interface_files'))]
 
 
 def _fuzzed_type_count():

@@ -18,6 +18,7 @@ import pytest
 
 from conftest import REPO, run_genmros
 from testing import fastcdr
+from testing.ros_paths import prefix_arguments, ros2_prefixes
 
 RUNTIME = os.path.join(REPO, 'testing', 'mros2_runtime')
 FLAGS = ['-std=c++14', '-Wall', '-Wextra', '-Werror']
@@ -78,7 +79,7 @@ int main() {
 @pytest.fixture(scope='module')
 def export(tmp_path_factory):
     root = str(tmp_path_factory.mktemp('mros2_runtime_export'))
-    arguments = ['mros2-export', '--prefix', '/usr', '-o', root]
+    arguments = ['mros2-export', *prefix_arguments(ros2_prefixes()), '-o', root]
     for name in PUBLISH:
         arguments += ['--publish', name]
     for name in SUBSCRIBE:

@@ -14,8 +14,9 @@ from colcon_mros.mros_v1.names import RESERVED_NAMES
 from colcon_mros.ros1.model import ModelBuilder
 from colcon_mros.ros1.parse import SpecLoader
 from conftest import REPO
+from testing.ros_paths import ros1_package_dir
 
-STD_MSGS = '/usr/share/std_msgs/msg'
+STD_MSGS = ros1_package_dir('std_msgs')
 
 
 def _message(tmp_path, text, storage=None):

@@ -16,6 +16,7 @@ import pytest
 
 from colcon_mros.mros_v1.rules import DELIVERY_ON_STACK_MAX
 from conftest import run_genmros
+from testing.ros_paths import prefix_arguments, ros1_prefixes
 
 SOURCE = '''#include <message_headers.h>
 #include <sensor_msgs/JointState.h>
@@ -39,8 +40,8 @@ def bounded_types(tmp_path_factory):
     options.write_text('* max_size:32 max_count:16\n')
     include = str(root / 'include')
     run_genmros('export', '--type', 'sensor_msgs/JointState', '--type', 'std_msgs/String',
-                '-o', include, '--underlay', '/usr', '--storage', 'bounded', '--options',
-                str(options))
+                '-o', include, *prefix_arguments(ros1_prefixes()),
+                '--storage', 'bounded', '--options', str(options))
     return include
 
 
@@ -168,7 +169,8 @@ def test_delivery_reads_no_further_than_the_frame_size_the_library_gives(tmp_pat
     # (frame-size-to-delivery); without it, delivery believes the length
     # word of a frame it did not write (here a stale 0: nothing decodes).
     include = str(tmp_path / 'include')
-    run_genmros('export', '--type', 'std_msgs/String', '-o', include, '--underlay', '/usr')
+    run_genmros('export', '--type', 'std_msgs/String', '-o', include,
+                *prefix_arguments(ros1_prefixes()))
     with open(os.path.join(include, 'message_headers.h')) as stream:
         assert '#define MROS_CALL_CALLBACK_TAKES_FRAME_SIZE 1\n' in stream.read()
     source = tmp_path / 'deliver.cpp'

@@ -17,6 +17,7 @@ from colcon_mros.export.firmware_export import firmware_messages
 from colcon_mros.mros_v1.fit import Fit
 from colcon_mros.mros_v1.rules import (PEER_NAME_MAX, PUBLISHER_HEADER_FIXED,
                                        SUBSCRIBER_HEADER_FIXED, FirmwareNeeds)
+from testing.ros_paths import ros1_package_dir, ros1_prefixes
 from testing.ros_graph import PYTHON, RosGraph
 from testing.tcpros_peer import HostilePublisher, RawSubscriber
 from conftest import TEST_WS
@@ -32,7 +33,7 @@ PACKET_CONFIG = os.path.join(MROS_V1_ROOT, 'mros-lib', 'mros-src', 'packet', 'ci
 
 
 def _messages(*type_names, storage='heap', option_files=()):
-    return firmware_messages(type_names, [TEST_WS, '/usr'], storage, option_files)
+    return firmware_messages(type_names, [TEST_WS] + ros1_prefixes(), storage, option_files)
 
 
 def _needs(*type_names):
@@ -56,7 +57,7 @@ def _genpy_full_text(type_name):
 def _genmsg_full_text(type_name):
     """genmsg's full text of a test_ws type, what genpy and gencpp carry."""
     from genmsg import gentools, msg_loader
-    search = {'std_msgs': ['/usr/share/std_msgs/msg']}
+    search = {'std_msgs': [ros1_package_dir('std_msgs')]}
     for package in ('mros_test', 'mros_test_base'):
         search[package] = [os.path.join(TEST_WS, 'src', package, 'msg')]
     context = msg_loader.MsgContext.create_default()

@@ -16,6 +16,7 @@ from colcon_mros.export.firmware_export import firmware_messages
 from colcon_mros.mros_v1.fit import Fit
 from conftest import TEST_WS, run_genmros
 from settings_headers import header_paths, small_settings
+from testing.ros_paths import prefix_arguments, ros1_prefixes
 
 TYPES = ['std_msgs/String', 'mros_test_base/Vector3i', 'geometry_msgs/Quaternion',
          'mros_test/PersonalData', 'sensor_msgs/JointState']
@@ -30,7 +31,8 @@ def bounded_export(tmp_path_factory):
     options = root / 'bounds.options'
     options.write_text(BOUNDS)
     include = str(root / 'include')
-    arguments = ['export', '-o', include, '--workspace', TEST_WS, '--underlay', '/usr',
+    arguments = ['export', '-o', include, '--workspace', TEST_WS,
+                 *prefix_arguments(ros1_prefixes()),
                  '--storage', 'bounded', '--options', str(options)]
     for type_name in TYPES:
         arguments += ['--type', type_name]
@@ -41,7 +43,7 @@ def bounded_export(tmp_path_factory):
 def _python_refusals(options, settings_dir):
     """(type, setting) of each misfit of the Python check; a memory pool as
     'publishing' or 'receiving'."""
-    messages = firmware_messages(TYPES, [TEST_WS, '/usr'], 'bounded', [options])
+    messages = firmware_messages(TYPES, [TEST_WS] + ros1_prefixes(), 'bounded', [options])
     fit = Fit(messages, read_settings(header_paths(settings_dir)))
     return sorted((misfit.type_name, misfit.what.split(', ')[1].rstrip(',') if 'frame' in misfit.what
                    else misfit.setting.name) for misfit in fit.misfits)

@@ -11,6 +11,7 @@ import pytest
 
 from colcon_mros.mros_v1.cpp import SUPPORT_HEADER, SUPPORT_HEADERS, SUPPORT_VERSION_HEADER
 from conftest import REPO, TEST_WS, run_genmros
+from testing.ros_paths import prefix_arguments, ros1_package_dir, ros1_prefixes
 
 FIXTURES = os.path.join(REPO, 'tests', 'fixtures')
 STRICT = ['g++', '-std=c++11', '-Wall', '-Wextra', '-Werror', '-pedantic']
@@ -35,7 +36,8 @@ AGGREGATES = ['message_class_specialization.h', 'message_headers.h', 'msg_max_si
 
 
 def test_export_of_one_type_brings_its_whole_closure(tmp_path):
-    run_genmros('export', '--type', 'geometry_msgs/PoseStamped', '-o', str(tmp_path), '--underlay', '/usr')
+    run_genmros('export', '--type', 'geometry_msgs/PoseStamped', '-o', str(tmp_path),
+                *prefix_arguments(ros1_prefixes()))
     assert _tree(str(tmp_path)) == sorted(AGGREGATES + [
         'geometry_msgs/Point.h', 'geometry_msgs/Pose.h', 'geometry_msgs/PoseStamped.h',
         'geometry_msgs/Quaternion.h', 'std_msgs/Header.h'] + list(SUPPORT_HEADERS))
@@ -52,7 +54,8 @@ def test_export_of_a_workspace_covers_every_type_and_dependency(test_ws_export):
 
 
 def test_generator_mode_writes_what_export_writes(test_ws_export, tmp_path):
-    flags = ['-I', 'std_msgs:/usr/share/std_msgs/msg', '-I', 'geometry_msgs:/usr/share/geometry_msgs/msg']
+    flags = ['-I', 'std_msgs:' + ros1_package_dir('std_msgs'),
+             '-I', 'geometry_msgs:' + ros1_package_dir('geometry_msgs')]
     for package in ('mros_test_base', 'mros_test'):
         flags += ['-I', '%s:%s' % (package, os.path.join(TEST_WS, 'src', package, 'msg'))]
     definitions = sorted(glob.glob(os.path.join(TEST_WS, 'src', '*', 'msg', '*.msg')) +
@@ -112,7 +115,8 @@ def test_the_msg_comments_become_the_type_and_members_comments(tmp_path):
         '</license></package>\n')
     (package / 'msg' / 'Commented.msg').write_text(COMMENTED_MSG)
     include = str(tmp_path / 'include')
-    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', include, '--underlay', '/usr')
+    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', include,
+                *prefix_arguments(ros1_prefixes()))
     with open(os.path.join(include, 'commented', 'Commented.h')) as stream:
         header = stream.read()
     assert ('  // above a\n  // after a\n  int32_t a;  // int32 a\n'
@@ -133,9 +137,10 @@ def test_the_msg_comments_become_the_type_and_members_comments(tmp_path):
 
 
 def test_type_ids_depend_on_the_type_name_only(tmp_path):
-    run_genmros('export', '--type', 'std_msgs/Header', '-o', str(tmp_path / 'a'), '--underlay', '/usr')
+    run_genmros('export', '--type', 'std_msgs/Header', '-o', str(tmp_path / 'a'),
+                *prefix_arguments(ros1_prefixes()))
     run_genmros('export', '--package', 'sensor_msgs', '--type', 'std_msgs/Header', '-o', str(tmp_path / 'b'),
-                '--underlay', '/usr')
+                *prefix_arguments(ros1_prefixes()))
     assert filecmp.cmp(str(tmp_path / 'a' / 'std_msgs' / 'Header.h'), str(tmp_path / 'b' / 'std_msgs' / 'Header.h'),
                        shallow=False)
 
@@ -144,7 +149,8 @@ def test_fields_named_like_cpp_keywords_compile_and_round_trip(tmp_path):
     workspace = tmp_path / 'ws' / 'src'
     shutil.copytree(os.path.join(FIXTURES, 'keyword_msgs'), str(workspace / 'keyword_msgs'))
     include = str(tmp_path / 'include')
-    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', include, '--underlay', '/usr')
+    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', include,
+                *prefix_arguments(ros1_prefixes()))
     output = _build_and_run(tmp_path, [include], r'''
 #include <cstdio>
 #include <keyword_msgs/Keywords.h>
@@ -202,7 +208,8 @@ int main() {
 
 def test_variable_size_budget_sizes_the_publish_buffer(tmp_path):
     run_genmros('export', '--workspace', TEST_WS, '--type', 'mros_test/PersonalData', '--type',
-                'mros_test_base/Vector3i', '-o', str(tmp_path), '--underlay', '/usr', '--variable-size-budget', '96')
+                'mros_test_base/Vector3i', '-o', str(tmp_path), *prefix_arguments(ros1_prefixes()),
+                '--variable-size-budget', '96')
     with open(str(tmp_path / 'msg_max_size.h')) as stream:
         assert '#define PUB_MSG_MAX_SIZE 96' in stream.read()
 
@@ -231,7 +238,8 @@ def test_help_describes_both_modes(arguments, expected):
 
 
 def test_generator_mode_fills_an_export_dir_with_the_whole_closure(test_ws_export, tmp_path):
-    flags = ['-I', 'std_msgs:/usr/share/std_msgs/msg', '-I', 'geometry_msgs:/usr/share/geometry_msgs/msg']
+    flags = ['-I', 'std_msgs:' + ros1_package_dir('std_msgs'),
+             '-I', 'geometry_msgs:' + ros1_package_dir('geometry_msgs')]
     for package in ('mros_test_base', 'mros_test'):
         flags += ['-I', '%s:%s' % (package, os.path.join(TEST_WS, 'src', package, 'msg'))]
     export_dir = tmp_path / 'export'
@@ -248,7 +256,7 @@ def test_generator_mode_fills_an_export_dir_with_the_whole_closure(test_ws_expor
     assert definitions == ['geometry_msgs/msg/Point.msg', 'geometry_msgs/package.xml',
                            'mros_test/msg/PersonalData.msg', 'mros_test/package.xml', 'mros_test/srv/LookupPerson.srv']
     assert filecmp.cmp(str(export_dir / 'share' / 'geometry_msgs' / 'msg' / 'Point.msg'),
-                       '/usr/share/geometry_msgs/msg/Point.msg', shallow=False)
+                       os.path.join(ros1_package_dir('geometry_msgs'), 'Point.msg'), shallow=False)
 
 
 def test_catkin_devel_space_underlays_are_found(tmp_path):
@@ -262,6 +270,6 @@ def test_catkin_devel_space_underlays_are_found(tmp_path):
         'set(mros_test_base_MSG_INCLUDE_DIRS "%s")\nset(mros_test_base_MSG_DEPENDENCIES std_msgs)\n'
         % os.path.join(TEST_WS, 'src', 'mros_test_base', 'msg'))
     run_genmros('export', '--type', 'mros_test_base/Labeled', '-o', str(tmp_path / 'include'),
-                '--underlay', str(devel), '--underlay', '/usr')
+                '--prefix', str(devel), *prefix_arguments(ros1_prefixes()))
     assert _tree(str(tmp_path / 'include')) == sorted(AGGREGATES + [
         'mros_test_base/Labeled.h', 'std_msgs/ColorRGBA.h'] + list(SUPPORT_HEADERS))

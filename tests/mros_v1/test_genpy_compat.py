@@ -20,18 +20,9 @@ from genmsg.msgs import parse_type
 
 import cpp_harness
 from conftest import TEST_WS
+from testing import ros_paths
 
 INSTANCES_PER_TYPE = 100
-GENPY_MSG = '/usr/lib/genpy/genmsg_py.py'
-GENPY_SRV = '/usr/lib/genpy/gensrv_py.py'
-
-
-def _workspace_search_path():
-    search_path = {p: ['/usr/share/%s/msg' % p] for p in os.listdir('/usr/share')
-                   if os.path.isdir('/usr/share/%s/msg' % p)}
-    for msg_dir in glob.glob(os.path.join(TEST_WS, 'src', '*', 'msg')):
-        search_path[os.path.basename(os.path.dirname(msg_dir))] = [msg_dir]
-    return search_path
 
 
 def _workspace_definitions():
@@ -48,11 +39,11 @@ def genpy_classes(tmp_path_factory):
     """Runs the real genpy generators over test_ws; puts the result on sys.path."""
     root = str(tmp_path_factory.mktemp('genpy'))
     flags = []
-    for package, directories in _workspace_search_path().items():
+    for package, directories in cpp_harness.search_path().items():
         flags += ['-I', '%s:%s' % (package, directories[0])]
     for package, kind, paths in _workspace_definitions():
         output = os.path.join(root, package, kind)
-        generator = GENPY_MSG if kind == 'msg' else GENPY_SRV
+        generator = ros_paths.genpy()[0 if kind == 'msg' else 1]
         for path in paths:
             subprocess.run([sys.executable, generator, path, '-p', package, '-o', output] + flags, check=True)
         subprocess.run([sys.executable, generator, '--initpy', '-p', package, '-o', output], check=True)
@@ -69,7 +60,7 @@ def probe(test_ws_export, tmp_path_factory):
     messages = ['%s/%s' % (package, os.path.basename(p)[:-4])
                 for package, kind, paths in _workspace_definitions() if kind == 'msg' for p in paths]
     services = [(package, p) for package, kind, paths in _workspace_definitions() if kind == 'srv' for p in paths]
-    type_set = cpp_harness.TypeSet(_workspace_search_path(), messages, services)
+    type_set = cpp_harness.TypeSet(cpp_harness.search_path(), messages, services)
     directory = str(tmp_path_factory.mktemp('probe'))
     sources = cpp_harness.write_sources(directory, type_set, with_roscpp=False)
     # The byte-by-byte path that big-endian hosts take; the roscpp comparison covers the other.

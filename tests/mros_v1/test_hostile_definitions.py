@@ -23,6 +23,7 @@ from genmsg.msgs import bare_msg_type, is_builtin, parse_type
 
 from conftest import run_genmros
 from file_trees import assert_one_line_error, package_xml, snapshot, write_tree
+from testing.ros_paths import prefix_arguments, ros1_package_dir, ros1_prefixes
 
 pytestmark = pytest.mark.slow
 
@@ -337,7 +338,8 @@ def accepted_export(tmp_path_factory):
     write_tree(str(package), _accepted_files())
     write_tree(str(root / 'ws' / 'src' / 'hostile_ok_b'), GUARD_TWIN)
     output = str(root / 'out')
-    run_genmros('export', '--workspace', str(root / 'ws'), '-o', output, '--underlay', '/usr')
+    run_genmros('export', '--workspace', str(root / 'ws'), '-o', output,
+                *prefix_arguments(ros1_prefixes()))
     return str(root), str(package), output
 
 
@@ -393,8 +395,9 @@ def test_header_guards_are_unique(accepted_export, tmp_path):
 def test_accepted_messages_round_trip_under_asan(accepted_export, tmp_path):
     _, package, output = accepted_export
     full_names = _accepted_types(package)
-    search_path = {'hostile_ok': [os.path.join(package, 'msg')], 'std_msgs': ['/usr/share/std_msgs/msg'],
-                   'geometry_msgs': ['/usr/share/geometry_msgs/msg']}
+    search_path = {'hostile_ok': [os.path.join(package, 'msg')],
+                   'std_msgs': [ros1_package_dir('std_msgs')],
+                   'geometry_msgs': [ros1_package_dir('geometry_msgs')]}
     context = _load_specs(search_path, [n for n in full_names if not n.endswith(('Request', 'Response'))])
     service = msg_loader.load_srv_from_file(context, os.path.join(package, 'srv', 'Ask.srv'), 'hostile_ok/Ask')
     msg_loader.load_depends(context, service, search_path)
@@ -491,7 +494,8 @@ def good_export(tmp_path_factory):
     write_tree(str(root / 'ws' / 'src' / 'hostile_good'),
            {'package.xml': package_xml('hostile_good'), 'msg/Good.msg': 'std_msgs/Header header\nint32 a\n'})
     output = str(root / 'out')
-    run_genmros('export', '--workspace', str(root / 'ws'), '-o', output, '--underlay', '/usr')
+    run_genmros('export', '--workspace', str(root / 'ws'), '-o', output,
+                *prefix_arguments(ros1_prefixes()))
     return str(root / 'ws'), output
 
 
@@ -507,11 +511,12 @@ def test_refused_definition(good_export, tmp_path, package_name, files, target, 
     shutil.copytree(good_output, output)
     before = snapshot(output)
     location = os.path.join(package, target) + line
-    result = run_genmros('export', '--workspace', str(workspace), '-o', output, '--underlay', '/usr', check=False)
+    result = run_genmros('export', '--workspace', str(workspace), '-o', output,
+                         *prefix_arguments(ros1_prefixes()), check=False)
     assert_one_line_error(result, location, problem)
     assert snapshot(output) == before
     includes = ['-I', '%s:%s' % (package_name, os.path.join(package, 'msg')),
-                '-I', 'std_msgs:/usr/share/std_msgs/msg']
+                '-I', 'std_msgs:' + ros1_package_dir('std_msgs')]
     if not os.path.isdir(os.path.join(package, 'msg')):
         includes = includes[2:]
     result = run_genmros('generate', os.path.join(package, target), '-p', package_name,
@@ -543,7 +548,8 @@ def test_nesting_as_deep_as_gencpp_handles(tmp_path):
     package = str(tmp_path / 'ws' / 'src' / 'hostile_deep')
     write_tree(package, _chain(250))
     output = str(tmp_path / 'out')
-    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', output, '--underlay', '/usr')
+    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', output,
+                *prefix_arguments(ros1_prefixes()))
     source = tmp_path / 'deep.cpp'
     source.write_text('#include <hostile_deep/D0.h>\nint main() { hostile_deep::D0 d; '
                       'return d.serializedLength() == 1000 ? 0 : 1; }\n')
@@ -560,7 +566,7 @@ def test_nesting_beyond_the_limit_is_refused(tmp_path):
     package = str(tmp_path / 'ws' / 'src' / 'hostile_deep')
     write_tree(package, _chain(1002))
     result = run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', str(tmp_path / 'out'),
-                         '--underlay', '/usr', check=False)
+                         *prefix_arguments(ros1_prefixes()), check=False)
     assert_one_line_error(result, os.path.join(package, 'msg', 'D999.msg') + ':2:',
                            "field 'next' nests types more than 1000 levels deep")
     assert not os.path.exists(str(tmp_path / 'out'))
@@ -581,7 +587,8 @@ def test_diamond_nesting_takes_linear_time(tmp_path):
     write_tree(package, _diamond(40))
     output = str(tmp_path / 'out')
     started = time.monotonic()
-    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', output, '--underlay', '/usr')
+    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', output,
+                *prefix_arguments(ros1_prefixes()))
     assert time.monotonic() - started < 30
     # genmsg itself, where it still finishes: the last 12 levels.
     context = _load_specs({'hostile_wide': [os.path.join(package, 'msg')]}, ['hostile_wide/W28'])
@@ -599,7 +606,7 @@ def test_error_on_the_last_line_of_a_long_file_is_found_quickly(tmp_path):
     write_tree(package, {'package.xml': package_xml('hostile_long'), 'msg/Long.msg': '\n'.join(lines) + '\n'})
     started = time.monotonic()
     result = run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', str(tmp_path / 'out'),
-                         '--underlay', '/usr', check=False)
+                         *prefix_arguments(ros1_prefixes()), check=False)
     assert time.monotonic() - started < 20
     assert_one_line_error(result, os.path.join(package, 'msg', 'Long.msg') + ':20000:',
                            '1bad is not a legal message field name')

@@ -14,25 +14,24 @@ import pytest
 
 import cpp_harness
 from conftest import DEBIAN_MESSAGE_PACKAGES, TEST_WS
+from testing import ros_paths
 
 SANITIZERS = ['-fsanitize=address,undefined', '-fno-sanitize-recover=all', '-fno-omit-frame-pointer', '-g']
 INSTANCES_PER_TYPE = 4
 
 
 def _all_types():
-    search_path = {p: ['/usr/share/%s/msg' % p] for p in os.listdir('/usr/share')
-                   if os.path.isdir('/usr/share/%s/msg' % p)}
+    search_path = cpp_harness.search_path()
     messages = []
     services = []
-    for msg_dir in sorted(glob.glob(os.path.join(TEST_WS, 'src', '*', 'msg'))):
-        package = os.path.basename(os.path.dirname(msg_dir))
-        search_path[package] = [msg_dir]
+    for package in cpp_harness.TEST_WS_PACKAGES:
+        msg_dir = search_path[package][0]
         messages.extend('%s/%s' % (package, os.path.basename(p)[:-4])
                         for p in sorted(glob.glob(os.path.join(msg_dir, '*.msg'))))
-    for package in DEBIAN_MESSAGE_PACKAGES + ['mros_test']:
+    for package in DEBIAN_MESSAGE_PACKAGES:
         messages.extend('%s/%s' % (package, os.path.basename(p)[:-4])
-                        for p in sorted(glob.glob('/usr/share/%s/msg/*.msg' % package)))
-        services.extend((package, p) for p in sorted(glob.glob('/usr/share/%s/srv/*.srv' % package)))
+                        for p in ros_paths.ros1_definitions(package, 'msg'))
+        services.extend((package, p) for p in ros_paths.ros1_definitions(package, 'srv'))
     services.extend(('mros_test', p) for p in sorted(glob.glob(os.path.join(TEST_WS, 'src', 'mros_test', 'srv', '*.srv'))))
     return cpp_harness.TypeSet(search_path, messages, services)
 

@@ -13,15 +13,11 @@ import pytest
 
 import cpp_harness
 from conftest import DEBIAN_MESSAGE_PACKAGES
+from testing import ros_paths
 
 pytestmark = pytest.mark.slow
 
 INSTANCES_PER_TYPE = 200
-
-
-def _debian_search_path():
-    return {p: ['/usr/share/%s/msg' % p] for p in os.listdir('/usr/share')
-            if os.path.isdir('/usr/share/%s/msg' % p)}
 
 
 @pytest.fixture(scope='module')
@@ -29,10 +25,10 @@ def debian_types():
     messages = []
     services = []
     for package in DEBIAN_MESSAGE_PACKAGES:
-        for path in sorted(glob.glob('/usr/share/%s/msg/*.msg' % package)):
+        for path in ros_paths.ros1_definitions(package, 'msg'):
             messages.append('%s/%s' % (package, os.path.basename(path)[:-4]))
-        services.extend((package, path) for path in sorted(glob.glob('/usr/share/%s/srv/*.srv' % package)))
-    return cpp_harness.TypeSet(_debian_search_path(), messages, services)
+        services.extend((package, path) for path in ros_paths.ros1_definitions(package, 'srv'))
+    return cpp_harness.TypeSet(cpp_harness.search_path(with_test_ws=False), messages, services)
 
 
 @pytest.fixture(scope='module')

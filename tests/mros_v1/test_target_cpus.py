@@ -27,6 +27,7 @@ import pytest
 
 import cpp_harness
 from conftest import TEST_WS, run_genmros
+from testing.ros_paths import prefix_arguments, ros1_prefixes
 
 pytestmark = [pytest.mark.needs_qemu, pytest.mark.slow]
 
@@ -92,7 +93,7 @@ def target_sources(tmp_path_factory):
     search_path = cpp_harness.search_path()
     messages = ['%s/%s' % (package, os.path.basename(path)[:-4]) for package, path in cpp_harness.test_ws_definitions('msg')]
     type_set = cpp_harness.TypeSet(search_path, messages + DEBIAN_SET, list(cpp_harness.test_ws_definitions('srv')))
-    arguments = ['export', '--workspace', TEST_WS, '--underlay', '/usr']
+    arguments = ['export', '--workspace', TEST_WS, *prefix_arguments(ros1_prefixes())]
     for package in cpp_harness.TEST_WS_PACKAGES:
         arguments += ['--package', package]
     for name in DEBIAN_SET:

@@ -1,11 +1,15 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """colcon_mros.ros1.definition: the names one definition file gives."""
 
+import os
+
 from colcon_mros.ros1.definition import Definition, definitions_in
+from testing.ros_paths import ros1_package_dir
 
 
 def test_a_message_file_gives_one_type():
-    definition = Definition('geometry_msgs', '/usr/share/geometry_msgs/msg/Point.msg')
+    definition = Definition('geometry_msgs',
+                            os.path.join(ros1_package_dir('geometry_msgs'), 'Point.msg'))
     assert (definition.kind, definition.name, definition.full_name) == ('msg', 'Point', 'geometry_msgs/Point')
     assert definition.type_names == ['Point']
     assert definition.key == 'geometry_msgs/msg/Point.msg'

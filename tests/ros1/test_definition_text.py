@@ -29,6 +29,7 @@ from colcon_mros.ros1.identity import compact_text
 from colcon_mros.ros1.model import gencpp_definition_text
 from colcon_mros.ros1.parse import SpecLoader
 from colcon_mros.ros1.workspace import installed_packages
+from testing.ros_paths import prefix_arguments, ros1_definitions, ros1_prefixes
 
 SEEDS = 6  # per type: binary, text and compact instances, twice
 
@@ -52,9 +53,9 @@ def _type_names():
     loader = SpecLoader(cpp_harness.search_path(), RESERVED_NAMES)
     names = []
     for package in DEBIAN_MESSAGE_PACKAGES:
-        for path in sorted(glob.glob('/usr/share/%s/msg/*.msg' % package)):
+        for path in ros1_definitions(package, 'msg'):
             names.append(loader.load_message_file(path, package).full_name)
-        for path in sorted(glob.glob('/usr/share/%s/srv/*.srv' % package)):
+        for path in ros1_definitions(package, 'srv'):
             spec = loader.load_service_file(path, package)
             names += [spec.request.full_name, spec.response.full_name]
     for package in ('mros_test', 'mros_test_base'):
@@ -76,7 +77,7 @@ def roscpp_images(tmp_path_factory):
     test_ws_services = [(p, f) for p in ('mros_test', 'mros_test_base')
                         for f in sorted(glob.glob(os.path.join(TEST_WS, 'src', p, 'srv', '*.srv')))]
     debian_services = [(p, f) for p in DEBIAN_MESSAGE_PACKAGES
-                       for f in sorted(glob.glob('/usr/share/%s/srv/*.srv' % p))]
+                       for f in ros1_definitions(p, 'srv')]
     type_set = cpp_harness.TypeSet(search_path, [n for n in names if not n.endswith(('Request', 'Response'))],
                                    debian_services + test_ws_services)
     _, program = cpp_harness.expected_bytes_program(type_set, search_path, root)
@@ -152,9 +153,10 @@ def _definition_in_header(header_path):
 
 
 def test_export_writes_the_chosen_text_into_every_header(tmp_path):
-    run_genmros('export', '--underlay', '/usr', '--type', 'nav_msgs/Odometry', '-o', str(tmp_path / 'full'))
-    run_genmros('export', '--underlay', '/usr', '--type', 'nav_msgs/Odometry', '-o', str(tmp_path / 'compact'),
-                '--definition-text', 'compact')
+    run_genmros('export', *prefix_arguments(ros1_prefixes()), '--type', 'nav_msgs/Odometry',
+                '-o', str(tmp_path / 'full'))
+    run_genmros('export', *prefix_arguments(ros1_prefixes()), '--type', 'nav_msgs/Odometry',
+                '-o', str(tmp_path / 'compact'), '--definition-text', 'compact')
     for relative in ('nav_msgs/Odometry.h', 'std_msgs/Header.h', 'geometry_msgs/PoseWithCovariance.h'):
         name = relative[:-2]
         full = _definition_in_header(str(tmp_path / 'full' / relative))
@@ -163,8 +165,9 @@ def test_export_writes_the_chosen_text_into_every_header(tmp_path):
         assert _class(name, compact)._md5sum == _class(name, full)._md5sum
         with open(str(tmp_path / 'compact' / relative)) as header:
             assert 'without comments and\n// blank lines' in header.read()
-    result = run_genmros('export', '--underlay', '/usr', '--type', 'std_msgs/Header', '-o',
-                         str(tmp_path / 'bad'), '--definition-text', 'short', check=False)
+    result = run_genmros('export', *prefix_arguments(ros1_prefixes()), '--type', 'std_msgs/Header',
+                         '-o', str(tmp_path / 'bad'), '--definition-text', 'short',
+                         check=False)
     assert result.returncode == 2 and "invalid choice: 'short'" in result.stderr
 
 
@@ -175,18 +178,18 @@ def test_cmake_module_and_make_fragment_take_the_choice(tmp_path):
     (project / 'CMakeLists.txt').write_text(
         'cmake_minimum_required(VERSION 3.10)\nproject(f CXX)\ninclude(%s/cmake/mros_generate.cmake)\n'
         'add_executable(generated main.cpp)\n'
-        'mros_generate_messages(TARGET generated TYPES std_msgs/Header PACKAGE_PATHS /usr '
+        'mros_generate_messages(TARGET generated TYPES std_msgs/Header PACKAGE_PATHS %s '
         'DEFINITION_TEXT compact)\n'
         'add_executable(imported main.cpp)\n'
         'mros_import_messages(TARGET imported EXPORT_DIR %s TYPES std_msgs/Header DEFINITION_TEXT compact)\n'
         'add_executable(bad main.cpp)\n'
         'if(BAD)\n  mros_generate_messages(TARGET bad TYPES std_msgs/Header DEFINITION_TEXT short)\nendif()\n'
-        % (REPO, tmp_path / 'export'))
+        % (REPO, ' '.join(ros1_prefixes()), tmp_path / 'export'))
     # An export dir as colcon writes it: full-text headers and the definitions.
     export = ExportDir(str(tmp_path / 'export'))
-    run_genmros('export', '--underlay', '/usr', '--package', 'std_msgs', '--only', 'headers', '-o',
-                export.include_dir)
-    export.replace_packages({'std_msgs': installed_packages(['/usr'])['std_msgs']},
+    run_genmros('export', *prefix_arguments(ros1_prefixes()), '--package', 'std_msgs',
+                '--only', 'headers', '-o', export.include_dir)
+    export.replace_packages({'std_msgs': installed_packages(ros1_prefixes())['std_msgs']},
                             installed_file(CMAKE_MODULE))
     build = tmp_path / 'build'
     subprocess.run(['cmake', '-S', str(project), '-B', str(build)], check=True, capture_output=True)
@@ -203,8 +206,9 @@ def test_cmake_module_and_make_fragment_take_the_choice(tmp_path):
     app = tmp_path / 'app'
     app.mkdir()
     (app / 'Makefile').write_text(
-        'MROS_MSG_TYPES := std_msgs/Header\nMROS_MSG_PATHS := /usr\nMROS_MSG_DEFINITION_TEXT := compact\n'
-        'include %s/cmake/genmros.mk\nall:\n\t@true\n' % REPO)
+        'MROS_MSG_TYPES := std_msgs/Header\nMROS_MSG_PATHS := %s\n'
+        'MROS_MSG_DEFINITION_TEXT := compact\ninclude %s/cmake/genmros.mk\nall:\n\t@true\n'
+        % (' '.join(ros1_prefixes()), REPO))
     subprocess.run(['make', '-C', str(app)], check=True, capture_output=True)
     assert _definition_in_header(str(app / 'include' / 'std_msgs' / 'Header.h')) == \
         'uint32 seq\ntime stamp\nstring frame_id\n'

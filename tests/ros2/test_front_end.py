@@ -9,6 +9,7 @@ import pytest
 
 from conftest import run_genmros
 from testing.ros2_messages import PACKAGE_XML
+from testing.ros_paths import prefix_arguments, ros2_prefixes
 
 
 def _package(root, name, files):
@@ -24,8 +25,9 @@ def _package(root, name, files):
 
 
 def _export(workspace, output, *arguments):
-    return run_genmros('mros2-export', '--workspace', str(workspace), '--prefix', '/usr',
-                       '-o', str(output), *arguments, check=False)
+    return run_genmros('mros2-export', '--workspace', str(workspace),
+                       *prefix_arguments(ros2_prefixes()), '-o', str(output), *arguments,
+                       check=False)
 
 
 def test_what_ros2_accepts_is_read(tmp_path):

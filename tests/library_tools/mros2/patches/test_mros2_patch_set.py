@@ -14,6 +14,7 @@ import pytest
 from colcon_mros.library_tools.mros2.patches import LIBRARY_DIRS
 from conftest import REPO, run_genmros
 from user_checkouts import MROS2_ROOT
+from testing.ros_paths import prefix_arguments, ros2_prefixes
 
 pytestmark = [pytest.mark.needs_mros2, pytest.mark.slow]
 
@@ -66,7 +67,7 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
 @pytest.fixture(scope='module')
 def export(tmp_path_factory):
     root = str(tmp_path_factory.mktemp('mros2_library_export'))
-    run_genmros('mros2-export', '--prefix', '/usr', '-o', root, *ENDPOINTS)
+    run_genmros('mros2-export', *prefix_arguments(ros2_prefixes()), '-o', root, *ENDPOINTS)
     return root
 
 
@@ -114,8 +115,8 @@ def test_the_fit_check_reads_the_checkouts_publisher(tmp_path, export):
                       'MAX_TOPICNAME_LENGTH = 64;\nconst uint8_t NUM_WRITERS_PER_PARTICIPANT = '
                       '8;\nconst uint8_t NUM_READERS_PER_PARTICIPANT = 8;\nconst uint8_t '
                       'NUM_STATELESS_WRITERS = 8;\nconst uint8_t NUM_STATELESS_READERS = 8;\n')
-    arguments = ['mros2-fit', '--prefix', '/usr', '--rtps-config', str(config), '--mros2-root',
-                 str(checkout)] + ENDPOINTS
+    arguments = ['mros2-fit', *prefix_arguments(ros2_prefixes()), '--rtps-config', str(config),
+                 '--mros2-root', str(checkout)] + ENDPOINTS
     as_it_is = run_genmros(*arguments, check=False)
     assert as_it_is.returncode == 1
     assert ('error: %s:66: the firmware: its 2 publishers need a Publisher with a writer of its '

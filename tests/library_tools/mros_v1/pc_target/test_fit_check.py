@@ -18,6 +18,7 @@ from testing.ros_graph import PYTHON
 from conftest import run_genmros
 from user_checkouts import MROS_V1_ROOT
 from settings_headers import define
+from testing.ros_paths import prefix_arguments, ros1_package_dir, ros1_prefixes
 
 pytestmark = pytest.mark.needs_mros_v1
 
@@ -124,10 +125,11 @@ def _full_text_size_of_user_type():
     msg_dir = os.path.join(MROS_V1_ROOT, 'ros_catkin_ws', 'src', 'custom_pubsub', 'msg')
     code = ('from genmsg import msg_loader, gentools\n'
             'context = msg_loader.MsgContext.create_default()\n'
-            'search = {"custom_pubsub": [%r], "std_msgs": ["/usr/share/std_msgs/msg"]}\n'
+            'search = {"custom_pubsub": [%r], "std_msgs": [%r]}\n'
             'spec = msg_loader.load_msg_by_type(context, "custom_pubsub/UserTypeTest", search)\n'
             'msg_loader.load_depends(context, spec, search)\n'
-            'print(len(gentools.compute_full_text(context, spec).encode()))\n' % msg_dir)
+            'print(len(gentools.compute_full_text(context, spec).encode()))\n'
+            % (msg_dir, ros1_package_dir('std_msgs')))
     return int(subprocess.run([PYTHON, '-c', code], capture_output=True, text=True,
                               check=True).stdout)
 
@@ -141,7 +143,8 @@ def test_ros_cpp_refuses_to_compile_where_no_genmros_check_ran(tmp_path, compile
     # aggregate it includes stops the compile, also with a compiler that has
     # no __has_include (gcc-arm-none-eabi 4.9, which mROS v1's README lists).
     include = str(tmp_path / 'include')
-    run_genmros('export', '--type', 'sensor_msgs/JointState', '-o', include, '--underlay', '/usr')
+    run_genmros('export', '--type', 'sensor_msgs/JointState', '-o', include,
+                *prefix_arguments(ros1_prefixes()))
     source = tmp_path / 'ros_like.cpp'
     # ros.cpp's first two lines.
     source.write_text('#include "ros.h"\n#include "message_headers.h"\nint main() { return 0; }\n')
