@@ -14,6 +14,7 @@ import pytest
 
 from checkout_install import checkout_install
 from conftest import REPO
+from testing.ros_paths import prefix_arguments, ros1_prefixes
 
 from colcon_mros.mros_v1.cpp import SUPPORT_HEADERS
 from fixtures.build_integration.tools import (
@@ -41,7 +42,8 @@ class Workspace:
                    self.root, check=check)
 
     def reference(self, output_dir):
-        arguments = ['--workspace', self.root, '--underlay', '/usr', '--only', 'headers']
+        arguments = (['--workspace', self.root, '--only', 'headers']
+                     + prefix_arguments(ros1_prefixes()))
         for package in EXPORTED_PACKAGES:
             arguments += ['--package', package]
         return genmros_export(output_dir, *arguments)

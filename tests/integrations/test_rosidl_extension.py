@@ -28,6 +28,7 @@ from checkout_install import checkout_install
 from colcon_mros.integrations.rosidl_generator import (MARKER_RESOURCE, MROS2_INCLUDE_ROOT,
                                                        SUPPORT_INCLUDE_DIR)
 from colcon_mros.mros2 import render
+from testing.ros_paths import ros2_prefixes
 
 # cmake and colcon builds.
 pytestmark = pytest.mark.slow
@@ -353,7 +354,7 @@ def test_ament_index_discovery_finds_the_generator(workspace, tmp_path):
         'message(STATUS "generators: ${_generators}")\n'
         'message(STATUS "extensions: ${AMENT_EXTENSIONS_rosidl_generate_idl_interfaces}")\n'
         'message(STATUS "mros2 dir: ${rosidl_generator_mros2_DIR}")\n')
-    env = dict(workspace.env, AMENT_PREFIX_PATH='%s:/usr' % REPO, CMAKE_PREFIX_PATH=REPO)
+    env = dict(workspace.env, AMENT_PREFIX_PATH=os.pathsep.join([REPO] + ros2_prefixes()), CMAKE_PREFIX_PATH=REPO)
     result = subprocess.run(
         ['cmake', '-S', str(project), '-B', str(tmp_path / 'build'),
          '-Drosidl_generator_mros2_BIN=%s' % workspace.genmros],
