@@ -240,10 +240,12 @@ def print_start_up(workspace, genmros):
     """The modules the genmros program the builds ran imports in a catkin
     run, as -X importtime sees them."""
     package = os.path.join(workspace, 'src', 'bench_msgs_01')
-    files = sorted(os.path.join(package, 'msg', name) for name in os.listdir(os.path.join(package, 'msg')))
+    files = sorted(os.path.join(package, 'msg', name)
+                   for name in os.listdir(os.path.join(package, 'msg')))
     scratch = os.path.join(workspace, 'start_up')
     include_flags = ['-I', 'bench_msgs_01:%s' % os.path.join(package, 'msg'),
-                     '-I', 'bench_msgs_00:%s' % os.path.join(workspace, 'src', 'bench_msgs_00', 'msg'),
+                     '-I', 'bench_msgs_00:%s' % os.path.join(workspace,
+                                                             'src', 'bench_msgs_00', 'msg'),
                      '-I', 'std_msgs:' + ros1_package_dir('std_msgs'),
                      '-I', 'geometry_msgs:' + ros1_package_dir('geometry_msgs')]
     commands = {

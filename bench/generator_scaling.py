@@ -91,8 +91,10 @@ def _format(timing, limit):
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
-    parser.add_argument('--baseline', metavar='CHECKOUT', help='compare with the genmros of this checkout')
-    parser.add_argument('--limit', type=int, default=60, help='seconds before a case is stopped (default: 60)')
+    parser.add_argument('--baseline', metavar='CHECKOUT',
+                        help='compare with the genmros of this checkout')
+    parser.add_argument('--limit', type=int, default=60,
+                        help='seconds before a case is stopped (default: 60)')
     options = parser.parse_args(argv)
     other = 'genmros at %s' % options.baseline if options.baseline else "genmsg's compute_md5 + full text"
     print('| case | genmros export | %s | ratio |' % other)
@@ -122,10 +124,11 @@ def main(argv=None):
             if theirs is None:
                 print('| %s | %s | n/a | - |' % (label, _format(ours, options.limit)))
                 continue
-            comparable = None not in (ours[0], theirs[0]) and 'traceback' not in (ours[1], theirs[1])
+            comparable = None not in (
+                ours[0], theirs[0]) and 'traceback' not in (ours[1], theirs[1])
             ratio = '%.2f' % (ours[0] / theirs[0]) if comparable else '-'
             print('| %s | %s | %s | %s |' % (label, _format(ours, options.limit),
-                                            _format(theirs, options.limit), ratio))
+                                             _format(theirs, options.limit), ratio))
     return 0
 
 

@@ -46,6 +46,8 @@ TALKER_APP = os.path.join(REPO, 'bench', 'mros_v1_pc')
 # (count, rate per second; 0: as fast as publish() returns)
 LATENCY = (2000, 1000)
 THROUGHPUT = (5000, 0)
+
+
 def read_times(path):
     times = {}
     with open(path) as lines:
@@ -77,6 +79,7 @@ def run_once(graph, talker_argv, listener_argv, scratch, tag, talker_env=None):
 
 def latency_stats(send, receive):
     latencies = sorted((receive[s] - send[s]) / 1000.0 for s in receive if s in send)
+
     def percentile(p):
         return latencies[min(len(latencies) - 1, int(p / 100.0 * len(latencies)))]
     return {'p50': percentile(50), 'p90': percentile(90), 'p99': percentile(99),

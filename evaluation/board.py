@@ -130,7 +130,8 @@ def _direction(direction):
 def _connection_header(graph, identity):
     """What a TCPROS subscriber gets from the board's publisher of /mros_str,
     held against rospy's PersonalData."""
-    code, message, slave_uri = xmlrpc.client.ServerProxy(graph.uri).lookupNode('/check', BOARD_NODE)
+    code, message, slave_uri = xmlrpc.client.ServerProxy(
+        graph.uri).lookupNode('/check', BOARD_NODE)
     if code != 1:
         return Check('TCPROS connection header', '', 'lookupNode: %s' % message)
     md5sum, definition = identity['mros_test/PersonalData']
@@ -146,7 +147,8 @@ def _connection_header(graph, identity):
         problem = "message_definition is not rospy's"
     return Check('TCPROS connection header of the board',
                  'type mros_test/PersonalData, md5sum %s, message_definition %d bytes, '
-                 "both rospy's" % (header.get('md5sum'), len(header.get('message_definition', ''))),
+                 "both rospy's" % (header.get('md5sum'), len(
+                     header.get('message_definition', ''))),
                  problem)
 
 

@@ -221,7 +221,8 @@ def run_ros2(steps, build_root):
             target)
     linux = programs['arm-linux-gnueabihf']
     if linux is None:
-        steps.skip('ROS 2: the board under qemu-arm with rclpy nodes', 'its firmware did not build')
+        steps.skip('ROS 2: the board under qemu-arm with rclpy nodes',
+                   'its firmware did not build')
         return
     steps.run("ROS 2: the fit check's verdict (genmros mros2-fit, the board's endpoints)",
               ros2.fit_verdict, workspace, linux)

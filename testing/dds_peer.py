@@ -188,9 +188,9 @@ class Receiver:
                 if remaining <= 0 or None in self._stdout:
                     self.popen.poll()
                     raise PeerError('dds_raw_peer receiving %s: %s within %.0f s '
-                                      '(exit status %s); received %d sample(s); log:\n%s'
-                                      % (self.description, what, timeout, self.popen.returncode,
-                                         len(self._received()), self.log()))
+                                    '(exit status %s); received %d sample(s); log:\n%s'
+                                    % (self.description, what, timeout, self.popen.returncode,
+                                       len(self._received()), self.log()))
                 self._changed.wait(min(remaining, 0.1))
 
     def _received(self):
@@ -282,6 +282,6 @@ def send(program, topic, type_name, samples, domain, timeout=DELIVERY_TIMEOUT, r
         _kill(popen)
     if popen.returncode != 0 or stdout.decode().split() != ['sent', str(len(samples))]:
         raise PeerError('dds_raw_peer sending %d sample(s) on %s (%s) in domain %d: exit status '
-                          '%d, output %r; log:\n%s'
-                          % (len(samples), topic, type_name, domain, popen.returncode,
-                             stdout.decode(), stderr.decode(errors='replace')))
+                        '%d, output %r; log:\n%s'
+                        % (len(samples), topic, type_name, domain, popen.returncode,
+                           stdout.decode(), stderr.decode(errors='replace')))

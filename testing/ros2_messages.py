@@ -150,7 +150,7 @@ def rosbags_message(typestore, message, value):
         elif member.element == 'number' and member.container:
             dtype = {'boolean': numpy.bool_, 'float': numpy.float32, 'double': numpy.float64,
                      'octet': numpy.int8, 'char': numpy.uint8}.get(member.number_type,
-                                                                    member.number_type)
+                                                                   member.number_type)
             item = numpy.array(item, dtype=dtype)
         fields[member.name] = item
     return typestore.types[message.full_name](**fields)

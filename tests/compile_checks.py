@@ -9,7 +9,8 @@ import re
 
 import pytest
 
-STRICT_FLAGS = ['-Wall', '-Wextra', '-Wshadow', '-pedantic', '-Werror', '-fno-exceptions', '-fno-rtti']
+STRICT_FLAGS = ['-Wall', '-Wextra', '-Wshadow',
+                '-pedantic', '-Werror', '-fno-exceptions', '-fno-rtti']
 LANGUAGE_MODES = ['gnu++98', 'c++11', 'c++14', 'c++17']
 # The CPUs of mROS boards: GR-PEACH's Cortex-A9 (its Makefile's line) and
 # two Cortex-M cores.

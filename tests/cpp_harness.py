@@ -83,11 +83,13 @@ def fill_functions(type_set):
     """C++ templates ``fill_<pkg>__<Type>(M&, harness::Random&)``, one per message."""
     lines = ['#include "harness_random.h"', '']
     for full_name in type_set.messages:
-        lines.append('template <class M> void fill_%s(M& m, harness::Random& r);' % mangle(full_name))
+        lines.append('template <class M> void fill_%s(M& m, harness::Random& r);' %
+                     mangle(full_name))
     lines.append('')
     for full_name in type_set.messages:
         spec = type_set.spec(full_name)
-        lines.append('template <class M> void fill_%s(M& m, harness::Random& r) {' % mangle(full_name))
+        lines.append(
+            'template <class M> void fill_%s(M& m, harness::Random& r) {' % mangle(full_name))
         lines.append('  (void)m; (void)r;')
         for field in spec.parsed_fields():
             member = 'm.%s' % field.name
@@ -177,13 +179,15 @@ def _side(type_set, namespace, prelude, templates, parses):
         '  return {};', '}', '']
     if parses:
         lines += ['int32_t reencode(int type, const uint8_t* input, uint32_t size, std::vector<uint8_t>& out) {',
-                  _dispatch(type_set, lambda n: 'return reencode<%s>(input, size, out);' % cpp_name(n)),
+                  _dispatch(type_set, lambda n: 'return reencode<%s>(input, size, out);' %
+                            cpp_name(n)),
                   '  return -2;', '}', '']
     lines += ['Identity identity(int type) {',
               _dispatch(type_set, lambda n: 'return identity<%s>();' % cpp_name(n)),
               '  return {};', '}', '',
               'Identity service_identity(int service) {', '  switch (service) {']
-    lines += ['    case %d: return service_identity<%s>();' % (i, cpp_name(s)) for i, s in enumerate(type_set.services)]
+    lines += ['    case %d: return service_identity<%s>();' % (i, cpp_name(s))
+              for i, s in enumerate(type_set.services)]
     lines += ['  }', '  return {};', '}', '}  // namespace %s' % namespace, '']
     return '\n'.join(lines)
 
@@ -217,10 +221,11 @@ def type_table(type_set):
     return '\n'.join(
         ['static const char* const kTypes[] = {'] +
         ['  "%s",' % name for name in type_set.messages] + ['};',
-         'static const int kTypeCount = %d;' % len(type_set.messages),
-         'static const char* const kServices[] = {'] +
+                                                            'static const int kTypeCount = %d;' % len(
+                                                                type_set.messages),
+                                                            'static const char* const kServices[] = {'] +
         ['  "%s",' % name for name in type_set.services] + ['  0', '};',
-         'static const int kServiceCount = %d;' % len(type_set.services), ''])
+                                                            'static const int kServiceCount = %d;' % len(type_set.services), ''])
 
 
 def compile_object(source, build_dir, include_dirs, strict=True, flags=()):
@@ -309,8 +314,8 @@ def expected_bytes_program(type_set, search_path, root, for_targets=False):
     objects = [
         compile_object(sources['roscpp_side.cpp'], directory, [gencpp, directory], strict=False),
         compile_object(os.path.join(TARGETS_DIR, 'expected_bytes.cpp'), directory,
-                                   [directory, TARGETS_DIR]),
+                       [directory, TARGETS_DIR]),
     ]
     program = link_program(objects, os.path.join(directory, 'expected_bytes'),
-                                       libraries=ROSCPP_LIBRARIES)
+                           libraries=ROSCPP_LIBRARIES)
     return sources, program

@@ -3,7 +3,6 @@
 nothing in the package, the test support, the main job, the benchmarks and
 the tests, as colcon-core's suite holds its own code."""
 
-import os
 import subprocess
 import sys
 

@@ -25,7 +25,7 @@ class UserCheckout:
         if not self.root:
             return 'needs an %s checkout: set %s (docs/testing.md)' % (self.name, self.variable)
         return 'no %s checkout at %s=%s (no %s)' % (self.name, self.variable, self.root,
-                                                   self.required_file)
+                                                    self.required_file)
 
 
 MROS_V1 = UserCheckout('MROS_V1_ROOT', 'needs_mros_v1', 'mROS v1', 'mros-lib/Makefile.m')

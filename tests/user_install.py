@@ -34,10 +34,12 @@ class Install:
         environment += ['%s=%s' % item for item in sorted(variables.items())]
         prefix = ['env', '-i'] + environment
         if self.as_nobody:
-            prefix = ['setpriv', '--reuid=%d' % NOBODY, '--regid=%d' % NOBODY, '--clear-groups'] + prefix
+            prefix = ['setpriv', '--reuid=%d' % NOBODY, '--regid=%d' %
+                      NOBODY, '--clear-groups'] + prefix
         result = subprocess.run(prefix + command, cwd=cwd, capture_output=True, text=True)
         if check:
-            assert result.returncode == 0, ' '.join(command) + '\n' + (result.stdout + result.stderr)[-3000:]
+            assert result.returncode == 0, ' '.join(
+                command) + '\n' + (result.stdout + result.stderr)[-3000:]
         return result
 
 
@@ -63,5 +65,6 @@ def install_as_nobody():
     source = copy_sources(root)
     subprocess.run(['chown', '-R', '%d:%d' % (NOBODY, NOBODY), root], check=True)
     install = Install(root, home, os.path.join(home, '.local'), as_nobody=True)
-    install.run(['/usr/bin/python3', '-m', 'pip', 'install', '--user'] + pip_flags() + [source], root)
+    install.run(['/usr/bin/python3', '-m', 'pip', 'install',
+                '--user'] + pip_flags() + [source], root)
     return install

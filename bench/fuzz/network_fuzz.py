@@ -189,7 +189,7 @@ class NodeHealth:
             code, _, _ = proxy.requestTopic('/network_fuzz', '/back/String', [['TCPROS']])
         except (OSError, xmlrpc.client.Error) as error:
             return 'the node did not answer requestTopic within %.0f s: %s' % (ANSWER_TIMEOUT,
-                                                                             error)
+                                                                               error)
         return None if code == 1 else 'requestTopic answered %r' % code
 
     def bounded(self):
@@ -393,7 +393,8 @@ class Fuzzer:
         body = xmlrpc.client.dumps(params, method).encode()
         kind = self.rng.random()
         if kind < 0.45:
-            data = http_post(self.mutator.mutate(body, self.xml_tokens), '%s:%d' % self.slave_address)
+            data = http_post(self.mutator.mutate(body, self.xml_tokens),
+                             '%s:%d' % self.slave_address)
         elif kind < 0.6:
             data = http_post(body, '%s:%d' % self.slave_address,
                              self.rng.choice(INTERESTING_WORDS[:12]))

@@ -167,7 +167,7 @@ def main():
     for row in compiled:
         errors = '; '.join(e for e in (row[3], row[6]) if e)
         print('| %s | %s | %s | %s | %s | %s |' % (row[0], row[1], row[2], row[4], row[5],
-                                                    ('`%s`' % errors) if errors else ''))
+                                                   ('`%s`' % errors) if errors else ''))
     for name, error in sorted(failed.items()):
         print('\nmros2\'s generator failed on %s: %s' % (name, error))
     return 0

@@ -121,7 +121,8 @@ def main():
         print('| ' + ' | '.join(cells) + ' |')
 
     if shutil.which('valgrind'):
-        print_instruction_table(arguments.build_dir, [(name, sides) for name, _, _, sides, _ in rows[::2]])
+        print_instruction_table(arguments.build_dir, [(
+            name, sides) for name, _, _, sides, _ in rows[::2]])
 
 
 def print_instruction_table(build_dir, instance_sides):

@@ -64,5 +64,6 @@ def test_prune_export_removes_what_only_a_dropped_claim_named(tmp_path):
 def test_prune_export_of_a_missing_dir_is_one_line(tmp_path):
     result = run_genmros('prune-export', str(tmp_path / 'nowhere'), check=False)
     assert result.returncode == 1
-    assert result.stderr == 'genmros: error: %s: export dir is not a directory\n' % (tmp_path / 'nowhere')
+    assert result.stderr == 'genmros: error: %s: export dir is not a directory\n' % (
+        tmp_path / 'nowhere')
     assert not os.path.exists(tmp_path / 'nowhere')

@@ -24,10 +24,12 @@ def _package(root, name, files):
 
 def test_colcon_export_lists_every_importable_type(tmp_path):
     sources = str(tmp_path / 'src')
-    demo = _package(sources, 'demo', {'msg/Lamp.msg': 'uint8 on\n', 'srv/Switch.srv': 'bool on\n---\n'})
+    demo = _package(sources, 'demo', {'msg/Lamp.msg': 'uint8 on\n',
+                    'srv/Switch.srv': 'bool on\n---\n'})
     export = ExportDir(str(tmp_path / 'export'))
     export.replace_packages({'demo': demo}, MODULE)
-    assert export.types() == ['demo/Lamp', 'demo/SwitchRequest', 'demo/SwitchResponse', 'demo/Switch']
+    assert export.types() == ['demo/Lamp', 'demo/SwitchRequest',
+                              'demo/SwitchResponse', 'demo/Switch']
     with open(export.cmake_file) as stream:
         cmake = stream.read()
     assert 'set(MROS_EXPORT_TYPES\n  demo/Lamp\n  demo/SwitchRequest\n  demo/SwitchResponse\n  demo/Switch\n)' \
@@ -51,7 +53,8 @@ def test_catkin_claims_remove_what_no_definition_contains(tmp_path):
     color = Definition('demo', os.path.join(sources, 'demo', 'msg', 'Color.msg'))
     stamp = Definition('demo', os.path.join(sources, 'demo', 'msg', 'Stamp.msg'))
     export = ExportDir(str(tmp_path / 'export'))
-    export.add_generated(lamp, {'demo/Lamp.h': 'lamp\n', 'demo/Color.h': 'color\n'}, [color], MODULE)
+    export.add_generated(lamp, {'demo/Lamp.h': 'lamp\n',
+                         'demo/Color.h': 'color\n'}, [color], MODULE)
     export.add_generated(stamp, {'demo/Stamp.h': 'stamp\n'}, [], MODULE)
     foreign = tmp_path / 'export' / 'include' / 'demo' / 'Notes.h'
     foreign.write_text('by hand\n')

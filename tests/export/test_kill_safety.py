@@ -84,7 +84,8 @@ def _contents(root):
 def _temporaries(root):
     found = []
     for directory, subdirectories, names in os.walk(root):
-        found.extend(os.path.join(directory, n) for n in names + subdirectories if '.genmros-' in n)
+        found.extend(os.path.join(directory, n)
+                     for n in names + subdirectories if '.genmros-' in n)
     return found
 
 
@@ -112,7 +113,8 @@ def _median_duration(workspace, old, tmp_path):
     durations = []
     for run in range(3):
         started = time.monotonic()
-        run_genmros(*_export_arguments(workspace, shutil.copytree(old, str(tmp_path / ('timing%d' % run)))))
+        run_genmros(*_export_arguments(workspace,
+                    shutil.copytree(old, str(tmp_path / ('timing%d' % run)))))
         durations.append(time.monotonic() - started)
     return sorted(durations)[1]
 
@@ -148,7 +150,8 @@ def test_random_kills_leave_old_or_new(exports, tmp_path):
 
 
 @pytest.mark.parametrize('phase, expected', [
-    ('rendering', 'old'), ('linking-unchanged', 'old'), ('writing-changed', 'old'), ('before-exchange', 'old'),
+    ('rendering', 'old'), ('linking-unchanged',
+                           'old'), ('writing-changed', 'old'), ('before-exchange', 'old'),
     ('after-exchange', 'new')])
 def test_kill_at_each_phase_of_an_export(exports, tmp_path, phase, expected):
     workspace, old, new = exports
@@ -167,9 +170,11 @@ def test_kill_at_each_phase_of_an_export(exports, tmp_path, phase, expected):
 
 def test_generator_mode_kill_between_renames_leaves_no_temporary(tmp_path):
     package = str(tmp_path / 'src' / 'kill_ws')
-    write_tree(package, {'package.xml': package_xml('kill_ws'), 'srv/Ask.srv': 'int32 a\n---\nint32 b\n'})
+    write_tree(package, {'package.xml': package_xml('kill_ws'),
+               'srv/Ask.srv': 'int32 a\n---\nint32 b\n'})
     output = str(tmp_path / 'include' / 'kill_ws')
-    arguments = ['generate', os.path.join(package, 'srv', 'Ask.srv'), '-p', 'kill_ws', '-o', output]
+    arguments = ['generate', os.path.join(
+        package, 'srv', 'Ask.srv'), '-p', 'kill_ws', '-o', output]
     result = subprocess.run([sys.executable, '-c', LAUNCHER, 'between-renames'] + arguments,
                             cwd=REPO, capture_output=True, text=True)
     assert result.returncode == -signal.SIGKILL, result.stderr

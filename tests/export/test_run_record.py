@@ -79,7 +79,8 @@ def test_a_file_not_written_by_genmros_is_no_record(tmp_path):
 
 
 def _make_would_remake(tmp_path, record_path):
-    recipe = _write(tmp_path / 'recipe.mk', '%s:\n\t@echo remade\n' % os.path.basename(record_path))
+    recipe = _write(tmp_path / 'recipe.mk', '%s:\n\t@echo remade\n' %
+                    os.path.basename(record_path))
     result = subprocess.run(['make', '-n', '-f', os.path.basename(record_path), '-f', recipe,
                              os.path.basename(record_path)], cwd=str(tmp_path),
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)

@@ -58,7 +58,8 @@ def test_uninstall_leaves_catkin_and_colcon_working_and_setup_reinstalls(tmp_pat
 
         catkin = _ordinary_workspace(tmp_path / 'catkin_ws')
         _run(['catkin_make', '-C', catkin], catkin, env=environment)
-        assert os.path.isfile(os.path.join(catkin, 'devel', 'include', 'mros_test_base', 'Vector3i.h'))
+        assert os.path.isfile(os.path.join(catkin, 'devel', 'include',
+                              'mros_test_base', 'Vector3i.h'))
         assert not os.path.exists(os.path.join(catkin, 'devel', 'share', 'genmros'))
 
         colcon = _ordinary_workspace(tmp_path / 'colcon_ws')
@@ -82,7 +83,8 @@ def test_a_user_install_registers_the_generator_through_its_catkin_prefix(tmp_pa
         _run([os.path.join(REPO, 'scripts', 'uninstall.sh')], REPO)
         prefix = user.run(['genmros', 'catkin-prefix'], user.root).stdout.strip()
         assert prefix == os.path.join(user.prefix, 'share', 'genmros', 'catkin_prefix')
-        header = os.path.join('devel', 'share', 'genmros', 'include', 'mros_test_base', 'Vector3i.h')
+        header = os.path.join('devel', 'share', 'genmros', 'include',
+                              'mros_test_base', 'Vector3i.h')
         # docs/install.md's line, run where ~/.local/bin is not on PATH yet.
         registration = _docs_catkin_prefix_line()
         for registered in (True, False):

@@ -250,9 +250,12 @@ def test_export_dir_from_the_environment_holds_until_turned_off(tmp_path):
 
     run(build + ['--cmake-args', '-DMROS_EXPORT_DIR='], workspace)
     replace_message('Added', 'Later')
-    log = run(build + ['--force-cmake'], workspace, env=user_environment(MROS_EXPORT_DIR=export_dir)).stdout
-    assert "genmros: MROS_EXPORT_DIR in the environment ('%s') is ignored" % export_dir in unwrapped(log)
-    assert os.path.isfile(os.path.join(workspace, 'devel', GENMROS_INCLUDE, 'mros_test_base', 'Later.h'))
+    log = run(build + ['--force-cmake'], workspace,
+              env=user_environment(MROS_EXPORT_DIR=export_dir)).stdout
+    assert "genmros: MROS_EXPORT_DIR in the environment ('%s') is ignored" % export_dir in unwrapped(
+        log)
+    assert os.path.isfile(os.path.join(workspace, 'devel',
+                          GENMROS_INCLUDE, 'mros_test_base', 'Later.h'))
     assert sorted(os.listdir(exported)) == ['Added.h', 'Vector3i.h']
 
 

@@ -156,7 +156,8 @@ def test_type_no_longer_contained_leaves_the_export_dir(workspace):
 def test_type_of_a_deleted_msg_leaves_the_export_dir(workspace):
     with open(workspace.source('mros_test', 'msg', 'Painted.msg'), 'w') as stream:
         stream.write('std_msgs/ColorRGBA paint\n')
-    workspace.edit(os.path.join('mros_test', 'CMakeLists.txt'), '  Empty.msg\n', '  Empty.msg\n  Painted.msg\n')
+    workspace.edit(os.path.join('mros_test', 'CMakeLists.txt'),
+                   '  Empty.msg\n', '  Empty.msg\n  Painted.msg\n')
     workspace.build()
     assert COLOR_RGBA <= _exported(workspace)
     os.remove(workspace.source('mros_test', 'msg', 'Painted.msg'))
@@ -166,10 +167,12 @@ def test_type_of_a_deleted_msg_leaves_the_export_dir(workspace):
     assert not COLOR_RGBA & exported
     assert os.path.join('include', 'mros_test', 'Painted.h') not in exported
     assert STILL_NEEDED <= exported
-    assert 'genmros: removed %s' % os.path.join(workspace.export_dir, 'include', 'std_msgs', 'ColorRGBA.h') in log
+    assert 'genmros: removed %s' % os.path.join(
+        workspace.export_dir, 'include', 'std_msgs', 'ColorRGBA.h') in log
 
 
-EIGHT_MESSAGES = {'msg/M%d.msg' % index: 'uint32 value_%d\nstring label\n' % index for index in range(8)}
+EIGHT_MESSAGES = {'msg/M%d.msg' %
+                  index: 'uint32 value_%d\nstring label\n' % index for index in range(8)}
 EIGHT_MESSAGES['msg/M4.msg'] = 'M3 inner\nuint32 value_4\n'  # M4 contains M3
 EIGHT_CMAKE = '''cmake_minimum_required(VERSION 3.0.2)
 project(eight)

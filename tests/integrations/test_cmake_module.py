@@ -204,16 +204,17 @@ def test_import_fails_at_configure_time_without_an_export(firmware, tmp_path):
     assert ("EXPORT_DIR '%s' holds no genmros export" % empty) in unwrapped(result.stdout)
 
 
-
 def test_import_from_a_catkin_export_of_types_that_nest_installed_ones(firmware, catkin_export):
     # NestedTypes holds a std_msgs/Header and geometry_msgs types: the catkin
     # export carries their headers and definitions, so no ROS is needed here.
     for package in ('std_msgs', 'geometry_msgs'):
         assert os.path.isfile(os.path.join(catkin_export, 'share', package, 'package.xml'))
     assert os.path.isfile(os.path.join(catkin_export, 'include', 'std_msgs', 'Header.h'))
-    firmware.configure(MROS_MODE='import', MROS_EXPORT_DIR=catkin_export, FIRMWARE_TYPES='mros_test/NestedTypes')
+    firmware.configure(MROS_MODE='import', MROS_EXPORT_DIR=catkin_export,
+                       FIRMWARE_TYPES='mros_test/NestedTypes')
     firmware.build()
-    assert firmware.output()['md5'] == genmsg_md5('mros_test/NestedTypes', search_path_of(TEST_WS_SRC))
+    assert firmware.output()['md5'] == genmsg_md5(
+        'mros_test/NestedTypes', search_path_of(TEST_WS_SRC))
 
 
 CROSS_TOOLCHAIN = '''\
@@ -267,7 +268,8 @@ def test_generate_bounded_storage_follows_its_options_file(firmware, workspace, 
     firmware.build()
     # Exact: 4 + 10 and 4 + 20 for the strings, uint16 age, int32 score.
     assert firmware.output()['PUB_MSG_MAX_SIZE'] == '44'
-    header = os.path.join(firmware.build_dir, 'mros_messages', 'firmware', 'mros_test', 'PersonalData.h')
+    header = os.path.join(firmware.build_dir, 'mros_messages',
+                          'firmware', 'mros_test', 'PersonalData.h')
     with open(header) as stream:
         assert 'mros::bounded_string<10> first_name;' in stream.read()
     _bounds_file(tmp_path, 30)
@@ -284,7 +286,8 @@ def test_import_bounded_storage_generates_its_own_headers(firmware, catkin_expor
                                        'PersonalData.h'))
     # The export's heap headers are not on the firmware's include path.
     flags = _makefiles(firmware, 'flags.make')
-    assert 'mros_messages/firmware' in flags and os.path.join(catkin_export, 'include') not in flags
+    assert 'mros_messages/firmware' in flags and os.path.join(
+        catkin_export, 'include') not in flags
 
 
 @pytest.mark.parametrize('cache, expected', [
@@ -298,7 +301,8 @@ def test_import_bounded_storage_generates_its_own_headers(firmware, catkin_expor
      'bounded uses'),
 ])
 def test_bad_storage_arguments_fail_the_configure_step(firmware, workspace, cache, expected):
-    result = firmware.configure(check=False, MROS_PACKAGE_PATHS=os.path.join(workspace, 'src'), **cache)
+    result = firmware.configure(
+        check=False, MROS_PACKAGE_PATHS=os.path.join(workspace, 'src'), **cache)
     assert result.returncode != 0
     assert expected in unwrapped(result.stdout)
 
@@ -337,7 +341,7 @@ def _set_request_buffer(packet_config, size):
 
 
 def test_the_fit_check_stops_configure_and_build_with_the_setting_to_change(firmware, workspace,
-                                                                           tmp_path):
+                                                                            tmp_path):
     settings = _settings_headers(tmp_path, 200)
     cache = dict(MROS_PACKAGE_PATHS=os.path.join(workspace, 'src'), MROS_V1_SETTINGS=settings)
     result = firmware.configure(check=False, **cache)

@@ -47,7 +47,8 @@ def test_the_versions_are_debians_and_a_newer_one(colcons):
 def test_build_exports_with_the_flag_and_only_with_it(colcons, version, tmp_path):
     python, environment = colcons[version]
     colcon = [python, '-m', 'colcon']
-    assert '--mros-export DIR' in run(colcon + ['build', '--help'], str(tmp_path), environment).stdout
+    assert '--mros-export DIR' in run(colcon + \
+                                      ['build', '--help'], str(tmp_path), environment).stdout
     workspace = str(tmp_path / 'ws')
     shutil.copytree(os.path.join(TEST_WS, 'src', 'mros_test_base'),
                     os.path.join(workspace, 'src', 'mros_test_base'))

@@ -180,7 +180,8 @@ def test_the_export_dirs_mros2_half_is_refused_naming_its_parent(workspace, tmp_
 def test_a_board_config_too_small_stops_the_configure_step(workspace):
     """The fit check runs in mros2_import_messages(); the config is a
     configure dependency, so editing it configures again."""
-    workspace.write_config(RTPS_CONFIG.replace('MAX_TYPENAME_LENGTH = 40', 'MAX_TYPENAME_LENGTH = 30'))
+    workspace.write_config(RTPS_CONFIG.replace(
+        'MAX_TYPENAME_LENGTH = 40', 'MAX_TYPENAME_LENGTH = 30'))
     try:
         result = run(['cmake', '--build', os.path.join(workspace.firmware, 'build')],
                      workspace.root, check=False)

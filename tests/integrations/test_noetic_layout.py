@@ -96,7 +96,8 @@ def noetic(tmp_path_factory):
 
 
 def test_before_sourcing_genmros_says_to_source_and_writes_nothing(noetic, tmp_path):
-    result = noetic.run('genmros export --type std_msgs/NoeticOnly -o out', str(tmp_path), sourced=False)
+    result = noetic.run('genmros export --type std_msgs/NoeticOnly -o out',
+                        str(tmp_path), sourced=False)
     assert result.returncode == 1
     assert result.stderr == (
         'genmros: error: %s cannot import genmsg; install or source genmsg (Debian: apt-get install '

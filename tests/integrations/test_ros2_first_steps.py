@@ -21,7 +21,6 @@
 import os
 import re
 import shutil
-import subprocess
 
 import pytest
 
@@ -122,7 +121,8 @@ def _assert_humble_python(workspace, environment, source):
     result = run(['bash', '-c', source + 'exec python3 -W ignore -c "$0"', script], workspace,
                  environment)
     files = result.stdout.split()
-    assert len(files) == 3 and files[2].endswith(os.path.join('rosidl_cmake', '__init__.py')), files
+    assert len(files) == 3 and files[2].endswith(
+        os.path.join('rosidl_cmake', '__init__.py')), files
     for path in files:
         assert os.path.realpath(path).startswith(os.path.realpath(HUMBLE)), path
 

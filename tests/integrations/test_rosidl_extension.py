@@ -354,7 +354,8 @@ def test_ament_index_discovery_finds_the_generator(workspace, tmp_path):
         'message(STATUS "generators: ${_generators}")\n'
         'message(STATUS "extensions: ${AMENT_EXTENSIONS_rosidl_generate_idl_interfaces}")\n'
         'message(STATUS "mros2 dir: ${rosidl_generator_mros2_DIR}")\n')
-    env = dict(workspace.env, AMENT_PREFIX_PATH=os.pathsep.join([REPO] + ros2_prefixes()), CMAKE_PREFIX_PATH=REPO)
+    env = dict(workspace.env, AMENT_PREFIX_PATH=os.pathsep.join(
+        [REPO] + ros2_prefixes()), CMAKE_PREFIX_PATH=REPO)
     result = subprocess.run(
         ['cmake', '-S', str(project), '-B', str(tmp_path / 'build'),
          '-Drosidl_generator_mros2_BIN=%s' % workspace.genmros],

@@ -46,7 +46,7 @@ def _check_echo(corpus, instances, references, echoed):
     for (index, _), reference, result in zip(instances, references, echoed):
         name = corpus.messages[index].full_name
         assert not result.refused, '%s: the checked copyFromBuf refused %s' % (name,
-                                                                                reference.hex())
+                                                                               reference.hex())
         assert result.raw == reference, '%s: wrote %s, reference %s' % (
             name, result.raw.hex(), reference.hex())
         assert result.whole == _padded(reference), name

@@ -130,7 +130,7 @@ def test_types_alone_skip_the_topic_rules_and_say_what_was_not_checked(tmp_path)
 
 def test_the_receive_limit_is_read_from_the_ports_setting(tmp_path):
     options = _write(tmp_path / 'port' / 'lwipopts.h', '#define PBUF_POOL_BUFSIZE 1024\n'
-                                                         '#define RECEIVE_BUFFER_SIZE 64\n')
+                     '#define RECEIVE_BUFFER_SIZE 64\n')
     fit = _fit(tmp_path, [], ['state:%sBasicTypes' % TIF],
                config=CONFIG.replace('= 40;', '= 64;'), limit=options + ':RECEIVE_BUFFER_SIZE')
     assert fit.misfits == [

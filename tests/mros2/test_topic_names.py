@@ -60,7 +60,7 @@ def test_a_bad_name_is_one_line():
 
 @pytest.mark.parametrize('subcommand', ['mros2-export', 'mros2-fit'])
 def test_genmros_refuses_every_bad_name_at_once_and_writes_nothing(tmp_path, subcommand,
-                                                                    ros2_prefixes):
+                                                                   ros2_prefixes):
     config = tmp_path / 'config.h'
     config.write_text('const uint8_t MAX_TYPENAME_LENGTH = 64;\n')
     output = tmp_path / 'out'

@@ -218,7 +218,8 @@ def test_heap_storage_says_which_types_have_no_maximum_and_why(tmp_path):
 
 def test_package_options_apply_to_bounded_exports_only(tmp_path):
     workspace = tmp_path / 'ws' / 'src'
-    shutil.copytree(os.path.join(TEST_WS, 'src', 'mros_test_base'), str(workspace / 'mros_test_base'))
+    shutil.copytree(os.path.join(TEST_WS, 'src', 'mros_test_base'),
+                    str(workspace / 'mros_test_base'))
     _options(workspace / 'mros_test_base' / 'msg' / 'genmros.options',
              'Labeled.label max_size:8\nLabeled.weights max_count:3\n')
     firmware = _options(tmp_path / 'firmware.options', '* max_size:40 max_count:9\n')
@@ -234,10 +235,12 @@ def test_package_options_apply_to_bounded_exports_only(tmp_path):
 
 
 @pytest.mark.parametrize('text, line, problem', [
-    ('mros_test/PersonalData.first_name max_size:0\n', 1, 'max_size must be a positive integer, not \'0\''),
+    ('mros_test/PersonalData.first_name max_size:0\n', 1,
+     'max_size must be a positive integer, not \'0\''),
     ('\n# comment\nmros_test/PersonalData.first_name max_size:-3\n', 3,
      "max_size must be a positive integer, not '-3'"),
-    ('mros_test/PersonalData.first_name max_size:ten\n', 1, "max_size must be a positive integer, not 'ten'"),
+    ('mros_test/PersonalData.first_name max_size:ten\n',
+     1, "max_size must be a positive integer, not 'ten'"),
     ('mros_test/PersonalData.first_name max_length:10\n', 1,
      "unknown option 'max_length:10' (expected max_size:N or max_count:N)"),
     ('mros_test/PersonalData.first_name\n', 1, "'mros_test/PersonalData.first_name' sets no bound "
@@ -247,7 +250,8 @@ def test_package_options_apply_to_bounded_exports_only(tmp_path):
     ('mros_test/Nobody.first_name max_size:3\n', 1, "unknown type 'mros_test/Nobody'"),
     ('mros_test/PersonalData.middle_name max_size:3\n', 1,
      "type 'mros_test/PersonalData' has no field 'middle_name'"),
-    ('mros_test/PersonalData.age max_size:3\n', 1, "max_size bounds strings; 'mros_test/PersonalData.age' is uint16"),
+    ('mros_test/PersonalData.age max_size:3\n', 1,
+     "max_size bounds strings; 'mros_test/PersonalData.age' is uint16"),
     ('mros_test/ArrayTypes.fixed_bytes max_count:3\n', 1,
      "max_count bounds variable arrays; 'mros_test/ArrayTypes.fixed_bytes' is uint8[4]"),
     ('mros_test/PersonalData.first_name max_count:3\n', 1,
@@ -265,7 +269,8 @@ def test_bad_options_are_refused_with_their_line(tmp_path, text, line, problem):
 
 
 def test_a_field_without_a_bound_is_refused_at_its_definition(tmp_path):
-    options = _options(tmp_path / 'partial.options', 'mros_test/PersonalData.first_name max_size:8\n')
+    options = _options(tmp_path / 'partial.options',
+                       'mros_test/PersonalData.first_name max_size:8\n')
     output = tmp_path / 'include'
     result = run_genmros('export', '--workspace', TEST_WS, '--type', 'mros_test/PersonalData', '-o', str(output),
                          *prefix_arguments(ros1_prefixes()), '--storage', 'bounded',

@@ -37,7 +37,8 @@ def test_fields_take_the_containers_of_their_bounds(tmp_path):
         'std::vector<double>']
     options = tmp_path / 'bounds.options'
     options.write_text('* max_size:8 max_count:2\n')
-    bounded, _ = _message(tmp_path / 'b', text, storage_for('bounded', [str(options)], search_path))
+    bounded, _ = _message(tmp_path / 'b', text,
+                          storage_for('bounded', [str(options)], search_path))
     assert [field_cpp_type(f) for f in bounded.fields] == [
         'mros::bounded_string<8>', 'mros::bounded_vector<mros::bounded_string<8>, 2>',
         'mros::array<int32_t, 3>', 'std_msgs::Header', 'mros::bounded_vector<double, 2>']

@@ -30,8 +30,6 @@ PACKET_CONFIG = os.path.join(MROS_V1_ROOT, 'mros-lib', 'mros-src', 'packet', 'ci
                              'kinetic', 'mros_packet_config.h')
 
 
-
-
 def _messages(*type_names, storage='heap', option_files=()):
     return firmware_messages(type_names, [TEST_WS] + ros1_prefixes(), storage, option_files)
 
@@ -111,7 +109,8 @@ def test_the_publishing_blocks_need_a_frame_slot_each_where_the_library_passes_n
     # The small settings' two publishing pools hold 16 + 8 blocks, within
     # on-board delivery's 32 slots; with 17 + 16 there is one block too many.
     messages = _messages('std_msgs/String')
-    assert Fit(messages, read_settings(header_paths(small_settings())), frame_table=True).misfits == []
+    assert Fit(messages, read_settings(header_paths(small_settings())),
+               frame_table=True).misfits == []
     settings = header_paths(small_settings(tmp_path / 'more',
                                            ROS_INNER_TOPIC_PUBLISHER_MEMPOOL1_QUELEN=17,
                                            ROS_INNER_TOPIC_PUBLISHER_MEMPOOL2_QUELEN=16))

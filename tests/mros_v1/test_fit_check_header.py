@@ -62,7 +62,8 @@ def _compile_time_refusals(include, settings_dir, *flags):
     for message in re.findall(r'error: #error "([^"]*)"', result.stderr):
         type_name, what, setting = re.match(r'(\S+): (.*) needs (?:a )?(\w+|\S+<n>\S+) ',
                                             message).groups()
-        refusals.append((type_name, what.split(', ')[1].rstrip(',') if 'frame' in what else setting))
+        refusals.append((type_name, what.split(', ')[1].rstrip(
+            ',') if 'frame' in what else setting))
     return sorted(refusals), result.returncode, result.stderr
 
 

@@ -32,4 +32,5 @@ def test_fuzzing_finds_no_crash(tmp_path):
     executions = int(re.search(r'\| executions \| (\d+) \|', result.stdout).group(1))
     assert seeds >= 2 * 15
     assert executions > 10000, result.stdout
-    assert not [name for name in os.listdir(str(tmp_path)) if name.startswith(('crash-', 'leak-', 'oom-'))]
+    assert not [name for name in os.listdir(
+        str(tmp_path)) if name.startswith(('crash-', 'leak-', 'oom-'))]

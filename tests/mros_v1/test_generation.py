@@ -25,7 +25,8 @@ def _build_and_run(tmp_path, include_dirs, source_text, extra_sources=()):
     source = tmp_path / 'main.cpp'
     source.write_text(source_text)
     program = str(tmp_path / 'main')
-    command = STRICT + ['-o', program, str(source)] + list(extra_sources) + ['-I' + d for d in include_dirs]
+    command = STRICT + ['-o', program, str(source)] + \
+    list(extra_sources) + ['-I' + d for d in include_dirs]
     compiled = subprocess.run(command, capture_output=True, text=True)
     assert compiled.returncode == 0, compiled.stderr[-4000:]
     return subprocess.run([program], capture_output=True, text=True, check=True).stdout
@@ -64,9 +65,11 @@ def test_generator_mode_writes_what_export_writes(test_ws_export, tmp_path):
         package = path.split(os.sep)[-3]
         run_genmros('generate', path, '-p', package, '-o', str(tmp_path / package), *flags)
     generated = _tree(str(tmp_path))
-    assert 'mros_test/LookupPersonRequest.h' in generated and set(SUPPORT_HEADERS) <= set(generated)
+    assert 'mros_test/LookupPersonRequest.h' in generated and set(
+        SUPPORT_HEADERS) <= set(generated)
     for relative in generated:
-        assert filecmp.cmp(str(tmp_path / relative), os.path.join(test_ws_export, relative), shallow=False), relative
+        assert filecmp.cmp(str(tmp_path / relative),
+                           os.path.join(test_ws_export, relative), shallow=False), relative
 
 
 def test_a_header_refuses_a_support_header_of_another_genmros(test_ws_export, tmp_path):
@@ -176,7 +179,8 @@ int main() {
 }
 ''')
     # 4 + (4+5) + (4+3*8) + 2 + 1 + 8 + 2 + (4+4) = 62 bytes
-    assert output.split() == ['62', '62', '-7', 'fresh', '3', '1', '200', '-1', '65535', 'size', '1', 'text']
+    assert output.split() == ['62', '62', '-7', 'fresh', '3', '1',
+                              '200', '-1', '65535', 'size', '1', 'text']
 
 
 def test_constants_hold_the_values_written_in_the_msg_file(test_ws_export, tmp_path):

@@ -45,8 +45,10 @@ def genpy_classes(tmp_path_factory):
         output = os.path.join(root, package, kind)
         generator = ros_paths.genpy()[0 if kind == 'msg' else 1]
         for path in paths:
-            subprocess.run([sys.executable, generator, path, '-p', package, '-o', output] + flags, check=True)
-        subprocess.run([sys.executable, generator, '--initpy', '-p', package, '-o', output], check=True)
+            subprocess.run([sys.executable, generator, path, '-p',
+                           package, '-o', output] + flags, check=True)
+        subprocess.run([sys.executable, generator, '--initpy',
+                       '-p', package, '-o', output], check=True)
         open(os.path.join(root, package, '__init__.py'), 'a').close()
     sys.path.insert(0, root)
     yield
@@ -59,7 +61,8 @@ def probe(test_ws_export, tmp_path_factory):
     the type names it indexes."""
     messages = ['%s/%s' % (package, os.path.basename(p)[:-4])
                 for package, kind, paths in _workspace_definitions() if kind == 'msg' for p in paths]
-    services = [(package, p) for package, kind, paths in _workspace_definitions() if kind == 'srv' for p in paths]
+    services = [(package, p) for package, kind, paths in _workspace_definitions()
+                if kind == 'srv' for p in paths]
     type_set = cpp_harness.TypeSet(cpp_harness.search_path(), messages, services)
     directory = str(tmp_path_factory.mktemp('probe'))
     sources = cpp_harness.write_sources(directory, type_set, with_roscpp=False)
@@ -173,7 +176,8 @@ def test_genmros_reads_genpy_bytes(genpy_classes, probe):
             theirs = _encode(_random_message(cls, rng))
             consumed, reencoded = _ask(process, 'reencode %d %s' % (index, _hex(theirs)))
             assert int(consumed) == len(theirs), '%s instance %d' % (full_name, instance)
-            assert reencoded.replace('-', '') == theirs.hex(), '%s instance %d' % (full_name, instance)
+            assert reencoded.replace(
+                '-', '') == theirs.hex(), '%s instance %d' % (full_name, instance)
 
 
 def test_personal_data_round_trip(genpy_classes, probe):
@@ -181,8 +185,10 @@ def test_personal_data_round_trip(genpy_classes, probe):
     process, types = probe
     sent = PersonalData(first_name='Phil', last_name='Woods', age=83, score=100000)
     wire = _encode(sent)
-    consumed, reencoded = _ask(process, 'reencode %d %s' % (types.index('mros_test/PersonalData'), wire.hex()))
+    consumed, reencoded = _ask(process, 'reencode %d %s' % (
+        types.index('mros_test/PersonalData'), wire.hex()))
     assert int(consumed) == len(wire) == 4 + 4 + 4 + 5 + 2 + 4
     received = PersonalData()
     received.deserialize(bytes.fromhex(reencoded))
-    assert (received.first_name, received.last_name, received.age, received.score) == ('Phil', 'Woods', 83, 100000)
+    assert (received.first_name, received.last_name, received.age,
+            received.score) == ('Phil', 'Woods', 83, 100000)

@@ -53,7 +53,8 @@ FLOAT_LIMITS_MSG = (
 # constant named like something C++ or the generated code owns is renamed
 # with a trailing underscore; everything else keeps its name.
 ACCEPTED = [
-    ('field-length-beside-string', {'msg/FieldLength.msg': 'string length\nuint8[] data\nstring size\n'}),
+    ('field-length-beside-string',
+     {'msg/FieldLength.msg': 'string length\nuint8[] data\nstring size\n'}),
     ('fields-in-out', {'msg/InOut.msg': 'string in\nstring out\nint32[] count\n'}),
     ('fields-like-generated-locals', {'msg/Locals.msg': (
         'uint32 message\nstring visitor\nuint32 value\nuint8[] buffer\nuint32 capacity\n'
@@ -67,7 +68,8 @@ ACCEPTED = [
         'time time\nduration Duration\nstring string\nint32[] vector\nint32[2] array\n'
         'uint8 FILE\nuint8 hostile_ok\nEmpty Empty\n')}),
     ('field-named-like-its-type', {'msg/FieldSelf.msg': 'int32 FieldSelf\nint32 other\n'}),
-    ('constant-named-like-its-type', {'msg/ConstantSelf.msg': 'uint8 ConstantSelf=1\nint32 value\n'}),
+    ('constant-named-like-its-type',
+     {'msg/ConstantSelf.msg': 'uint8 ConstantSelf=1\nint32 value\n'}),
     ('constants-like-template-names', {'msg/ConstantNames.msg': (
         'int32 Unused=1\nint32 unused=2\nint32 T=3\nint32 Message=4\nstring text=a\n')}),
     ('constants-like-macros', {'msg/ConstantMacros.msg': (
@@ -81,9 +83,11 @@ ACCEPTED = [
     ('string-constants-with-escapes', {'msg/Quotes.msg': (
         'string QUOTE="quoted" \\\\ back\nstring TRIGRAPH=??= ??/ ??\'\nstring HASH=a # not a comment\n'
         'int32 value\n')}),
-    ('zero-length-fixed-arrays', {'msg/ZeroArrays.msg': 'int32[0] none\nEmpty[0] empties\nstring[0] texts\n'}),
+    ('zero-length-fixed-arrays',
+     {'msg/ZeroArrays.msg': 'int32[0] none\nEmpty[0] empties\nstring[0] texts\n'}),
     ('empty-message', {'msg/Empty.msg': '# nothing\n'}),
-    ('empty-nested-in-arrays', {'msg/Outer.msg': 'Inner[] inners\n', 'msg/Inner.msg': 'Empty[] es\n'}),
+    ('empty-nested-in-arrays',
+     {'msg/Outer.msg': 'Inner[] inners\n', 'msg/Inner.msg': 'Empty[] es\n'}),
     ('type-named-like-c-function', {'msg/time.msg': 'int32 sec\n'}),
     ('type-named-like-support-types', {'msg/Codec.msg': 'int32 a\n', 'msg/Reader.msg': 'Codec c\n',
                                        'msg/Message.msg': 'Reader r\nCodec[] cs\n'}),
@@ -93,7 +97,8 @@ ACCEPTED = [
                                              'msg/wire.msg': 'int32 C=3\n'}),
     ('types-differing-in-case', {'msg/Thing.msg': 'int32 a\n', 'msg/THING.msg': 'string b\n'}),
     ('guard-of-package-and-type-underscores', {'msg/b_C.msg': 'int32 from_hostile_ok\n'}),
-    ('service-with-hostile-fields', {'srv/Ask.srv': 'string length\nint32 EOF\n---\nstring in\nint32 class\n'}),
+    ('service-with-hostile-fields',
+     {'srv/Ask.srv': 'string length\nint32 EOF\n---\nstring in\nint32 class\n'}),
 ] + _type_per_line('MacroField', [
     'int32 EOF', 'int32 errno', 'int32 ERANGE', 'int32 EXIT_SUCCESS', 'int32 INT32_MAX',
     'uint32 UINT32_MAX', 'uint64 SIZE_MAX', 'int32 SEEK_SET', 'bool assert', 'string stdin',
@@ -148,7 +153,7 @@ REFUSED = [
     ('type-non-ascii', 'hostile_bad', {'msg/a\u00b2.msg': 'int32 a\n'}, 'msg/a\u00b2.msg', ':',
      "type name 'hostile_bad/a\u00b2' cannot be a C++ type: not an ASCII identifier"),
     ('type-like-used-package', 'hostile_bad', {'msg/std_msgs.msg': 'int32 a\n',
-                                              'msg/User.msg': 'int32 a\nstd_msgs/Header header\n'},
+                                               'msg/User.msg': 'int32 a\nstd_msgs/Header header\n'},
      'msg/User.msg', ':2:', "type 'hostile_bad/std_msgs' is named like package 'std_msgs'"),
     ('field-non-ascii', 'hostile_bad', {'msg/A.msg': 'int32 ok\nint32 a\u00b2\n'}, 'msg/A.msg', ':2:',
      "'a\u00b2' is not a legal field name for C++"),
@@ -188,7 +193,8 @@ REFUSED = [
      ':2:', 'cannot coerce [18446744073709551616] to uint64 (out of bounds)'),
     ('int64-just-past-min', 'hostile_bad', {'msg/A.msg': 'int64 X=-9223372036854775809\n'}, 'msg/A.msg', ':1:',
      'out of bounds'),
-    ('uint32-past-max', 'hostile_bad', {'msg/A.msg': 'uint32 X=4294967296\n'}, 'msg/A.msg', ':1:', 'out of bounds'),
+    ('uint32-past-max', 'hostile_bad',
+     {'msg/A.msg': 'uint32 X=4294967296\n'}, 'msg/A.msg', ':1:', 'out of bounds'),
     ('float32-beyond-max', 'hostile_bad', {'msg/A.msg': 'int8 a\nfloat32 X=1e39\n'}, 'msg/A.msg', ':2:',
      'float32 constant 1e39 is beyond the range of float32 (largest finite value 3.4028234663852886e+38)'),
     ('float32-just-beyond-max', 'hostile_bad', {'msg/A.msg': 'float32 X=3.4028236e38\n'}, 'msg/A.msg', ':1:',
@@ -238,7 +244,8 @@ class WireImages:
         for code in fmt[1:]:
             size = struct.calcsize('<' + code)
             signed = code.islower()
-            low, high = (-(1 << (8 * size - 1)), (1 << (8 * size - 1)) - 1) if signed else (0, (1 << (8 * size)) - 1)
+            low, high = (-(1 << (8 * size - 1)), (1 << (8 * size - 1)) - \
+                         1) if signed else (0, (1 << (8 * size)) - 1)
             values.append(self.random.randint(low, high))
         return struct.pack(fmt, *values)
 
@@ -253,7 +260,8 @@ class WireImages:
                 if length is None:
                     out += struct.pack('<I', count)
             for _ in range(count):
-                out += self._scalar(base_type) if is_builtin(base_type) else self.image(bare_msg_type(base_type))
+                out += self._scalar(base_type) if is_builtin(
+                    base_type) else self.image(bare_msg_type(base_type))
         return out
 
 
@@ -328,7 +336,8 @@ def _accepted_files():
 
 
 # hostile_ok_b/C and hostile_ok/b_C: one guard if the package's length were not in it.
-GUARD_TWIN = {'package.xml': package_xml('hostile_ok_b'), 'msg/C.msg': 'string from_hostile_ok_b\n'}
+GUARD_TWIN = {'package.xml': package_xml(
+    'hostile_ok_b'), 'msg/C.msg': 'string from_hostile_ok_b\n'}
 
 
 @pytest.fixture(scope='module')
@@ -359,7 +368,8 @@ def test_table_is_large_enough():
 
 def _run(command, **kwargs):
     result = subprocess.run(command, capture_output=True, text=True, **kwargs)
-    assert result.returncode == 0, ' '.join(command[:6]) + '\n' + result.stdout[-3000:] + result.stderr[-6000:]
+    assert result.returncode == 0, ' '.join(
+        command[:6]) + '\n' + result.stdout[-3000:] + result.stderr[-6000:]
     return result
 
 
@@ -368,7 +378,8 @@ def test_accepted_headers_compile_together_and_alone(accepted_export, tmp_path):
     headers = sorted(os.listdir(os.path.join(output, 'hostile_ok')))
     assert len(headers) >= len(ACCEPTED)
     together = tmp_path / 'together.cpp'
-    together.write_text(''.join('#include <hostile_ok/%s>\n' % h for h in headers) + 'int main() { return 0; }\n')
+    together.write_text(''.join('#include <hostile_ok/%s>\n' %
+                        h for h in headers) + 'int main() { return 0; }\n')
     alone = []
     for header in headers:
         source = tmp_path / ('alone_%s.cpp' % header[:-2])
@@ -398,8 +409,10 @@ def test_accepted_messages_round_trip_under_asan(accepted_export, tmp_path):
     search_path = {'hostile_ok': [os.path.join(package, 'msg')],
                    'std_msgs': [ros1_package_dir('std_msgs')],
                    'geometry_msgs': [ros1_package_dir('geometry_msgs')]}
-    context = _load_specs(search_path, [n for n in full_names if not n.endswith(('Request', 'Response'))])
-    service = msg_loader.load_srv_from_file(context, os.path.join(package, 'srv', 'Ask.srv'), 'hostile_ok/Ask')
+    context = _load_specs(
+        search_path, [n for n in full_names if not n.endswith(('Request', 'Response'))])
+    service = msg_loader.load_srv_from_file(
+        context, os.path.join(package, 'srv', 'Ask.srv'), 'hostile_ok/Ask')
     msg_loader.load_depends(context, service, search_path)
     images = WireImages(context, seed=10)
     with open(str(tmp_path / 'images.bin'), 'wb') as stream:
@@ -413,7 +426,8 @@ def test_accepted_messages_round_trip_under_asan(accepted_export, tmp_path):
     source = tmp_path / 'round_trip.cpp'
     source.write_text(ROUND_TRIP % {'includes': includes, 'cases': cases})
     program = str(tmp_path / 'round_trip')
-    _run(['g++', '-std=gnu++98', '-O1', '-o', program, str(source), '-I' + output] + STRICT + SANITIZERS)
+    _run(['g++', '-std=gnu++98', '-O1', '-o', program,
+         str(source), '-I' + output] + STRICT + SANITIZERS)
     result = _run([program, str(tmp_path / 'images.bin')])
     assert '%d images, 0 failures' % (6 * len(full_names)) in result.stdout
 
@@ -439,7 +453,8 @@ def test_float_constants_hold_what_their_type_holds(accepted_export, tmp_path):
     expected = []
     for ros_type, declaration in constants:
         name, text = declaration.split('=')
-        packed = struct.pack('<f', float(text)) if ros_type == 'float32' else struct.pack('<d', float(text))
+        packed = struct.pack('<f', float(
+            text)) if ros_type == 'float32' else struct.pack('<d', float(text))
         expected.append('%s %s' % (name, packed.hex()))
     for mode in LANGUAGE_MODES:
         program = str(tmp_path / ('float_constants_' + mode))
@@ -480,7 +495,8 @@ int main() {
 }
 ''')
     program = str(tmp_path / 'bound')
-    _run(['g++', '-std=c++11', '-O1', '-o', program, str(source), '-I' + output] + STRICT[:-1] + SANITIZERS)
+    _run(['g++', '-std=c++11', '-O1', '-o', program,
+         str(source), '-I' + output] + STRICT[:-1] + SANITIZERS)
     refused, elements, accepted = _run([program]).stdout.split()
     assert refused == '-1'
     assert int(elements) <= 65536  # the message's budget for elements that cost no wire bytes
@@ -492,7 +508,7 @@ def good_export(tmp_path_factory):
     """An export of a good package, copied into every refused case's output."""
     root = tmp_path_factory.mktemp('hostile_good')
     write_tree(str(root / 'ws' / 'src' / 'hostile_good'),
-           {'package.xml': package_xml('hostile_good'), 'msg/Good.msg': 'std_msgs/Header header\nint32 a\n'})
+               {'package.xml': package_xml('hostile_good'), 'msg/Good.msg': 'std_msgs/Header header\nint32 a\n'})
     output = str(root / 'out')
     run_genmros('export', '--workspace', str(root / 'ws'), '-o', output,
                 *prefix_arguments(ros1_prefixes()))
@@ -530,16 +546,18 @@ def test_non_ascii_package_in_generator_mode(tmp_path):
     generator mode takes the name from -p."""
     source = tmp_path / 'A.msg'
     source.write_text('int32 a\n')
-    result = run_genmros('generate', str(source), '-p', 'paquete_\u00f1', '-o', str(tmp_path / 'out' / 'x'), check=False)
+    result = run_genmros('generate', str(source), '-p', 'paquete_\u00f1',
+                         '-o', str(tmp_path / 'out' / 'x'), check=False)
     assert_one_line_error(result, str(source) + ':',
-                           "package name 'paquete_\u00f1' cannot be a C++ namespace: not an ASCII identifier")
+                          "package name 'paquete_\u00f1' cannot be a C++ namespace: not an ASCII identifier")
     assert not (tmp_path / 'out').exists()
 
 
 def _chain(depth):
     files = {'package.xml': package_xml('hostile_deep')}
     for level in range(depth):
-        files['msg/D%d.msg' % level] = 'int32 level\n' + ('D%d next\n' % (level + 1) if level + 1 < depth else '')
+        files['msg/D%d.msg' % level] = 'int32 level\n' + \
+            ('D%d next\n' % (level + 1) if level + 1 < depth else '')
     return files
 
 
@@ -559,7 +577,8 @@ def test_nesting_as_deep_as_gencpp_handles(tmp_path):
     _run([str(tmp_path / 'deep')])
     context = _load_specs({'hostile_deep': [os.path.join(package, 'msg')]}, ['hostile_deep/D0'])
     with open(os.path.join(output, 'hostile_deep', 'D0.h')) as stream:
-        assert '"%s"' % gentools.compute_md5(context, context.get_registered('hostile_deep/D0')) in stream.read()
+        assert '"%s"' % gentools.compute_md5(
+            context, context.get_registered('hostile_deep/D0')) in stream.read()
 
 
 def test_nesting_beyond_the_limit_is_refused(tmp_path):
@@ -568,7 +587,7 @@ def test_nesting_beyond_the_limit_is_refused(tmp_path):
     result = run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', str(tmp_path / 'out'),
                          *prefix_arguments(ros1_prefixes()), check=False)
     assert_one_line_error(result, os.path.join(package, 'msg', 'D999.msg') + ':2:',
-                           "field 'next' nests types more than 1000 levels deep")
+                          "field 'next' nests types more than 1000 levels deep")
     assert not os.path.exists(str(tmp_path / 'out'))
 
 
@@ -597,16 +616,18 @@ def test_diamond_nesting_takes_linear_time(tmp_path):
         header = stream.read()
     assert '"%s"' % gentools.compute_md5(context, spec) in header
     assert 'MSG: hostile_wide/W39' in header
-    assert header.count('MSG: hostile_wide/W') == len(gentools.compute_full_text(context, spec).split('MSG: ')) - 1
+    assert header.count(
+        'MSG: hostile_wide/W') == len(gentools.compute_full_text(context, spec).split('MSG: ')) - 1
 
 
 def test_error_on_the_last_line_of_a_long_file_is_found_quickly(tmp_path):
     package = str(tmp_path / 'ws' / 'src' / 'hostile_long')
     lines = ['int32 field%d' % i for i in range(19999)] + ['int32 1bad']
-    write_tree(package, {'package.xml': package_xml('hostile_long'), 'msg/Long.msg': '\n'.join(lines) + '\n'})
+    write_tree(package, {'package.xml': package_xml('hostile_long'),
+               'msg/Long.msg': '\n'.join(lines) + '\n'})
     started = time.monotonic()
     result = run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', str(tmp_path / 'out'),
                          *prefix_arguments(ros1_prefixes()), check=False)
     assert time.monotonic() - started < 20
     assert_one_line_error(result, os.path.join(package, 'msg', 'Long.msg') + ':20000:',
-                           '1bad is not a legal message field name')
+                          '1bad is not a legal message field name')

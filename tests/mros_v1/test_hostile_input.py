@@ -16,7 +16,8 @@ import cpp_harness
 from conftest import DEBIAN_MESSAGE_PACKAGES, TEST_WS
 from testing import ros_paths
 
-SANITIZERS = ['-fsanitize=address,undefined', '-fno-sanitize-recover=all', '-fno-omit-frame-pointer', '-g']
+SANITIZERS = ['-fsanitize=address,undefined',
+              '-fno-sanitize-recover=all', '-fno-omit-frame-pointer', '-g']
 INSTANCES_PER_TYPE = 4
 
 
@@ -32,7 +33,8 @@ def _all_types():
         messages.extend('%s/%s' % (package, os.path.basename(p)[:-4])
                         for p in ros_paths.ros1_definitions(package, 'msg'))
         services.extend((package, p) for p in ros_paths.ros1_definitions(package, 'srv'))
-    services.extend(('mros_test', p) for p in sorted(glob.glob(os.path.join(TEST_WS, 'src', 'mros_test', 'srv', '*.srv'))))
+    services.extend(('mros_test', p) for p in sorted(
+        glob.glob(os.path.join(TEST_WS, 'src', 'mros_test', 'srv', '*.srv'))))
     return cpp_harness.TypeSet(search_path, messages, services)
 
 
@@ -55,7 +57,8 @@ def test_every_proper_prefix_is_refused_cleanly(truncation_program):
     assert len(type_set.messages) > 190
     environment = dict(os.environ, ASAN_OPTIONS='detect_leaks=1:abort_on_error=0',
                        UBSAN_OPTIONS='print_stacktrace=1')
-    result = subprocess.run([program, str(INSTANCES_PER_TYPE)], capture_output=True, text=True, env=environment)
+    result = subprocess.run([program, str(INSTANCES_PER_TYPE)],
+                            capture_output=True, text=True, env=environment)
     assert result.returncode == 0, result.stdout[-4000:] + result.stderr[-4000:]
     assert 'runtime error' not in result.stderr
     assert ': 0 failures' in result.stdout

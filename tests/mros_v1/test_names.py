@@ -26,6 +26,8 @@ def _support_texts():
         with open(path) as stream:
             texts.append(stream.read())
     return texts + [firmware_files([])[DELIVERY_HEADER]]
+
+
 # A template's parameter list, nested template arguments included.
 _TEMPLATE_HEAD = re.compile(r'template\s*<(?:[^<>]|<[^<>]*>)*>')
 _DECLARATION = re.compile(r'\b(?:struct|class|union|namespace|using)\s+([A-Za-z_]\w*)')

@@ -60,8 +60,10 @@ def test_all_headers_compile_together_without_warnings(debian_export, tmp_path):
 def test_bytes_md5_and_definitions_equal_roscpp(harness_sources, debian_export):
     directory, sources = harness_sources
     objects = [
-        cpp_harness.compile_object(sources['roscpp_side.cpp'], directory, [directory], strict=False),
-        cpp_harness.compile_object(sources['mros_side.cpp'], directory, [debian_export, directory]),
+        cpp_harness.compile_object(sources['roscpp_side.cpp'],
+                                   directory, [directory], strict=False),
+        cpp_harness.compile_object(sources['mros_side.cpp'], directory, [
+                                   debian_export, directory]),
         cpp_harness.compile_object(os.path.join(cpp_harness.RANDOM_HEADER_DIR, 'compare_with_roscpp.cpp'),
                                    directory, [directory]),
     ]

@@ -34,7 +34,8 @@ pytestmark = [pytest.mark.needs_qemu, pytest.mark.slow]
 DEBIAN_SET = ['sensor_msgs/Image', 'sensor_msgs/PointCloud2', 'sensor_msgs/JointState', 'nav_msgs/Odometry',
               'visualization_msgs/MarkerArray', 'std_msgs/Header', 'std_msgs/Float64MultiArray']
 
-CORTEX_M_LINK = ['--specs=rdimon.specs', '-nostartfiles', '-Wl,--gc-sections', '-L' + cpp_harness.TARGETS_DIR]
+CORTEX_M_LINK = ['--specs=rdimon.specs', '-nostartfiles',
+                 '-Wl,--gc-sections', '-L' + cpp_harness.TARGETS_DIR]
 CORTEX_M_STARTUP = os.path.join(cpp_harness.TARGETS_DIR, 'cortex_m_startup.c')
 # No serial port or monitor: with -nographic QEMU multiplexes them with the
 # semihosting output on stdio and drops output once the pipe is full.
@@ -91,8 +92,10 @@ def target_sources(tmp_path_factory):
     the host program that prints roscpp's wire images."""
     root = tmp_path_factory.mktemp('target_cpus')
     search_path = cpp_harness.search_path()
-    messages = ['%s/%s' % (package, os.path.basename(path)[:-4]) for package, path in cpp_harness.test_ws_definitions('msg')]
-    type_set = cpp_harness.TypeSet(search_path, messages + DEBIAN_SET, list(cpp_harness.test_ws_definitions('srv')))
+    messages = ['%s/%s' % (package, os.path.basename(path)[:-4])
+                for package, path in cpp_harness.test_ws_definitions('msg')]
+    type_set = cpp_harness.TypeSet(search_path, messages + DEBIAN_SET,
+                                   list(cpp_harness.test_ws_definitions('srv')))
     arguments = ['export', '--workspace', TEST_WS, *prefix_arguments(ros1_prefixes())]
     for package in cpp_harness.TEST_WS_PACKAGES:
         arguments += ['--package', package]
@@ -105,8 +108,10 @@ def target_sources(tmp_path_factory):
     exports['bounded'] = str(root / 'bounded')
     bounds = root / 'compact.options'
     bounds.write_text('* max_size:4 max_count:4\n')
-    run_genmros(*arguments, '-o', exports['bounded'], '--storage', 'bounded', '--options', str(bounds))
-    sources, expected = cpp_harness.expected_bytes_program(type_set, search_path, root, for_targets=True)
+    run_genmros(*arguments, '-o', exports['bounded'],
+                '--storage', 'bounded', '--options', str(bounds))
+    sources, expected = cpp_harness.expected_bytes_program(
+        type_set, search_path, root, for_targets=True)
     return type_set, exports, sources, expected
 
 
@@ -132,10 +137,12 @@ def _build(cpu, sources, export, directory):
         _compile([cpu.compiler[:-len('g++')] + 'gcc', '-std=c99', '-Wall', '-Wextra', '-Werror'] + cpu.flags +
                  ['-c', cpu.startup, '-o', startup])
         link.append(startup)
-    warnings = ['-Wall', '-Wextra', '-Werror'] + (['-pedantic'] if cpu.standard != 'gnu++98' else [])
+    warnings = ['-Wall', '-Wextra', '-Werror'] + \
+        (['-pedantic'] if cpu.standard != 'gnu++98' else [])
     command = ([cpu.compiler, '-std=' + cpu.standard] + cpu.flags + FIRMWARE_FLAGS + warnings +
                ['-DTARGET_INSTANCES=%du' % cpu.instances, '-DTARGET_MODES=%s' % ','.join(map(str, cpu.modes)),
-                '-I', export, '-I', os.path.dirname(sources['target_side.cpp']), '-I', cpp_harness.TARGETS_DIR,
+                '-I', export, '-I', os.path.dirname(sources['target_side.cpp']
+                                                    ), '-I', cpp_harness.TARGETS_DIR,
                 '-I', cpp_harness.RANDOM_HEADER_DIR, sources['target_side.cpp'],
                 os.path.join(cpp_harness.TARGETS_DIR, 'target_main.cpp')] + link + ['-o', program])
     _compile(command)
@@ -172,7 +179,8 @@ def test_wire_images_equal_roscpp_on_the_cpu(target_sources, name, storage, tmp_
                                           + [run.stderr[-2000:]])
     assert not [line for line in report if line.startswith('FAIL ')]
     instances = cpu.instances * len(type_set.messages)
-    assert report[-1].startswith('checked %d instances, ' % instances) and report[-1].endswith(': 0 failures')
+    assert report[-1].startswith('checked %d instances, ' %
+                                 instances) and report[-1].endswith(': 0 failures')
 
     expected = subprocess.run([expected_program, str(cpu.instances)] + [str(m) for m in cpu.modes],
                               capture_output=True, text=True, check=True).stdout

@@ -27,24 +27,35 @@ GOOD_MESSAGE = 'Header header\nstring name\nint32 value\n'
 
 # (case id, files to add to package mros_bad, expected location, expected problem)
 DEFINITION_CASES = [
-    ('missing-field-name', {'msg/Bad.msg': 'int32 ok\nint32\n'}, 'msg/Bad.msg:2:', 'Invalid declaration: int32'),
-    ('unknown-builtin', {'msg/Bad.msg': 'int33 x\n'}, 'msg/Bad.msg:1:', "unknown type 'mros_bad/int33'"),
+    ('missing-field-name', {'msg/Bad.msg': 'int32 ok\nint32\n'},
+     'msg/Bad.msg:2:', 'Invalid declaration: int32'),
+    ('unknown-builtin', {'msg/Bad.msg': 'int33 x\n'},
+     'msg/Bad.msg:1:', "unknown type 'mros_bad/int33'"),
     ('unknown-package', {'msg/Bad.msg': '# c\n\nnopkg/Thing x\n'}, 'msg/Bad.msg:3:',
      "unknown package 'nopkg' for type 'nopkg/Thing'"),
     ('unknown-type-in-package', {'msg/Bad.msg': 'int8 a\nstd_msgs/Nothing x\n'}, 'msg/Bad.msg:2:',
      "unknown type 'std_msgs/Nothing'"),
-    ('bad-field-name', {'msg/Bad.msg': 'int32 1abc\n'}, 'msg/Bad.msg:1:', '1abc is not a legal message field name'),
+    ('bad-field-name', {'msg/Bad.msg': 'int32 1abc\n'},
+     'msg/Bad.msg:1:', '1abc is not a legal message field name'),
     ('duplicate-field', {'msg/Bad.msg': 'int32 a\nstring b\nint32 a # again\n'}, 'msg/Bad.msg:3:',
      "duplicate field name 'a'"),
     ('constant-out-of-range', {'msg/Bad.msg': 'uint8 X=256\n'}, 'msg/Bad.msg:1:', 'out of bounds'),
-    ('negative-unsigned-constant', {'msg/Bad.msg': 'int8 a\nuint32 X=-1\n'}, 'msg/Bad.msg:2:', 'out of bounds'),
-    ('non-numeric-constant', {'msg/Bad.msg': 'int32 X=abc\n'}, 'msg/Bad.msg:1:', 'Invalid constant value'),
-    ('bad-float-constant', {'msg/Bad.msg': 'float32 X=1.2.3\n'}, 'msg/Bad.msg:1:', 'Invalid constant value'),
-    ('array-constant', {'msg/Bad.msg': 'int32[] X=1\n'}, 'msg/Bad.msg:1:', 'int32[] is not a legal constant type'),
-    ('message-constant', {'msg/Bad.msg': 'Header X=1\n'}, 'msg/Bad.msg:1:', 'Header is not a legal constant type'),
-    ('constant-without-name', {'msg/Bad.msg': 'int32 =1\n'}, 'msg/Bad.msg:1:', "'' is not a legal constant name"),
-    ('two-dimensional-array', {'msg/Bad.msg': 'int32[][] grid\n'}, 'msg/Bad.msg:1:', 'invalid field'),
-    ('bad-array-length', {'msg/Bad.msg': 'int32[x] a\n'}, 'msg/Bad.msg:1:', 'int32[x] is not a legal message field type'),
+    ('negative-unsigned-constant',
+     {'msg/Bad.msg': 'int8 a\nuint32 X=-1\n'}, 'msg/Bad.msg:2:', 'out of bounds'),
+    ('non-numeric-constant', {'msg/Bad.msg': 'int32 X=abc\n'},
+     'msg/Bad.msg:1:', 'Invalid constant value'),
+    ('bad-float-constant', {'msg/Bad.msg': 'float32 X=1.2.3\n'},
+     'msg/Bad.msg:1:', 'Invalid constant value'),
+    ('array-constant', {'msg/Bad.msg': 'int32[] X=1\n'},
+     'msg/Bad.msg:1:', 'int32[] is not a legal constant type'),
+    ('message-constant', {'msg/Bad.msg': 'Header X=1\n'},
+     'msg/Bad.msg:1:', 'Header is not a legal constant type'),
+    ('constant-without-name', {'msg/Bad.msg': 'int32 =1\n'},
+     'msg/Bad.msg:1:', "'' is not a legal constant name"),
+    ('two-dimensional-array', {'msg/Bad.msg': 'int32[][] grid\n'},
+     'msg/Bad.msg:1:', 'invalid field'),
+    ('bad-array-length', {'msg/Bad.msg': 'int32[x] a\n'},
+     'msg/Bad.msg:1:', 'int32[x] is not a legal message field type'),
     ('duplicate-constant', {'msg/Bad.msg': 'int32 A=1\nint32 A=2\n'}, 'msg/Bad.msg:2:',
      "name 'A' is already declared on line 1"),
     ('constant-named-like-field', {'msg/Bad.msg': 'int32 value=1\nint32 value\n'}, 'msg/Bad.msg:2:',
@@ -57,9 +68,11 @@ DEFINITION_CASES = [
      'msg/Inner.msg:2:', 'Invalid declaration: int32 b c'),
     ('service-response-line', {'srv/Bad.srv': 'int32 a\n---\nint32 b\nfloat32 1x\n'}, 'srv/Bad.srv:4:',
      '1x is not a legal message field name'),
-    ('service-unknown-type', {'srv/Bad.srv': 'Missing a\n---\n'}, 'srv/Bad.srv:1:', "unknown type 'mros_bad/Missing'"),
+    ('service-unknown-type', {'srv/Bad.srv': 'Missing a\n---\n'},
+     'srv/Bad.srv:1:', "unknown type 'mros_bad/Missing'"),
     ('not-utf8', {'msg/Bad.msg': b'# caf\xe9\nint32 a\n'}, 'msg/Bad.msg:1:', 'not UTF-8 text'),
-    ('illegal-type-name', {'msg/Bad-Name.msg': 'int32 a\n'}, 'msg/Bad-Name.msg:', "'Bad-Name' is not a legal ROS type name"),
+    ('illegal-type-name', {'msg/Bad-Name.msg': 'int32 a\n'},
+     'msg/Bad-Name.msg:', "'Bad-Name' is not a legal ROS type name"),
     # A close match is named: a built-in type, a type of the package, a package.
     ('misspelt-builtin', {'msg/Bad.msg': 'flaot64 x\n'}, 'msg/Bad.msg:1:',
      "unknown type 'mros_bad/flaot64' (no flaot64.msg in"),
@@ -113,8 +126,10 @@ def test_bad_definition_in_generator_mode(workspace, files, location, problem):
 
 
 ARGUMENT_CASES = [
-    ('unknown-selected-type', ['--type', 'mros_bad/Nope'], "unknown type 'mros_bad/Nope' (package mros_bad has no"),
-    ('malformed-selected-type', ['--type', 'Nope'], "bad type name 'Nope' (expected PACKAGE/TYPE)"),
+    ('unknown-selected-type', ['--type', 'mros_bad/Nope'],
+     "unknown type 'mros_bad/Nope' (package mros_bad has no"),
+    ('malformed-selected-type', ['--type', 'Nope'],
+     "bad type name 'Nope' (expected PACKAGE/TYPE)"),
     ('unknown-selected-package', ['--package', 'no_such_pkg'], "unknown package 'no_such_pkg'"),
     ('misspelt-selected-type', ['--type', 'mros_bad/Goood'],
      "unknown type 'mros_bad/Goood' (package mros_bad has no Goood.msg or Goood.srv; did you mean "
@@ -179,7 +194,8 @@ def test_missing_input_file(tmp_path):
 def test_bad_include_flag(tmp_path):
     source = tmp_path / 'Good.msg'
     source.write_text(GOOD_MESSAGE)
-    result = run_genmros('generate', str(source), '-p', 'mros_bad', '-o', str(tmp_path / 'out'), '-I', 'std_msgs', check=False)
+    result = run_genmros('generate', str(source), '-p', 'mros_bad', '-o',
+                         str(tmp_path / 'out'), '-I', 'std_msgs', check=False)
     assert_one_line_error(result, "bad include path 'std_msgs' (expected PACKAGE:DIRECTORY)")
 
 

@@ -10,7 +10,8 @@ from testing.ros_paths import ros1_package_dir
 def test_a_message_file_gives_one_type():
     definition = Definition('geometry_msgs',
                             os.path.join(ros1_package_dir('geometry_msgs'), 'Point.msg'))
-    assert (definition.kind, definition.name, definition.full_name) == ('msg', 'Point', 'geometry_msgs/Point')
+    assert (definition.kind, definition.name, definition.full_name) == (
+        'msg', 'Point', 'geometry_msgs/Point')
     assert definition.type_names == ['Point']
     assert definition.key == 'geometry_msgs/msg/Point.msg'
     assert not definition.is_service and definition.half_of('PointRequest') is None
@@ -29,5 +30,6 @@ def test_a_service_file_gives_the_service_and_its_halves():
 def test_definitions_in_a_directory_are_sorted_and_of_one_kind(tmp_path):
     for name in ('B.msg', 'A.msg', 'C.srv', 'notes.txt'):
         (tmp_path / name).write_text('')
-    assert [d.key for d in definitions_in('p', str(tmp_path), 'msg')] == ['p/msg/A.msg', 'p/msg/B.msg']
+    assert [d.key for d in definitions_in('p', str(tmp_path), 'msg')] == [
+                                          'p/msg/A.msg', 'p/msg/B.msg']
     assert [d.key for d in definitions_in('p', str(tmp_path / 'missing'), 'srv')] == []

@@ -138,7 +138,8 @@ def test_compact_text_is_at_most_forty_percent_of_full(roscpp_images):
     loader, names, _ = roscpp_images
     debian = [n for n in names if n.split('/')[0] in DEBIAN_MESSAGE_PACKAGES]
     full = sum(len(gencpp_definition_text(loader.identities.full_text(n))) for n in debian)
-    compact = sum(len(gencpp_definition_text(loader.identities.full_text(n, True))) for n in debian)
+    compact = sum(len(gencpp_definition_text(loader.identities.full_text(n, True)))
+                  for n in debian)
     assert compact <= 0.4 * full, (compact, full)
 
 
@@ -192,10 +193,12 @@ def test_cmake_module_and_make_fragment_take_the_choice(tmp_path):
     export.replace_packages({'std_msgs': installed_packages(ros1_prefixes())['std_msgs']},
                             installed_file(CMAKE_MODULE))
     build = tmp_path / 'build'
-    subprocess.run(['cmake', '-S', str(project), '-B', str(build)], check=True, capture_output=True)
+    subprocess.run(['cmake', '-S', str(project), '-B', str(build)],
+                   check=True, capture_output=True)
     subprocess.run(['cmake', '--build', str(build)], check=True, capture_output=True)
     for target in ('generated', 'imported'):
-        compact = _definition_in_header(str(build / 'mros_messages' / target / 'std_msgs' / 'Header.h'))
+        compact = _definition_in_header(
+            str(build / 'mros_messages' / target / 'std_msgs' / 'Header.h'))
         assert compact == 'uint32 seq\ntime stamp\nstring frame_id\n', target
     bad = subprocess.run(['cmake', '-S', str(project), '-B', str(build), '-DBAD=ON'], capture_output=True,
                          text=True)
@@ -212,4 +215,3 @@ def test_cmake_module_and_make_fragment_take_the_choice(tmp_path):
     subprocess.run(['make', '-C', str(app)], check=True, capture_output=True)
     assert _definition_in_header(str(app / 'include' / 'std_msgs' / 'Header.h')) == \
         'uint32 seq\ntime stamp\nstring frame_id\n'
-

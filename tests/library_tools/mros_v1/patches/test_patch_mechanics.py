@@ -203,7 +203,8 @@ def test_a_hunk_that_only_adds_lines_lands_where_its_header_says(library, tmp_pa
         lines = stream.readlines()
     assert apply_patches(library, patches) == ['note']
     with open(socket_c) as stream:
-        assert stream.readlines() == lines[:2] + ['/* genmros: a note after line 2 */\n'] + lines[2:]
+        assert stream.readlines() == lines[:2] + \
+                                ['/* genmros: a note after line 2 */\n'] + lines[2:]
 
 
 def test_taking_out_is_checked_as_putting_in(library):

@@ -158,4 +158,3 @@ def test_gnu_patch_applies_the_series_as_genmros_does(checkout, tmp_path):
         return node.diff_files + node.left_only + node.right_only + [
             name for child in node.subdirs.values() for name in differing(child)]
     assert differing(comparison) == []
-

@@ -16,7 +16,7 @@ import xmlrpc.client
 import pytest
 
 from testing.ros_graph import (DELIVERY_TIMEOUT, PEER_IP, Board,
-                                                      RosGraph)
+                               RosGraph)
 from testing.tcpros_peer import (
     HostilePublisher, RawSubscriber, closed_by_peer, encode_header)
 from conftest import run_genmros
@@ -52,7 +52,7 @@ def hardened_custom_pubsub(tmp_path_factory):
 
 
 def test_the_hardened_build_leaves_the_checkout_as_it_is_and_declares_strtol(hardened,
-                                                                              as_it_is):
+                                                                             as_it_is):
     program, output = hardened
     assert 'mROS v1 library of %s (hardened)' % MROS_V1_ROOT in output
     assert not STRTOL_WARNING.search(output), output
@@ -105,7 +105,7 @@ def _refused_and_still_serving(board, connection, peer, longer_than):
 
 
 def test_hardened_a_long_header_from_a_publisher_is_refused_and_the_node_stays_up(hardened,
-                                                                                    tmp_path):
+                                                                                  tmp_path):
     # Unpatched, the library reads this header past its 512-byte buffer and
     # crashes (test_mros_v1_pc.py, test_limit_a_long_header_from_a_publisher_...).
     program, _ = hardened
@@ -118,7 +118,7 @@ def test_hardened_a_long_header_from_a_publisher_is_refused_and_the_node_stays_u
 
 
 def test_hardened_a_long_header_from_a_subscriber_is_refused_and_the_node_stays_up(hardened,
-                                                                                     tmp_path):
+                                                                                   tmp_path):
     # Unpatched, the library reads it past its 512-byte buffer (AddressSanitizer's
     # report in test_mros_v1_pc_types.py; on the board, the slave task's state).
     program, _ = hardened
@@ -170,7 +170,6 @@ def test_hardened_the_publisher_header_carries_the_definition_text(hardened, tmp
         raw = RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5)
         raw.close()
     assert raw.header['message_definition'] == String._full_text
-
 
 
 @pytest.mark.parametrize('library', ['as_it_is', 'hardened'])

@@ -94,7 +94,7 @@ def test_limit_publishing_a_frame_larger_than_the_largest_pool_crashes_the_libra
 
 
 def test_hardened_publish_drops_a_frame_larger_than_the_largest_pool(hardened_limits_program,
-                                                                    tmp_path):
+                                                                     tmp_path):
     # The same app on the library with genmros' patch set (--hardened).
     with RosGraph() as graph:
         board = Board(graph, hardened_limits_program, str(tmp_path), inputs=PUBLISH)
@@ -197,7 +197,7 @@ def test_hardened_a_full_node_table_names_its_setting(tmp_path):
 
 
 def test_hardened_every_topic_is_delivered_with_the_samples_tables(hardened_limits_program,
-                                                                    tmp_path):
+                                                                   tmp_path):
     with RosGraph() as graph:
         board = start(graph, hardened_limits_program, str(tmp_path), TOPICS)
         eight_talkers(graph, board)

@@ -238,7 +238,7 @@ def round_trip_with_the_samples_roscpp_nodes(ros_side, program, directory, runne
 
 
 def test_custom_pubsub_round_trip_with_the_samples_roscpp_nodes_and_rospy(ros_side, programs,
-                                                                         tmp_path):
+                                                                          tmp_path):
     round_trip_with_the_samples_roscpp_nodes(ros_side, programs['custom_pubsub'], str(tmp_path))
     # rospy in a graph of its own (see the string_pubsub test).
     with RosGraph(ros_side) as graph:
@@ -363,7 +363,7 @@ def _sanitized_string_pubsub(graph, sanitized, directory):
 
 
 def test_hostile_peers_leave_the_sanitized_app_running_and_holding_nothing(ros_side, sanitized,
-                                                                            tmp_path):
+                                                                           tmp_path):
     with RosGraph(ros_side) as graph:
         board = _sanitized_string_pubsub(graph, sanitized, str(tmp_path))
         pid = board.process.popen.pid
@@ -697,7 +697,6 @@ def test_hardened_rostopic_hz_rosbag_record_and_play(ros_side, hardened_custom_p
         assert board.process.alive(), board.process.output()
 
 
-
 def test_hardened_every_slave_call_is_answered(ros_side, hardened_custom_pubsub, tmp_path):
     # The slave's limits above, with the library's patch set: publisherUpdate
     # is answered, a call the library does not implement gets a fault, and
@@ -716,6 +715,7 @@ def test_hardened_every_slave_call_is_answered(ros_side, hardened_custom_pubsub,
         status, info = ros_tool(graph, 'rosnode', 'info', '/mros_node')
         assert status == 0 and 'Publications:' in info and '/mros_msg' in info, info
         assert board.process.alive(), board.process.output()
+
 
 def test_limit_no_message_definition_and_no_data_for_anymsg(ros_side, programs, tmp_path):
     with RosGraph(ros_side) as graph:
@@ -782,13 +782,14 @@ def serve_blue(hostile, board, extra_header, done):
                 pass
     return connections
 
+
 @pytest.mark.parametrize('frame', [
     pytest.param(struct.pack('<I', 100) + b'\x04\x00\x00\x00red', id='cut-short'),
     pytest.param(struct.pack('<I', 0x7fffffff) + b'\x04\x00\x00\x00red', id='length-beyond'),
     pytest.param(b'\x05\x00', id='closed-in-the-length'),
 ])
 def test_a_frame_cut_short_or_oversized_leaves_the_app_running(ros_side, programs, tmp_path,
-                                                                 frame):
+                                                               frame):
     with RosGraph(ros_side) as graph:
         board = Board(graph, programs['string_pubsub'], str(tmp_path))
         graph.wait_for_graph(subscribers=[('/test_string', '/mros_node2')])

@@ -12,7 +12,6 @@ from conftest import run_genmros
 from user_checkouts import MROS_V1_ROOT
 
 
-
 def _error_line(*arguments):
     result = run_genmros('mros-v1-pc', *arguments, check=False)
     assert result.returncode == 1, result.stdout + result.stderr

@@ -99,7 +99,7 @@ def build_relay(mros_root, build_root, storage='heap', target='arm', sanitize=Fa
         options.write_text(BOUNDS)
         flags += ['--options', str(options)]
     program = build_app(mros_root, str(build_root), 'type_relay.cpp', target=target,
-                                   types=TYPES, header_flags=flags)
+                        types=TYPES, header_flags=flags)
     header = (build_root / 'build' / 'include' / 'mros_test' / 'PersonalData.h').read_text()
     assert ('mros::bounded_string<48> first_name;' if storage == 'bounded'
             else 'std::string first_name;') in header

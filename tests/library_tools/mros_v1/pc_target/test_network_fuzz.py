@@ -19,7 +19,8 @@ from user_checkouts import MROS_V1_ROOT
 pytestmark = [pytest.mark.needs_mros_v1, pytest.mark.slow]
 
 FUZZER = os.path.join(REPO, 'bench', 'fuzz', 'network_fuzz.py')
-ROW = re.compile(r'^\| (\d+) \| [\d.]+ \| (\d+) \| (\d+) \| (\d+) \| (\d+) \| (\d+)/(\d+) \|', re.M)
+ROW = re.compile(
+    r'^\| (\d+) \| [\d.]+ \| (\d+) \| (\d+) \| (\d+) \| (\d+) \| (\d+)/(\d+) \|', re.M)
 
 
 def _fuzz(build_dir, *arguments):
