@@ -23,8 +23,7 @@ the start-up of genmros' catkin run: the modules it imports (python3 -X
 importtime).
 
     /usr/bin/python3 bench/build_overhead.py [--runs 3] [--rebuilds 3]
-                                             [--tools catkin_make,catkin_make_ninja,catkin_build,colcon]
-                                             [--keep DIR]
+        [--tools catkin_make,catkin_make_ninja,catkin_build,colcon] [--keep DIR]
 """
 
 import argparse
@@ -138,9 +137,11 @@ def build_command(tool, workspace, wrapper, enabled):
     if tool == 'catkin_make_ninja':
         return ['catkin_make', '--use-ninja', '-j2'] + cmake_args
     if tool == 'catkin_build':
-        return ['catkin', 'build', '-j2', '-p2', '--no-status', '--no-notify', '--cmake-args'] + cmake_args
+        return (['catkin', 'build', '-j2', '-p2', '--no-status', '--no-notify', '--cmake-args']
+                + cmake_args)
     export = ['--mros-export', os.path.join(workspace, 'mros_export')] if enabled else []
-    return ['colcon', 'build', '--executor', 'parallel', '--parallel-workers', '2'] + export + ['--cmake-args'] + cmake_args
+    return (['colcon', 'build', '--executor', 'parallel', '--parallel-workers', '2'] + export
+            + ['--cmake-args'] + cmake_args)
 
 
 def genmros_runs(log):

@@ -24,11 +24,13 @@ sys.path.insert(0, REPO)  # the shared testing package
 
 from testing.ros_paths import prefix_arguments, ros1_prefixes  # noqa: E402
 
-PACKAGE_XML = '''<?xml version="1.0"?>
-<package format="2"><name>%s</name><version>0.0.1</version><description>bench</description>
-<maintainer email="dev@colcon-mros.invalid">colcon-mros developers</maintainer><license>BSD</license>
-<buildtool_depend>catkin</buildtool_depend></package>
-'''
+PACKAGE_XML = (
+    '<?xml version="1.0"?>\n'
+    '<package format="2"><name>%s</name><version>0.0.1</version>'
+    '<description>bench</description>\n'
+    '<maintainer email="dev@colcon-mros.invalid">colcon-mros developers</maintainer>'
+    '<license>BSD</license>\n'
+    '<buildtool_depend>catkin</buildtool_depend></package>\n')
 
 
 def chain(depth):
@@ -96,7 +98,8 @@ def main(argv=None):
     parser.add_argument('--limit', type=int, default=60,
                         help='seconds before a case is stopped (default: 60)')
     options = parser.parse_args(argv)
-    other = 'genmros at %s' % options.baseline if options.baseline else "genmsg's compute_md5 + full text"
+    other = ('genmros at %s' % options.baseline if options.baseline
+             else "genmsg's compute_md5 + full text")
     print('| case | genmros export | %s | ratio |' % other)
     print('|---|---|---|---|')
     for label, identity, files in CASES:
@@ -117,8 +120,8 @@ def main(argv=None):
                                 + ['-o', os.path.join(root, 'baseline')], options.limit,
                                 cwd=options.baseline)
             elif identity:
-                theirs = _timed([sys.executable, '-c', GENMSG_IDENTITY, os.path.join(package, 'msg')],
-                                options.limit)
+                theirs = _timed([sys.executable, '-c', GENMSG_IDENTITY,
+                                 os.path.join(package, 'msg')], options.limit)
             else:
                 theirs = None
             if theirs is None:

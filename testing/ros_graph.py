@@ -114,7 +114,8 @@ class Process:
                 if len(matches) >= count:
                     return matches[:count]
                 remaining = deadline - time.monotonic()
-                if remaining <= 0 or (self.popen.poll() is not None and not self._reader.is_alive()):
+                if remaining <= 0 or (self.popen.poll() is not None
+                                      and not self._reader.is_alive()):
                     raise AssertionError('%s: no %d line(s) matching %r within %.0f s; output:\n%s'
                                          % (self.name, count, pattern, timeout, self.output()))
                 self._changed.wait(min(remaining, 0.1))

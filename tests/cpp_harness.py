@@ -139,7 +139,7 @@ template <class M> Identity identity() {
 template <class S> Identity service_identity() {
   return Identity{ros::service_traits::MD5Sum<S>::value(), ros::service_traits::DataType<S>::value(), ""};
 }
-'''
+'''  # noqa: E501
 
 MROS_TEMPLATES = '''
 template <class M> std::vector<uint8_t> encode(const M& m) {
@@ -165,7 +165,7 @@ template <class M> Identity identity() {
 template <class S> Identity service_identity() {
   return Identity{service_traits::MD5Sum<S*>::value(), service_traits::DataType<S*>::value(), ""};
 }
-'''
+'''  # noqa: E501
 
 
 def _side(type_set, namespace, prelude, templates, parses):
@@ -174,11 +174,13 @@ def _side(type_set, namespace, prelude, templates, parses):
     lines = prelude + _includes(type_set) + [
         COMMON_DECLARATIONS, fill_functions(type_set), 'namespace %s {' % namespace, templates,
         'std::vector<uint8_t> sample(int type, uint64_t seed, int mode) {',
-        _dispatch(type_set, lambda n: '%s m; harness::Random r(seed, mode); fill_%s(m, r); return encode(m);'
-                  % (cpp_name(n), mangle(n))),
+        _dispatch(type_set, lambda n: '%s m; harness::Random r(seed, mode); '
+                                      'fill_%s(m, r); return encode(m);'
+                                      % (cpp_name(n), mangle(n))),
         '  return {};', '}', '']
     if parses:
-        lines += ['int32_t reencode(int type, const uint8_t* input, uint32_t size, std::vector<uint8_t>& out) {',
+        lines += ['int32_t reencode(int type, const uint8_t* input, uint32_t size, '
+                  'std::vector<uint8_t>& out) {',
                   _dispatch(type_set, lambda n: 'return reencode<%s>(input, size, out);' %
                             cpp_name(n)),
                   '  return -2;', '}', '']
@@ -194,7 +196,8 @@ def _side(type_set, namespace, prelude, templates, parses):
 
 def roscpp_side(type_set):
     """Translation unit that fills and serializes roscpp's classes."""
-    return _side(type_set, 'roscpp_side', ['#include <ros/serialization.h>'], ROSCPP_TEMPLATES, parses=False)
+    return _side(type_set, 'roscpp_side', ['#include <ros/serialization.h>'], ROSCPP_TEMPLATES,
+                 parses=False)
 
 
 def mros_side(type_set):
@@ -210,8 +213,9 @@ def target_side(type_set):
         '#include <mros_v1_delivery.h>  // memCopy, which the checks call',
         '#include "target_check.h"', '#include "harness_types.inc"', fill_functions(type_set),
         'void checkType(int type, uint32_t seed, int mode, target::Report& report) {',
-        _dispatch(type_set, lambda n: 'target::checkInstance<%s>(fill_%s<%s>, kTypes[type], seed, mode, report); return;'
-                  % (cpp_name(n), mangle(n), cpp_name(n))),
+        _dispatch(type_set, lambda n: 'target::checkInstance<%s>(fill_%s<%s>, kTypes[type], '
+                                      'seed, mode, report); return;'
+                                      % (cpp_name(n), mangle(n), cpp_name(n))),
         '}', '']
     return '\n'.join(lines)
 
@@ -220,12 +224,11 @@ def type_table(type_set):
     """Names of the types and services, indexed as the dispatch switches are."""
     return '\n'.join(
         ['static const char* const kTypes[] = {'] +
-        ['  "%s",' % name for name in type_set.messages] + ['};',
-                                                            'static const int kTypeCount = %d;' % len(
-                                                                type_set.messages),
-                                                            'static const char* const kServices[] = {'] +
-        ['  "%s",' % name for name in type_set.services] + ['  0', '};',
-                                                            'static const int kServiceCount = %d;' % len(type_set.services), ''])
+        ['  "%s",' % name for name in type_set.messages] +
+        ['};', 'static const int kTypeCount = %d;' % len(type_set.messages),
+         'static const char* const kServices[] = {'] +
+        ['  "%s",' % name for name in type_set.services] +
+        ['  0', '};', 'static const int kServiceCount = %d;' % len(type_set.services), ''])
 
 
 def compile_object(source, build_dir, include_dirs, strict=True, flags=()):

@@ -34,7 +34,9 @@ def assert_one_line_error(result, *fragments):
 
 
 def package_xml(name):
-    return ('<?xml version="1.0"?>\n<package format="2">\n  <name>%s</name>\n  <version>0.0.1</version>\n'
+    return ('<?xml version="1.0"?>\n<package format="2">\n  <name>%s</name>\n'
+            '  <version>0.0.1</version>\n'
             '  <description>Hostile definitions.</description>\n'
             '  <maintainer email="dev@colcon-mros.invalid">colcon-mros developers</maintainer>\n'
-            '  <license>BSD</license>\n  <buildtool_depend>catkin</buildtool_depend>\n</package>\n' % name)
+            '  <license>BSD</license>\n  <buildtool_depend>catkin</buildtool_depend>\n'
+            '</package>\n' % name)

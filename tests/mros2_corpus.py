@@ -50,7 +50,8 @@ class Corpus:
             runner, compiler = ECHO_TARGETS[target]
             for tool in [compiler[0]] + list(runner[:1]):
                 if shutil.which(tool) is None:
-                    pytest.fail('%s is not installed (scripts/setup.sh --tests installs it)' % tool)
+                    pytest.fail('%s is not installed (scripts/setup.sh --tests installs it)'
+                                % tool)
             program = mros2_harness.build_echo(
                 self.include_dir, self.headers, self.cpp_names,
                 '%s-echo-%s' % (self.include_dir, target), compiler,

@@ -66,8 +66,8 @@ def _run(command, **keywords):
 
 
 def export_headers(include_dir):
-    arguments = [sys.executable, '-m', 'colcon_mros', 'export', '--workspace', TEST_WS, '-o', include_dir,
-                 *ros_paths.prefix_arguments(ros_paths.ros1_prefixes())]
+    arguments = [sys.executable, '-m', 'colcon_mros', 'export', '--workspace', TEST_WS,
+                 '-o', include_dir, *ros_paths.prefix_arguments(ros_paths.ros1_prefixes())]
     for package_dir in sorted(glob.glob(os.path.join(TEST_WS, 'src', '*'))):
         if _definitions(package_dir, 'msg') or _definitions(package_dir, 'srv'):
             arguments += ['--package', os.path.basename(package_dir)]
@@ -211,7 +211,8 @@ def main(argv=None):
     executions = int(stats.get('number_of_executed_units', 0))
     rows = [('types', len(types)), ('seed inputs (genpy)', seeds), ('seconds', options.seconds),
             ('language mode', options.std + (' portable' if options.portable else '')),
-            ('executions', executions), ('executions per second', executions // max(options.seconds, 1)),
+            ('executions', executions),
+            ('executions per second', executions // max(options.seconds, 1)),
             ('peak RSS (MB)', stats.get('peak_rss_mb', '?'))]
     return libfuzzer.report('genmros libFuzzer run', rows, build_dir, returncode, log)
 

@@ -338,7 +338,8 @@ class Mutator:
 def http_post(body, host, content_length=None):
     length = len(body) if content_length is None else content_length
     return ('POST /RPC2 HTTP/1.1\r\nHost: %s\r\nUser-Agent: network_fuzz\r\n'
-            'Content-Type: text/xml\r\nContent-Length: %d\r\n\r\n' % (host, length)).encode() + body
+            'Content-Type: text/xml\r\nContent-Length: %d\r\n\r\n'
+            % (host, length)).encode() + body
 
 
 def http_answer(body):

@@ -10,15 +10,16 @@ interface package, both with Debian's rosidl (rosidl_adapter and
 rosidl_generator_cpp, nothing compiled); and test_ws_ros2 with the ROS 2
 wheels' rosidl_default_generators (build/ros2-wheels: C, C++, Python and
 their type support, compiled), as a ROS 2 distribution builds it. Each in
-two copies: with the
-mros2 generator (find_package(rosidl_generator_mros2)) and without it (that
-line made find_package(rosidl_cmake), which on Debian, where no
-rosidl_default_generators pulls it in, defines rosidl_generate_interfaces()). Per workspace, --runs rounds of a clean colcon build of each
-copy (build, install and log removed; the copies taking turns), then
---rebuilds no-change rebuilds of each; wall seconds and CPU seconds (user +
-system of every process the build ran). The mros2 generator runs through a
-wrapper (-Drosidl_generator_mros2_BIN) that counts its processes and their
-CPU seconds, so a no-change rebuild shows whether it ran at all.
+two copies: with the mros2 generator (find_package(rosidl_generator_mros2))
+and without it (that line made find_package(rosidl_cmake), which on Debian,
+where no rosidl_default_generators pulls it in, defines
+rosidl_generate_interfaces()). Per workspace, --runs rounds of a clean
+colcon build of each copy (build, install and log removed; the copies taking
+turns), then --rebuilds no-change rebuilds of each; wall seconds and CPU
+seconds (user + system of every process the build ran). The mros2 generator
+runs through a wrapper (-Drosidl_generator_mros2_BIN) that counts its
+processes and their CPU seconds, so a no-change rebuild shows whether it ran
+at all.
 
 Then, per interface package of the "with" copy: the commands that build ran
 for rosidl_generator_cpp and for the mros2 generator (read from CMake's

@@ -86,8 +86,8 @@ def _compiles(include_dir, header, after_mros2_h, scratch):
         if after_mros2_h:
             stream.write('#include "mros2.h"\n')
         stream.write('#include "%s"\n' % header)
-    result = subprocess.run(['g++', '-std=c++14', '-fsyntax-only', '-I', include_dir, '-I', RUNTIME,
-                             source], capture_output=True, text=True)
+    result = subprocess.run(['g++', '-std=c++14', '-fsyntax-only', '-I', include_dir,
+                             '-I', RUNTIME, source], capture_output=True, text=True)
     if result.returncode == 0:
         return 'yes', ''
     error = next((line for line in result.stderr.splitlines() if 'error' in line), '')

@@ -51,8 +51,8 @@ def executable(build_dir, side, round_number):
 
 
 def measure(build_dir, side, instance, operation, seconds, round_number):
-    command = [executable(build_dir, side, round_number), 'time', str(instance), operation, str(seconds),
-               str(heap_shift(round_number))]
+    command = [executable(build_dir, side, round_number), 'time', str(instance), operation,
+               str(seconds), str(heap_shift(round_number))]
     output = subprocess.run(command, capture_output=True, text=True, check=True).stdout.split()
     return int(output[0]), float(output[1])
 
@@ -60,7 +60,8 @@ def measure(build_dir, side, instance, operation, seconds, round_number):
 def instructions_per_call(build_dir, side, instance, operation, calls=20):
     def collected(count):
         run = subprocess.run(['valgrind', '--tool=callgrind', '--callgrind-out-file=/dev/null',
-                              executable(build_dir, side, 0), 'repeat', str(instance), operation, str(count)],
+                              executable(build_dir, side, 0), 'repeat', str(instance), operation,
+                              str(count)],
                              capture_output=True, text=True, check=True)
         return int(re.search(r'Collected : (\d+)', run.stderr).group(1))
     return (collected(2 * calls) - collected(calls)) / calls
@@ -69,7 +70,8 @@ def instructions_per_call(build_dir, side, instance, operation, calls=20):
 def instances(build_dir):
     listing = subprocess.run([executable(build_dir, 'genmros', 0), 'list'],
                              capture_output=True, text=True, check=True).stdout
-    return [(name, large == '1') for name, large in (line.split('\t') for line in listing.splitlines())]
+    return [(name, large == '1')
+            for name, large in (line.split('\t') for line in listing.splitlines())]
 
 
 def ratio_cell(rounds, numerator, denominator):
@@ -95,13 +97,14 @@ def main():
                 order = sides[round_number % len(sides):] + sides[:round_number % len(sides)]
                 times = {}
                 for side in order:
-                    size, times[side] = measure(arguments.build_dir, side, index, operation, arguments.seconds,
-                                                round_number)
+                    size, times[side] = measure(arguments.build_dir, side, index, operation,
+                                                arguments.seconds, round_number)
                 rounds.append(times)
             rows.append((name, operation, size, sides, rounds))
 
-    print('Median ns per call over %d rounds (each a fresh process per side: warm-up, then the median of 15 '
-          'batches; every side of a round in the same code layout and heap shift, another each round); '
+    print('Median ns per call over %d rounds (each a fresh process per side: warm-up, '
+          'then the median of 15 batches; every side of a round in the same code layout '
+          'and heap shift, another each round); '
           'speed ratios are roscpp time / genmros time, median (min-max) of the rounds.'
           % arguments.rounds)
     print()

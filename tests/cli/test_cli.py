@@ -69,7 +69,8 @@ def test_no_arguments_is_one_line_and_exit_2(capsys):
         'genmros: error: give a subcommand (genmros --help lists them)')
 
 
-@pytest.mark.parametrize('argv', [['exprot', '-o', 'out'], ['Missing.msg', '-p', 'demo', '-o', 'x']])
+@pytest.mark.parametrize('argv', [['exprot', '-o', 'out'],
+                                  ['Missing.msg', '-p', 'demo', '-o', 'x']])
 def test_an_unknown_subcommand_is_named_with_the_list(argv, capsys):
     assert main(argv) == 2
     assert capsys.readouterr().err.splitlines()[-1] == (

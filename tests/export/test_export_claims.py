@@ -17,7 +17,8 @@ def _generate(tmp_path, name, text):
     source = tmp_path / 'src' / 'demo' / 'msg'
     source.mkdir(parents=True, exist_ok=True)
     (source / name).write_text(text)
-    run_genmros('generate', str(source / name), '-p', 'demo', '-o', str(tmp_path / 'devel' / 'demo'),
+    run_genmros('generate', str(source / name), '-p', 'demo',
+                '-o', str(tmp_path / 'devel' / 'demo'),
                 '-I', 'demo:%s' % source, '-I', 'std_msgs:%s' % STD_MSGS,
                 '--add-to-export-dir', str(tmp_path / 'export'))
 

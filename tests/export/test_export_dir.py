@@ -32,8 +32,8 @@ def test_colcon_export_lists_every_importable_type(tmp_path):
                               'demo/SwitchResponse', 'demo/Switch']
     with open(export.cmake_file) as stream:
         cmake = stream.read()
-    assert 'set(MROS_EXPORT_TYPES\n  demo/Lamp\n  demo/SwitchRequest\n  demo/SwitchResponse\n  demo/Switch\n)' \
-        in cmake
+    assert ('set(MROS_EXPORT_TYPES\n  demo/Lamp\n  demo/SwitchRequest\n'
+            '  demo/SwitchResponse\n  demo/Switch\n)' in cmake)
     assert 'include("%s")' % MODULE in cmake
     assert os.path.isfile(str(tmp_path / 'export' / 'COLCON_IGNORE'))
     assert os.path.isfile(str(tmp_path / 'export' / 'share' / 'demo' / 'package.xml'))

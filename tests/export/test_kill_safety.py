@@ -70,8 +70,8 @@ def _sources(version):
     for index in range(TYPES):
         if version == 'new' and index == 0:
             continue
-        files['msg/T%d.msg' % index] = 'std_msgs/Header header\ngeometry_msgs/Pose pose\nint32 %s%d\n' % (
-            version, index)
+        files['msg/T%d.msg' % index] = ('std_msgs/Header header\ngeometry_msgs/Pose pose\n'
+                                        'int32 %s%d\n' % (version, index))
     if version == 'new':
         files['msg/Added.msg'] = 'T1 t\n'
     return files
@@ -129,7 +129,8 @@ def test_random_kills_leave_old_or_new(exports, tmp_path):
     killed_while_running = 0
     for attempt in range(KILLS):
         output = shutil.copytree(old, str(tmp_path / ('out%d' % attempt)))
-        process = subprocess.Popen([sys.executable, '-m', 'colcon_mros'] + _export_arguments(workspace, output),
+        process = subprocess.Popen([sys.executable, '-m', 'colcon_mros']
+                                   + _export_arguments(workspace, output),
                                    cwd=REPO, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         # A sweep from early in the run to past its usual end, so that one slow
         # or fast timing run cannot put every kill on one side of the exchange.
@@ -156,7 +157,8 @@ def test_random_kills_leave_old_or_new(exports, tmp_path):
 def test_kill_at_each_phase_of_an_export(exports, tmp_path, phase, expected):
     workspace, old, new = exports
     output = shutil.copytree(old, str(tmp_path / 'out'))
-    result = subprocess.run([sys.executable, '-c', LAUNCHER, phase] + _export_arguments(workspace, output),
+    result = subprocess.run([sys.executable, '-c', LAUNCHER, phase]
+                            + _export_arguments(workspace, output),
                             cwd=REPO, capture_output=True, text=True)
     assert result.returncode == -signal.SIGKILL, result.stderr
     assert _contents(output) == _contents(old if expected == 'old' else new)

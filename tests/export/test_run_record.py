@@ -83,7 +83,8 @@ def _make_would_remake(tmp_path, record_path):
                     os.path.basename(record_path))
     result = subprocess.run(['make', '-n', '-f', os.path.basename(record_path), '-f', recipe,
                              os.path.basename(record_path)], cwd=str(tmp_path),
-                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                            universal_newlines=True)
     assert result.returncode == 0, result.stdout
     return 'echo remade' in result.stdout
 
@@ -123,7 +124,8 @@ def test_export_with_a_record_does_nothing_until_something_changes(tmp_path):
     arguments = ['--workspace', 'ws', '--type', 'demo/Lamp', '-o', 'out', '--record', 'out.d']
     cwd = str(tmp_path)
     first = _export(*arguments, cwd=cwd)
-    assert first.stdout == 'genmros: exported 1 message type and 0 service types to out\n', first.stdout
+    assert first.stdout == (
+        'genmros: exported 1 message type and 0 service types to out\n'), first.stdout
     header = str(tmp_path / 'out' / 'demo' / 'Lamp.h')
     written = os.stat(header).st_mtime_ns
 

@@ -27,7 +27,8 @@ def _run(argv, cwd, **kwargs):
 
 
 def _ignored_files():
-    return _run(['git', 'status', '--porcelain', '--ignored', '--untracked-files=all'], REPO).stdout
+    return _run(['git', 'status', '--porcelain', '--ignored', '--untracked-files=all'],
+                REPO).stdout
 
 
 def _package_files():
@@ -64,13 +65,13 @@ def test_uninstall_leaves_catkin_and_colcon_working_and_setup_reinstalls(tmp_pat
 
         colcon = _ordinary_workspace(tmp_path / 'colcon_ws')
         _run(['colcon', 'build'], colcon, env=environment)
-        assert os.path.isfile(os.path.join(colcon, 'install', 'mros_test_base', 'include', 'mros_test_base',
-                                           'Vector3i.h'))
+        assert os.path.isfile(os.path.join(colcon, 'install', 'mros_test_base', 'include',
+                                           'mros_test_base', 'Vector3i.h'))
     finally:
         _run([os.path.join(REPO, 'scripts', 'setup.sh')], REPO)
     assert _run(['dpkg', '-S', MARKER], REPO).stdout == 'colcon-mros: %s\n' % MARKER
-    assert _run(['dpkg', '-S', shutil.which('genmros', path=environment['PATH'])], REPO).stdout.startswith(
-        'colcon-mros: ')
+    assert _run(['dpkg', '-S', shutil.which('genmros', path=environment['PATH'])],
+                REPO).stdout.startswith('colcon-mros: ')
     assert _ignored_files() == before  # no build/ or *.egg-info in the source tree
 
 
@@ -96,12 +97,12 @@ def test_a_user_install_registers_the_generator_through_its_catkin_prefix(tmp_pa
             log = user.run(['bash', '-c', script], workspace, bin_on_path=False).stdout
             assert os.path.isfile(os.path.join(workspace, header)) == registered, log[-2000:]
         user.run(['/usr/bin/python3', '-m', 'pip', 'uninstall', '--yes', '--quiet'] +
-                 [flag for flag in pip_flags() if flag == '--break-system-packages'] + ['colcon-mros'],
-                 user.root)
+                 [flag for flag in pip_flags() if flag == '--break-system-packages'] +
+                 ['colcon-mros'], user.root)
         assert not os.path.exists(prefix)
         # Without the install the line fails, saying why, and sets nothing.
-        result = user.run(['bash', '-c', registration + ' && echo "set: $CMAKE_PREFIX_PATH"'], user.root,
-                          check=False, bin_on_path=False)
+        result = user.run(['bash', '-c', registration + ' && echo "set: $CMAKE_PREFIX_PATH"'],
+                          user.root, check=False, bin_on_path=False)
         assert result.returncode != 0 and 'set:' not in result.stdout
         assert 'No module named colcon_mros' in result.stderr
     finally:

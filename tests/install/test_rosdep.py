@@ -38,7 +38,8 @@ def test_a_package_depending_on_genmros_resolves_to_the_installed_package(tmp_pa
     package = tmp_path / 'src' / 'firmware_msgs'
     package.mkdir(parents=True)
     (package / 'package.xml').write_text(PACKAGE_XML)
-    environment = dict(os.environ, ROSDEP_SOURCE_PATH=str(sources), ROS_HOME=str(tmp_path / 'home'),
+    environment = dict(os.environ, ROSDEP_SOURCE_PATH=str(sources),
+                       ROS_HOME=str(tmp_path / 'home'),
                        ROSDISTRO_INDEX_URL='file://%s' % index)
     subprocess.run(['rosdep', 'update'], env=environment, check=True, capture_output=True)
     assert _rosdep(environment, 'resolve', 'genmros').split() == ['#apt', 'colcon-mros']

@@ -29,7 +29,7 @@ project(user_firmware CXX)
 include("{export}/mros_export.cmake")
 add_executable(firmware main.cpp)
 mros_import_messages(TARGET firmware EXPORT_DIR "${{MROS_EXPORT_DIR}}" TYPES mros_test_base/Vector3i)
-'''
+'''  # noqa: E501
 FIRMWARE_MAIN = '''\
 #include <mros_test_base/Vector3i.h>
 #include "message_headers.h"

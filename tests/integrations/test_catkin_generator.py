@@ -18,8 +18,8 @@ from colcon_mros.mros_v1.cpp import SUPPORT_HEADERS
 from fixtures.build_integration.tools import (
     MESSAGE_PACKAGES, TEST_WS_SRC,
     build_firmware_of_whole_export, compile_headers, expected_header_names, genmros_export,
-    genmsg_md5, genpy_default_size, headers_under, imported_firmware_output, new_workspace, package_headers, run,
-    search_path_of, unwrapped, user_environment)
+    genmsg_md5, genpy_default_size, headers_under, imported_firmware_output, new_workspace,
+    package_headers, run, search_path_of, unwrapped, user_environment)
 from testing.ros_paths import prefix_arguments, ros1_prefixes
 
 pytestmark = pytest.mark.slow
@@ -105,8 +105,8 @@ def _catkin_build(workspace, export_dir):
     _declare_genmros(workspace, 'mros_test_base')
     run(['catkin', 'init'], workspace)
     run(['catkin', 'config', '--install'], workspace)
-    log = run(['catkin', 'build', '-j4', '-p4', '--verbose', '--no-status', '--no-notify'], workspace,
-              env=user_environment(MROS_EXPORT_DIR=export_dir)).stdout
+    log = run(['catkin', 'build', '-j4', '-p4', '--verbose', '--no-status', '--no-notify'],
+              workspace, env=user_environment(MROS_EXPORT_DIR=export_dir)).stdout
     return Build(workspace, [os.path.join(workspace, 'devel', GENMROS_INCLUDE)],
                  os.path.join(workspace, 'install', GENMROS_INCLUDE), export_dir, log)
 
@@ -150,13 +150,15 @@ def test_devel_headers_alone_meet_gencpp_with_one_clear_line(build, tmp_path):
     # that Labeled contains is found in /usr/include, and it is gencpp's.
     source = tmp_path / 'firmware.cpp'
     source.write_text('#include <mros_test_base/Labeled.h>\nint main() { return 0; }\n')
-    result = run(['g++', '-std=c++11', '-fsyntax-only'] + ['-I' + root for root in build.devel_roots] +
-                 [str(source)], str(tmp_path), check=False)
+    result = run(['g++', '-std=c++11', '-fsyntax-only']
+                 + ['-I' + root for root in build.devel_roots] + [str(source)],
+                 str(tmp_path), check=False)
     errors = [line for line in result.stdout.splitlines() if ': error: ' in line]
     assert result.returncode != 0
     assert errors[0].endswith(
-        "#error \"the std_msgs/ColorRGBA.h found first is not genmros' (gencpp's?): compile against a "
-        "genmros export dir's include/, which holds every type its headers include\""), errors[0]
+        "#error \"the std_msgs/ColorRGBA.h found first is not genmros' (gencpp's?): "
+        "compile against a genmros export dir's include/, which holds every type its headers "
+        "include\""), errors[0]
 
 
 def test_install_space_holds_the_same_headers(build):
@@ -252,8 +254,8 @@ def test_export_dir_from_the_environment_holds_until_turned_off(tmp_path):
     replace_message('Added', 'Later')
     log = run(build + ['--force-cmake'], workspace,
               env=user_environment(MROS_EXPORT_DIR=export_dir)).stdout
-    assert "genmros: MROS_EXPORT_DIR in the environment ('%s') is ignored" % export_dir in unwrapped(
-        log)
+    assert ("genmros: MROS_EXPORT_DIR in the environment ('%s') is ignored" % export_dir
+            in unwrapped(log))
     assert os.path.isfile(os.path.join(workspace, 'devel',
                           GENMROS_INCLUDE, 'mros_test_base', 'Later.h'))
     assert sorted(os.listdir(exported)) == ['Added.h', 'Vector3i.h']

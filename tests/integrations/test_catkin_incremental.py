@@ -18,7 +18,8 @@ import time
 import pytest
 
 from fixtures.build_integration.tools import (
-    GENERATOR_LOG_LINE, MESSAGE_PACKAGES, genmros_export, headers_under, mtimes, new_workspace, run)
+    GENERATOR_LOG_LINE, MESSAGE_PACKAGES, genmros_export, headers_under, mtimes,
+    new_workspace, run)
 from testing.ros_paths import prefix_arguments, ros1_prefixes
 
 pytestmark = pytest.mark.slow
@@ -236,12 +237,12 @@ def test_a_broken_msg_stops_its_package_only_and_leaves_its_headers(workspace):
     path = workspace.source('mros_test', 'msg', 'Empty.msg')
     with open(path) as stream:
         line = len(stream.read().splitlines())
-    result = run(['catkin_make', '-k', '-DMROS_EXPORT_DIR=%s' % workspace.export_dir], workspace.root,
-                 check=False)
+    result = run(['catkin_make', '-k', '-DMROS_EXPORT_DIR=%s' % workspace.export_dir],
+                 workspace.root, check=False)
     assert result.returncode != 0
     errors = [text for text in result.stdout.splitlines() if text.startswith('genmros: error:')]
-    assert errors == ['genmros: error: %s:%d: float32 constant 1e39 is beyond the range of float32 '
-                      '(largest finite value 3.4028234663852886e+38)' % (path, line)]
+    assert errors == ['genmros: error: %s:%d: float32 constant 1e39 is beyond the range of '
+                      'float32 (largest finite value 3.4028234663852886e+38)' % (path, line)]
     after = headers_under(workspace.devel)
     # The other package was generated; the broken one kept every header as it was.
     assert b'int32_t w;' in after[os.path.join('mros_test_base', 'Vector3i.h')]

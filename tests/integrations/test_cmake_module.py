@@ -238,12 +238,14 @@ def test_find_package_under_a_cross_toolchain_file(tmp_path):
     project = tmp_path / 'project'
     project.mkdir()
     (project / 'CMakeLists.txt').write_text(
-        'cmake_minimum_required(VERSION 3.13)\nproject(firmware CXX)\nfind_package(genmros REQUIRED)\n'
+        'cmake_minimum_required(VERSION 3.13)\nproject(firmware CXX)\n'
+        'find_package(genmros REQUIRED)\n'
         'add_library(firmware STATIC firmware.cpp)\n'
         'mros_generate_messages(TARGET firmware TYPES mros_test/PersonalData PACKAGE_PATHS %s)\n'
         % TEST_WS_SRC)
-    (project / 'firmware.cpp').write_text('#include <message_headers.h>\n'
-                                          'int size() { return mros_test::PersonalData().dataSize(); }\n')
+    (project / 'firmware.cpp').write_text(
+        '#include <message_headers.h>\n'
+        'int size() { return mros_test::PersonalData().dataSize(); }\n')
     configure = ['cmake', '-S', str(project), '-DCMAKE_TOOLCHAIN_FILE=%s' % toolchain]
     hidden = run(configure + ['-B', str(tmp_path / 'plain')], str(tmp_path), check=False)
     assert hidden.returncode != 0 and 'genmrosConfig.cmake' in hidden.stdout
@@ -282,8 +284,8 @@ def test_import_bounded_storage_generates_its_own_headers(firmware, catkin_expor
                        MROS_OPTIONS=_bounds_file(tmp_path, 10))
     firmware.build()
     assert firmware.output()['PUB_MSG_MAX_SIZE'] == '44'
-    assert os.path.isfile(os.path.join(firmware.build_dir, 'mros_messages', 'firmware', 'mros_test',
-                                       'PersonalData.h'))
+    assert os.path.isfile(os.path.join(firmware.build_dir, 'mros_messages', 'firmware',
+                                       'mros_test', 'PersonalData.h'))
     # The export's heap headers are not on the firmware's include path.
     flags = _makefiles(firmware, 'flags.make')
     assert 'mros_messages/firmware' in flags and os.path.join(
@@ -291,8 +293,9 @@ def test_import_bounded_storage_generates_its_own_headers(firmware, catkin_expor
 
 
 @pytest.mark.parametrize('cache, expected', [
-    ({'MROS_STORAGE': 'stack'}, "mros_generate_messages(): genmros export: error: argument "
-                                "--storage: invalid choice: 'stack' (choose from 'heap', 'bounded')"),
+    ({'MROS_STORAGE': 'stack'},
+     "mros_generate_messages(): genmros export: error: argument "
+     "--storage: invalid choice: 'stack' (choose from 'heap', 'bounded')"),
     ({'MROS_STORAGE': 'bounded', 'MROS_OPTIONS': '/nonexistent/firmware.options'},
      "mros_generate_messages(): genmros: error: /nonexistent/firmware.options: cannot read "
      'options file: No such file or directory'),

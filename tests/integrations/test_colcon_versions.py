@@ -29,12 +29,14 @@ def colcons(tmp_path_factory):
     subprocess.run(pip + ['--upgrade', 'colcon-core'], check=True, capture_output=True)
     subprocess.run(pip + pip_flags() + [copy_sources(root)], check=True, capture_output=True)
     return {'debian': ('/usr/bin/python3', user_environment()),
-            'newest': (python, user_environment(PATH=os.path.join(venv, 'bin') + ':/usr/bin:/bin'))}
+            'newest': (python,
+                       user_environment(PATH=os.path.join(venv, 'bin') + ':/usr/bin:/bin'))}
 
 
 def _version(python, environment):
     return subprocess.run([python, '-c', 'import colcon_core; print(colcon_core.__version__)'],
-                          env=environment, capture_output=True, text=True, check=True).stdout.strip()
+                          env=environment, capture_output=True, text=True,
+                          check=True).stdout.strip()
 
 
 def test_the_versions_are_debians_and_a_newer_one(colcons):
@@ -47,8 +49,8 @@ def test_the_versions_are_debians_and_a_newer_one(colcons):
 def test_build_exports_with_the_flag_and_only_with_it(colcons, version, tmp_path):
     python, environment = colcons[version]
     colcon = [python, '-m', 'colcon']
-    assert '--mros-export DIR' in run(colcon + \
-                                      ['build', '--help'], str(tmp_path), environment).stdout
+    assert '--mros-export DIR' in run(colcon + ['build', '--help'], str(tmp_path),
+                                      environment).stdout
     workspace = str(tmp_path / 'ws')
     shutil.copytree(os.path.join(TEST_WS, 'src', 'mros_test_base'),
                     os.path.join(workspace, 'src', 'mros_test_base'))

@@ -132,7 +132,8 @@ def test_the_export_holds_the_built_types_and_their_definitions(workspace):
                      'include/mros2_test_msgs/srv/query.hpp',
                      'include/mros2_base_msgs/msg/stamp.hpp',
                      'include/mros2_message_wire.hpp', 'include/mros_message_containers.h',
-                     'share/mros2_test_msgs/msg/Reading.msg', 'share/mros2_test_msgs/srv/Query.srv',
+                     'share/mros2_test_msgs/msg/Reading.msg',
+                     'share/mros2_test_msgs/srv/Query.srv',
                      'share/mros2_base_msgs/msg/Stamp.msg', 'share/mros2_test_msgs/package.xml',
                      'share/ament_index/resource_index/packages/mros2_base_msgs'):
         assert os.path.isfile(os.path.join(mros2, relative)), relative

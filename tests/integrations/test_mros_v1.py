@@ -58,7 +58,8 @@ def test_every_header_compiles_without_warnings(every_header_sources, target, mo
 
 def _snapshot(directory):
     return {os.path.relpath(p, directory): open(p, 'rb').read()
-            for p in glob.glob(os.path.join(directory, '**', '*'), recursive=True) if os.path.isfile(p)}
+            for p in glob.glob(os.path.join(directory, '**', '*'), recursive=True)
+            if os.path.isfile(p)}
 
 
 @pytest.fixture
@@ -158,7 +159,8 @@ def test_the_make_fragment_stops_where_the_settings_are_too_small(app_dir, tmp_p
                                                                             packet_config)
     refused = _make(app_dir, flags)
     assert refused.returncode != 0
-    misfits = re.findall(r'^genmros: error: (.+):(\d+): (\S+): .* needs (\w+) >= \d+ \(it is (\d+);',
+    misfits = re.findall(r'^genmros: error: (.+):(\d+): (\S+): '
+                         r'.* needs (\w+) >= \d+ \(it is (\d+);',
                          refused.stderr, re.MULTILINE)
     assert sorted(misfits) == sorted(
         (str(packet_config), str(lines[setting]), type_name, setting, value)
@@ -176,15 +178,16 @@ def test_genmros_names_its_make_fragment():
 
 
 def test_aggregates_cover_the_named_types_and_headers_their_closure(tmp_path):
-    run_genmros('export', '--workspace', TEST_WS, '--type', 'mros_test/NestedTypes', '-o', str(tmp_path),
-                *prefix_arguments(ros1_prefixes()))
+    run_genmros('export', '--workspace', TEST_WS, '--type', 'mros_test/NestedTypes',
+                '-o', str(tmp_path), *prefix_arguments(ros1_prefixes()))
     assert os.path.isfile(str(tmp_path / 'geometry_msgs' / 'Pose.h'))
     with open(str(tmp_path / 'message_class_specialization.h')) as stream:
         instantiations = [line for line in stream if line.startswith('template ')]
     assert instantiations == [
         'template ros::Subscriber ros::NodeHandle::subscribe(std::string, int, '
         'void (*)(mros_test::NestedTypes*));\n',
-        'template ros::Publisher ros::NodeHandle::advertise<mros_test::NestedTypes>(std::string, int);\n',
+        'template ros::Publisher '
+        'ros::NodeHandle::advertise<mros_test::NestedTypes>(std::string, int);\n',
         'template void ros::Publisher::publish(mros_test::NestedTypes&);\n']
     with open(str(tmp_path / 'message_headers.h')) as stream:
         cases = re.findall(r'case (\S+)::MROS_TYPE_ID', stream.read())
@@ -199,8 +202,8 @@ def test_string_constants_cost_no_constructor_and_no_heap(test_ws_export, tmp_pa
     command = TARGETS['cortex-m4'] + ['-std=gnu++98', '-Os'] + STRICT_FLAGS + [
         '-c', '-I', test_ws_export, '-o', str(objects), str(source)]
     subprocess.run(command, check=True)
-    symbols = subprocess.run(['arm-none-eabi-nm', '-C', str(objects)], capture_output=True, text=True,
-                             check=True).stdout
+    symbols = subprocess.run(['arm-none-eabi-nm', '-C', str(objects)], capture_output=True,
+                             text=True, check=True).stdout
     assert 'GREETING' in symbols
     # No static constructor, no guard variable, no call into the allocator.
     for sign in ('_GLOBAL__sub_I', 'guard variable', 'operator new', 'malloc'):

@@ -86,12 +86,13 @@ def noetic(tmp_path_factory):
     # into a venv without system site packages, with no Debian-only flag.
     source = copy_sources(root)
     wheels = os.path.join(root, 'wheels')
-    subprocess.run([sys.executable, '-m', 'pip', 'wheel', '--quiet', '--no-deps', '--no-build-isolation',
-                    '-w', wheels, source], check=True, capture_output=True)
+    subprocess.run([sys.executable, '-m', 'pip', 'wheel', '--quiet', '--no-deps',
+                    '--no-build-isolation', '-w', wheels, source],
+                   check=True, capture_output=True)
     subprocess.run([sys.executable, '-m', 'venv', layout.venv], check=True)
     wheel = os.path.join(wheels, os.listdir(wheels)[0])
-    subprocess.run([os.path.join(layout.venv, 'bin', 'pip'), 'install', '--quiet', '--no-deps', wheel],
-                   check=True, capture_output=True)
+    subprocess.run([os.path.join(layout.venv, 'bin', 'pip'), 'install', '--quiet', '--no-deps',
+                    wheel], check=True, capture_output=True)
     return layout
 
 
@@ -100,16 +101,17 @@ def test_before_sourcing_genmros_says_to_source_and_writes_nothing(noetic, tmp_p
                         str(tmp_path), sourced=False)
     assert result.returncode == 1
     assert result.stderr == (
-        'genmros: error: %s cannot import genmsg; install or source genmsg (Debian: apt-get install '
-        'python3-genmsg; ROS Noetic: source /opt/ros/noetic/setup.bash), or run genmros with the '
-        'Python that has it\n' % os.path.join(noetic.venv, 'bin', 'python3'))
+        'genmros: error: %s cannot import genmsg; install or source genmsg '
+        '(Debian: apt-get install python3-genmsg; ROS Noetic: source '
+        '/opt/ros/noetic/setup.bash), or run genmros with the Python that has it\n'
+        % os.path.join(noetic.venv, 'bin', 'python3'))
     assert os.listdir(str(tmp_path)) == []
     assert noetic.run('genmros --help', str(tmp_path), sourced=False).returncode == 0
 
 
 def test_sourced_genmros_takes_the_packages_of_the_sourced_prefix(noetic, tmp_path):
-    result = noetic.run('genmros export --type std_msgs/NoeticOnly --type geometry_msgs/PoseStamped '
-                        '-o out', str(tmp_path))
+    result = noetic.run('genmros export --type std_msgs/NoeticOnly '
+                        '--type geometry_msgs/PoseStamped -o out', str(tmp_path))
     assert result.returncode == 0, result.stderr
     out = tmp_path / 'out'
     assert (out / 'std_msgs' / 'NoeticOnly.h').is_file()

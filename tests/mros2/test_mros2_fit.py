@@ -111,7 +111,8 @@ def test_a_firmware_that_fits_has_no_line(tmp_path):
     fit = _fit(tmp_path, ['chatter:%sEmpty' % TIF, 'eighteen_bytes_abc:%sEmpty' % TIF],
                ['state:%sBasicTypes' % TIF], config=_roomy(), limit='124',
                publisher=PUBLISHER_WITHOUT_WRITER.replace(
-                   'std::string topic_name;', 'std::string topic_name;\n    rtps::Writer* writer;'))
+                   'std::string topic_name;',
+                   'std::string topic_name;\n    rtps::Writer* writer;'))
     assert (fit.misfits, fit.warnings, fit.notes) == ([], [], [])
     assert 'Every endpoint fits.' in fit.report()
 

@@ -13,10 +13,12 @@ from compile_checks import (LANGUAGE_MODES, STRICT_FLAGS, TARGET_PARAMS, TARGETS
                             every_header_translation_unit)
 from testing.ros_paths import prefix_arguments, ros1_prefixes
 
-DEBIAN_SET = ['sensor_msgs/Image', 'sensor_msgs/PointCloud2', 'sensor_msgs/JointState', 'nav_msgs/Odometry',
-              'visualization_msgs/MarkerArray', 'std_msgs/Header', 'std_msgs/Float64MultiArray']
+DEBIAN_SET = ['sensor_msgs/Image', 'sensor_msgs/PointCloud2', 'sensor_msgs/JointState',
+              'nav_msgs/Odometry', 'visualization_msgs/MarkerArray', 'std_msgs/Header',
+              'std_msgs/Float64MultiArray']
 NO_HEAP = ['-Wl,--wrap=%s' % symbol for symbol in
-           ('malloc', 'calloc', 'realloc', '_malloc_r', '_calloc_r', '_realloc_r', '_Znwj', '_Znaj')]
+           ('malloc', 'calloc', 'realloc', '_malloc_r', '_calloc_r', '_realloc_r', '_Znwj',
+            '_Znaj')]
 
 
 def _options(path, text):
@@ -65,8 +67,8 @@ def test_bounded_headers_compile_without_warnings(bounded_exports, bounded_sourc
 
 @pytest.mark.slow  # arm-none-eabi-g++
 @pytest.mark.parametrize('storage, links', [('bounded', True), ('heap', False)])
-def test_bounded_firmware_links_without_an_allocator(bounded_exports, bounded_sources, test_ws_export,
-                                                     tmp_path, storage, links):
+def test_bounded_firmware_links_without_an_allocator(bounded_exports, bounded_sources,
+                                                     test_ws_export, tmp_path, storage, links):
     # The whole interface of every type, linked for a Cortex-M4 where malloc
     # and operator new are undefined (--wrap without a __wrap_ definition).
     # Heap storage must fail there, or the check would prove nothing.
@@ -78,9 +80,9 @@ def test_bounded_firmware_links_without_an_allocator(bounded_exports, bounded_so
     main.write_text('#include "%s"\nstatic uint8_t buffer[4096];\n'
                     'int main() { return exerciseAll(buffer, sizeof buffer); }\n' % source)
     command = TARGETS['cortex-m4'] + [
-        '-std=gnu++98', '-Os', '-fno-exceptions', '-fno-rtti', '-ffunction-sections', '-fdata-sections',
-        '-I', include, str(main), '-o', str(tmp_path / 'firmware.elf'), '--specs=nosys.specs',
-        '-Wl,--gc-sections'] + NO_HEAP
+        '-std=gnu++98', '-Os', '-fno-exceptions', '-fno-rtti', '-ffunction-sections',
+        '-fdata-sections', '-I', include, str(main), '-o', str(tmp_path / 'firmware.elf'),
+        '--specs=nosys.specs', '-Wl,--gc-sections'] + NO_HEAP
     result = subprocess.run(command, capture_output=True, text=True)
     if links:
         assert result.returncode == 0, result.stderr[-4000:]
@@ -167,11 +169,12 @@ int main() {
   printf("popped %d of 5, size %u\n", popped, static_cast<unsigned>(labeled.weights.size()));
   return 0;
 }
-'''
+'''  # noqa: E501
 
 
 def test_bounds_are_exact_and_never_exceeded(tmp_path):
-    options = _options(tmp_path / 'bounds.options', 'mros_test/PersonalData.first_name max_size:32\n'
+    options = _options(tmp_path / 'bounds.options',
+                       'mros_test/PersonalData.first_name max_size:32\n'
                        '* max_size:16 max_count:4\n')
     include = str(tmp_path / 'include')
     run_genmros('export', '--workspace', TEST_WS, '--type', 'mros_test/PersonalData', '--type',
@@ -180,7 +183,8 @@ def test_bounds_are_exact_and_never_exceeded(tmp_path):
     source = tmp_path / 'behaviour.cpp'
     source.write_text(BEHAVIOUR)
     program = str(tmp_path / 'behaviour')
-    subprocess.run(['g++', '-std=gnu++98', '-fsanitize=address,undefined', '-fno-sanitize-recover=all']
+    subprocess.run(['g++', '-std=gnu++98', '-fsanitize=address,undefined',
+                    '-fno-sanitize-recover=all']
                    + STRICT_FLAGS + ['-I', include, str(source), '-o', program], check=True)
     output = subprocess.run([program], capture_output=True, text=True, check=True).stdout
     assert output.splitlines() == [
@@ -260,9 +264,9 @@ def test_package_options_apply_to_bounded_exports_only(tmp_path):
 def test_bad_options_are_refused_with_their_line(tmp_path, text, line, problem):
     options = _options(tmp_path / 'bad.options', text)
     output = tmp_path / 'include'
-    result = run_genmros('export', '--workspace', TEST_WS, '--type', 'mros_test/PersonalData', '-o', str(output),
-                         *prefix_arguments(ros1_prefixes()), '--storage', 'bounded',
-                         '--options', options, check=False)
+    result = run_genmros('export', '--workspace', TEST_WS, '--type', 'mros_test/PersonalData',
+                         '-o', str(output), *prefix_arguments(ros1_prefixes()),
+                         '--storage', 'bounded', '--options', options, check=False)
     assert result.returncode == 1
     assert result.stderr.splitlines() == ['genmros: error: %s:%d: %s' % (options, line, problem)]
     assert not output.exists()
@@ -272,12 +276,12 @@ def test_a_field_without_a_bound_is_refused_at_its_definition(tmp_path):
     options = _options(tmp_path / 'partial.options',
                        'mros_test/PersonalData.first_name max_size:8\n')
     output = tmp_path / 'include'
-    result = run_genmros('export', '--workspace', TEST_WS, '--type', 'mros_test/PersonalData', '-o', str(output),
-                         *prefix_arguments(ros1_prefixes()), '--storage', 'bounded',
-                         '--options', options, check=False)
+    result = run_genmros('export', '--workspace', TEST_WS, '--type', 'mros_test/PersonalData',
+                         '-o', str(output), *prefix_arguments(ros1_prefixes()),
+                         '--storage', 'bounded', '--options', options, check=False)
     definition = os.path.join(TEST_WS, 'src', 'mros_test', 'msg', 'PersonalData.msg')
     assert result.returncode == 1
     assert result.stderr.splitlines() == [
-        "genmros: error: %s:3: field 'last_name' (string) has no max_size for bounded storage (add "
-        "'mros_test/PersonalData.last_name max_size:N' to an options file)" % definition]
+        "genmros: error: %s:3: field 'last_name' (string) has no max_size for bounded storage "
+        "(add 'mros_test/PersonalData.last_name max_size:N' to an options file)" % definition]
     assert not output.exists()

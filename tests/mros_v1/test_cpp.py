@@ -64,7 +64,8 @@ def test_members_that_meet_after_escaping_are_refused(tmp_path):
 
 
 @pytest.mark.parametrize('ros_type, value, literal', [
-    ('int64', -(1 << 63), '(-static_cast<int64_t>(static_cast<uint64_t>(0x7fffffffu) << 32 | 0xffffffffu) - 1)'),
+    ('int64', -(1 << 63),
+     '(-static_cast<int64_t>(static_cast<uint64_t>(0x7fffffffu) << 32 | 0xffffffffu) - 1)'),
     ('uint64', (1 << 64) - 1, '(static_cast<uint64_t>(0xffffffffu) << 32 | 0xffffffffu)'),
     ('int32', -(1 << 31), '(-2147483647 - 1)'),
     ('uint8', 255, '255u'),

@@ -106,7 +106,8 @@ def test_only_a_large_message_takes_static_storage(bounded_types, tmp_path):
     assert list(storage.values())[0] > 1000 > DELIVERY_ON_STACK_MAX
 
 
-def test_the_frame_table_exists_only_where_the_library_passes_no_frame_size(bounded_types, tmp_path):
+def test_the_frame_table_exists_only_where_the_library_passes_no_frame_size(bounded_types,
+                                                                            tmp_path):
     # mROS v1 as it is: memCopy notes each frame for on-board delivery.
     table = [name for name in _static_symbols(bounded_types, tmp_path) if 'OnBoardFrames' in name]
     assert table == ['mros::wire::OnBoardFrames::table()::slots']

@@ -115,11 +115,12 @@ def test_the_publishing_blocks_need_a_frame_slot_each_where_the_library_passes_n
                                            ROS_INNER_TOPIC_PUBLISHER_MEMPOOL1_QUELEN=17,
                                            ROS_INNER_TOPIC_PUBLISHER_MEMPOOL2_QUELEN=16))
     _, path, line = define(settings, 'ROS_INNER_TOPIC_PUBLISHER_MEMPOOL2_QUELEN')
-    expected = ("%s:%d: the publishing pools hold 33 blocks (ROS_INNER_TOPIC_PUBLISHER_MEMPOOL1_QUELEN "
-                '17, ROS_INNER_TOPIC_PUBLISHER_MEMPOOL2_QUELEN 16), each of which can hold a frame '
-                'waiting for on-board delivery: MROS_ONBOARD_FRAME_SLOTS needs >= 33 in every file '
-                "(it is not defined: mros_v1_delivery.h's default is 32), or the library passes the "
-                "frame's size (genmros' patch set)" % (path, line))
+    expected = ("%s:%d: the publishing pools hold 33 blocks "
+                '(ROS_INNER_TOPIC_PUBLISHER_MEMPOOL1_QUELEN 17, '
+                'ROS_INNER_TOPIC_PUBLISHER_MEMPOOL2_QUELEN 16), each of which can hold a frame '
+                'waiting for on-board delivery: MROS_ONBOARD_FRAME_SLOTS needs >= 33 '
+                "in every file (it is not defined: mros_v1_delivery.h's default is 32), "
+                "or the library passes the frame's size (genmros' patch set)" % (path, line))
     as_is = Fit(messages, read_settings(settings), frame_table=True)
     assert [misfit.line() for misfit in as_is.misfits] == [expected]
     with pytest.raises(GenmrosProblems) as refused:
@@ -128,8 +129,8 @@ def test_the_publishing_blocks_need_a_frame_slot_each_where_the_library_passes_n
     # The patched library keeps no table; a library not known here gets a warning.
     assert Fit(messages, read_settings(settings), frame_table=False).misfits == []
     unknown = Fit(messages, read_settings(settings))
-    assert (unknown.misfits, unknown.warnings[-1:]) == ([], [expected + ' (whether this library does, is '
-                                                        'not known here)'])
+    assert (unknown.misfits, unknown.warnings[-1:]) == (
+        [], [expected + ' (whether this library does, is not known here)'])
     # The firmware's own MROS_ONBOARD_FRAME_SLOTS, read where it is set.
     with open(settings[0], 'a') as stream:
         stream.write('#define MROS_ONBOARD_FRAME_SLOTS 33\n')
@@ -152,7 +153,8 @@ def test_a_connection_header_fits_for_certain_only_with_room_for_the_shortest_na
     assert [misfit.line() for misfit in fit.misfits] == [
         "%s: mros_test/PersonalData: a ROS publisher's connection header needs "
         'MROS_PACKET_MAXSIZE_RES_TCPROS >= %d (it is %d; even with the shortest topic and caller '
-        'id it needs %d)' % (reply_at, publisher + topic_max + PEER_NAME_MAX, reply, publisher + 4)]
+        'id it needs %d)'
+        % (reply_at, publisher + topic_max + PEER_NAME_MAX, reply, publisher + 4)]
     assert fit.warnings[0] == (
         "mros_test/PersonalData: a ROS subscriber's connection header (definition text %d bytes, "
         'a topic of up to %d and a caller id of up to %d, and the NUL) needs '
@@ -236,7 +238,8 @@ def test_the_header_sizes_are_those_rospy_and_roscpp_send(ros_workspace):
             connection.close()
         assert len(fields['message_definition'].encode()) == joint_state.text_bytes
         assert _header_size(fields) == SUBSCRIBER_HEADER_FIXED + sum(
-            len(fields[key].encode()) for key in ('topic', 'type', 'callerid', 'message_definition'))
+            len(fields[key].encode())
+            for key in ('topic', 'type', 'callerid', 'message_definition'))
         # A rospy and a roscpp publisher's replies, as a subscriber receives them.
         graph.start('rospy publisher', [PYTHON, '-c', PUBLISHER_NODE])
         graph.start('roscpp publisher', ros_workspace.roscpp('personal_data_talker'))

@@ -45,7 +45,8 @@ def _python_refusals(options, settings_dir):
     'publishing' or 'receiving'."""
     messages = firmware_messages(TYPES, [TEST_WS] + ros1_prefixes(), 'bounded', [options])
     fit = Fit(messages, read_settings(header_paths(settings_dir)))
-    return sorted((misfit.type_name, misfit.what.split(', ')[1].rstrip(',') if 'frame' in misfit.what
+    return sorted((misfit.type_name,
+                   misfit.what.split(', ')[1].rstrip(',') if 'frame' in misfit.what
                    else misfit.setting.name) for misfit in fit.misfits)
 
 

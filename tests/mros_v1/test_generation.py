@@ -18,22 +18,23 @@ STRICT = ['g++', '-std=c++11', '-Wall', '-Wextra', '-Werror', '-pedantic']
 
 
 def _tree(root):
-    return sorted(os.path.relpath(p, root) for p in glob.glob(os.path.join(root, '**', '*.h'), recursive=True))
+    return sorted(os.path.relpath(p, root)
+                  for p in glob.glob(os.path.join(root, '**', '*.h'), recursive=True))
 
 
 def _build_and_run(tmp_path, include_dirs, source_text, extra_sources=()):
     source = tmp_path / 'main.cpp'
     source.write_text(source_text)
     program = str(tmp_path / 'main')
-    command = STRICT + ['-o', program, str(source)] + \
-    list(extra_sources) + ['-I' + d for d in include_dirs]
+    command = (STRICT + ['-o', program, str(source)] + list(extra_sources)
+               + ['-I' + d for d in include_dirs])
     compiled = subprocess.run(command, capture_output=True, text=True)
     assert compiled.returncode == 0, compiled.stderr[-4000:]
     return subprocess.run([program], capture_output=True, text=True, check=True).stdout
 
 
-AGGREGATES = ['message_class_specialization.h', 'message_headers.h', 'msg_max_size.h', 'mros_v1_delivery.h',
-              'mros_v1_fit_check.h']
+AGGREGATES = ['message_class_specialization.h', 'message_headers.h', 'msg_max_size.h',
+              'mros_v1_delivery.h', 'mros_v1_fit_check.h']
 
 
 def test_export_of_one_type_brings_its_whole_closure(tmp_path):
@@ -46,8 +47,9 @@ def test_export_of_one_type_brings_its_whole_closure(tmp_path):
 
 def test_export_of_a_workspace_covers_every_type_and_dependency(test_ws_export):
     expected = {'mros_test_base/Vector3i.h', 'mros_test_base/Labeled.h', 'std_msgs/ColorRGBA.h',
-                'std_msgs/Header.h', 'geometry_msgs/Twist.h', 'geometry_msgs/Vector3.h', 'geometry_msgs/Point.h',
-                'mros_test/LookupPerson.h', 'mros_test/LookupPersonRequest.h', 'mros_test/LookupPersonResponse.h'}
+                'std_msgs/Header.h', 'geometry_msgs/Twist.h', 'geometry_msgs/Vector3.h',
+                'geometry_msgs/Point.h', 'mros_test/LookupPerson.h',
+                'mros_test/LookupPersonRequest.h', 'mros_test/LookupPersonResponse.h'}
     expected.update('mros_test/%s.h' % os.path.basename(p)[:-4]
                     for p in glob.glob(os.path.join(TEST_WS, 'src', 'mros_test', 'msg', '*.msg')))
     assert expected <= set(_tree(test_ws_export))
@@ -142,10 +144,10 @@ def test_the_msg_comments_become_the_type_and_members_comments(tmp_path):
 def test_type_ids_depend_on_the_type_name_only(tmp_path):
     run_genmros('export', '--type', 'std_msgs/Header', '-o', str(tmp_path / 'a'),
                 *prefix_arguments(ros1_prefixes()))
-    run_genmros('export', '--package', 'sensor_msgs', '--type', 'std_msgs/Header', '-o', str(tmp_path / 'b'),
-                *prefix_arguments(ros1_prefixes()))
-    assert filecmp.cmp(str(tmp_path / 'a' / 'std_msgs' / 'Header.h'), str(tmp_path / 'b' / 'std_msgs' / 'Header.h'),
-                       shallow=False)
+    run_genmros('export', '--package', 'sensor_msgs', '--type', 'std_msgs/Header',
+                '-o', str(tmp_path / 'b'), *prefix_arguments(ros1_prefixes()))
+    assert filecmp.cmp(str(tmp_path / 'a' / 'std_msgs' / 'Header.h'),
+                       str(tmp_path / 'b' / 'std_msgs' / 'Header.h'), shallow=False)
 
 
 def test_fields_named_like_cpp_keywords_compile_and_round_trip(tmp_path):
@@ -177,7 +179,7 @@ int main() {
               keyword_msgs::Keywords::register_, keyword_msgs::Keywords::typename_);
   return 0;
 }
-''')
+''')  # noqa: E501
     # 4 + (4+5) + (4+3*8) + 2 + 1 + 8 + 2 + (4+4) = 62 bytes
     assert output.split() == ['62', '62', '-7', 'fresh', '3', '1',
                               '200', '-1', '65535', 'size', '1', 'text']
@@ -200,7 +202,7 @@ int main() {
   const int32_t& bound = C::I32_MAX;  // odr-use: needs the out-of-class definition
   return bound == 2147483647 ? 0 : 1;
 }
-''')
+''')  # noqa: E501
     assert output.split('\n')[:5] == [
         '1 0 -128 127 255 -128 255',
         '-32768 65535 -2147483648 2147483647 4294967295',
@@ -224,8 +226,8 @@ def test_template_directory_override(tmp_path):
     with open(os.path.join(templates, 'msg.h.em'), 'a') as stream:
         stream.write('// custom template\n')
     output = str(tmp_path / 'include' / 'mros_test')
-    run_genmros('generate', os.path.join(TEST_WS, 'src', 'mros_test', 'msg', 'PersonalData.msg'), '-p', 'mros_test',
-                '-o', output, '-e', templates)
+    run_genmros('generate', os.path.join(TEST_WS, 'src', 'mros_test', 'msg', 'PersonalData.msg'),
+                '-p', 'mros_test', '-o', output, '-e', templates)
     with open(os.path.join(output, 'PersonalData.h')) as stream:
         assert stream.read().endswith('// custom template\n')
 
@@ -233,7 +235,8 @@ def test_template_directory_override(tmp_path):
 @pytest.mark.parametrize('arguments, expected', [
     (['--help'], ['genmros export', 'genmros mros2-export']),
     (['generate', '--help'], ['genmros generate [-h]', '-p PACKAGE', '-o OUTPUT_DIR']),
-    (['export', '--help'], ['--workspace WS', '--package PKG', '--type PKG/TYPE', '--variable-size-budget']),
+    (['export', '--help'],
+     ['--workspace WS', '--package PKG', '--type PKG/TYPE', '--variable-size-budget']),
 ])
 def test_help_describes_both_modes(arguments, expected):
     result = run_genmros(*arguments)
@@ -247,18 +250,20 @@ def test_generator_mode_fills_an_export_dir_with_the_whole_closure(test_ws_expor
     for package in ('mros_test_base', 'mros_test'):
         flags += ['-I', '%s:%s' % (package, os.path.join(TEST_WS, 'src', package, 'msg'))]
     export_dir = tmp_path / 'export'
-    run_genmros('generate', os.path.join(TEST_WS, 'src', 'mros_test', 'srv', 'LookupPerson.srv'), '-p', 'mros_test',
-                '-o', str(tmp_path / 'devel' / 'mros_test'), '--export-dir', str(export_dir), *flags)
+    run_genmros('generate', os.path.join(TEST_WS, 'src', 'mros_test', 'srv', 'LookupPerson.srv'),
+                '-p', 'mros_test', '-o', str(tmp_path / 'devel' / 'mros_test'),
+                '--export-dir', str(export_dir), *flags)
     assert _tree(str(export_dir / 'include')) == sorted([
         'geometry_msgs/Point.h', 'mros_test/LookupPerson.h', 'mros_test/LookupPersonRequest.h',
         'mros_test/LookupPersonResponse.h', 'mros_test/PersonalData.h'] + list(SUPPORT_HEADERS))
     for relative in _tree(str(export_dir / 'include')):
-        assert filecmp.cmp(str(export_dir / 'include' / relative), os.path.join(test_ws_export, relative),
-                           shallow=False), relative
+        assert filecmp.cmp(str(export_dir / 'include' / relative),
+                           os.path.join(test_ws_export, relative), shallow=False), relative
     definitions = sorted(os.path.relpath(os.path.join(d, n), str(export_dir / 'share'))
                          for d, _, names in os.walk(str(export_dir / 'share')) for n in names)
     assert definitions == ['geometry_msgs/msg/Point.msg', 'geometry_msgs/package.xml',
-                           'mros_test/msg/PersonalData.msg', 'mros_test/package.xml', 'mros_test/srv/LookupPerson.srv']
+                           'mros_test/msg/PersonalData.msg', 'mros_test/package.xml',
+                           'mros_test/srv/LookupPerson.srv']
     assert filecmp.cmp(str(export_dir / 'share' / 'geometry_msgs' / 'msg' / 'Point.msg'),
                        os.path.join(ros1_package_dir('geometry_msgs'), 'Point.msg'), shallow=False)
 
@@ -271,7 +276,8 @@ def test_catkin_devel_space_underlays_are_found(tmp_path):
     cmake_dir.mkdir(parents=True)
     (cmake_dir / 'mros_test_base-msg-paths.cmake').write_text(
         '# generated from genmsg/cmake/pkg-msg-paths.cmake.develspace.in\n\n'
-        'set(mros_test_base_MSG_INCLUDE_DIRS "%s")\nset(mros_test_base_MSG_DEPENDENCIES std_msgs)\n'
+        'set(mros_test_base_MSG_INCLUDE_DIRS "%s")\n'
+        'set(mros_test_base_MSG_DEPENDENCIES std_msgs)\n'
         % os.path.join(TEST_WS, 'src', 'mros_test_base', 'msg'))
     run_genmros('export', '--type', 'mros_test_base/Labeled', '-o', str(tmp_path / 'include'),
                 '--prefix', str(devel), *prefix_arguments(ros1_prefixes()))

@@ -60,16 +60,19 @@ def probe(test_ws_export, tmp_path_factory):
     """The C++ probe over genmros' test_ws headers (portable byte order path), and
     the type names it indexes."""
     messages = ['%s/%s' % (package, os.path.basename(p)[:-4])
-                for package, kind, paths in _workspace_definitions() if kind == 'msg' for p in paths]
+                for package, kind, paths in _workspace_definitions()
+                if kind == 'msg' for p in paths]
     services = [(package, p) for package, kind, paths in _workspace_definitions()
                 if kind == 'srv' for p in paths]
     type_set = cpp_harness.TypeSet(cpp_harness.search_path(), messages, services)
     directory = str(tmp_path_factory.mktemp('probe'))
     sources = cpp_harness.write_sources(directory, type_set, with_roscpp=False)
     # The byte-by-byte path that big-endian hosts take; the roscpp comparison covers the other.
-    objects = [cpp_harness.compile_object(sources['mros_side.cpp'], directory, [test_ws_export, directory],
+    objects = [cpp_harness.compile_object(sources['mros_side.cpp'], directory,
+                                          [test_ws_export, directory],
                                           flags=['-DMROS_WIRE_PORTABLE']),
-               cpp_harness.compile_object(os.path.join(cpp_harness.RANDOM_HEADER_DIR, 'probe.cpp'), directory, [])]
+               cpp_harness.compile_object(os.path.join(cpp_harness.RANDOM_HEADER_DIR, 'probe.cpp'),
+                                          directory, [])]
     program = cpp_harness.link_program(objects, os.path.join(directory, 'probe'))
     process = subprocess.Popen([program], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
     try:
@@ -104,7 +107,8 @@ def _random_scalar(ros_type, rng):
         return rng.random() < 0.5
     if ros_type in ('int8', 'int16', 'int32', 'int64', 'byte'):
         bits = {'byte': 8}.get(ros_type) or int(ros_type[3:])
-        return rng.choice([-(1 << (bits - 1)), (1 << (bits - 1)) - 1, 0, rng.randrange(-(1 << (bits - 1)), 1 << (bits - 1))])
+        return rng.choice([-(1 << (bits - 1)), (1 << (bits - 1)) - 1, 0,
+                           rng.randrange(-(1 << (bits - 1)), 1 << (bits - 1))])
     if ros_type in ('uint8', 'uint16', 'uint32', 'uint64', 'char'):
         bits = {'char': 8}.get(ros_type) or int(ros_type[4:])
         return rng.choice([0, (1 << bits) - 1, rng.randrange(1 << bits)])
@@ -134,7 +138,8 @@ def _random_value(ros_type, rng):
 
 def _random_message(cls, rng):
     message = cls()
-    for name, ros_type in zip(message.__slots__, message._slot_types):  # genpy qualifies every type
+    # genpy qualifies every type
+    for name, ros_type in zip(message.__slots__, message._slot_types):
         setattr(message, name, _random_value(ros_type, rng))
     return message
 

@@ -44,9 +44,11 @@ def _type_per_line(prefix, declarations):
 # type holds after the conversion (test_float_constants_hold_what_their_type_holds).
 FLOAT_LIMITS_MSG = (
     'float32 F32_TO_ZERO=1e-50\nfloat32 F32_TO_MINUS_ZERO=-1e-50\nfloat32 F32_SUBNORMAL=1e-40\n'
-    'float32 F32_SMALLEST=1.4e-45\nfloat32 F32_MAX=3.4028235e38\nfloat32 F32_ROUNDS_TO_MAX=3.40282356e38\n'
+    'float32 F32_SMALLEST=1.4e-45\nfloat32 F32_MAX=3.4028235e38\n'
+    'float32 F32_ROUNDS_TO_MAX=3.40282356e38\n'
     'float32 F32_LOWEST=-3.4028235e38\nfloat32 F32_INF=inf\nfloat32 F32_TENTH=0.1\n'
-    'float64 F64_TO_ZERO=1e-400\nfloat64 F64_SUBNORMAL=5e-324\nfloat64 F64_MAX=1.7976931348623157e308\n'
+    'float64 F64_TO_ZERO=1e-400\nfloat64 F64_SUBNORMAL=5e-324\n'
+    'float64 F64_MAX=1.7976931348623157e308\n'
     'float64 F64_MINUS_INF=-Infinity\nint32 value\n')
 
 # Accepted: (case id, {path in package hostile_ok: text}). A field or
@@ -74,15 +76,17 @@ ACCEPTED = [
         'int32 Unused=1\nint32 unused=2\nint32 T=3\nint32 Message=4\nstring text=a\n')}),
     ('constants-like-macros', {'msg/ConstantMacros.msg': (
         'int32 EOF=-1\nuint32 UINT32_MAX=4294967295\nint32 errno=5\nint32 assert=1\n'
-        'uint64 SIZE_MAX=18446744073709551615\nint32 linux=1\nstring stdin=x\nfloat64 M_PI=3.14\n')}),
+        'uint64 SIZE_MAX=18446744073709551615\nint32 linux=1\nstring stdin=x\n'
+        'float64 M_PI=3.14\n')}),
     ('constants-at-integer-limits', {'msg/Limits.msg': (
         'int64 I64_MIN=-9223372036854775808\nint64 I64_MAX=9223372036854775807\n'
         'uint64 U64_MAX=18446744073709551615\nint32 I32_MIN=-2147483648\nint8 I8_MIN=-128\n'
-        'uint32 U32_MAX=4294967295\nint16 I16_MIN=-32768\nbyte B=-128\nchar C=255\nint32 value\n')}),
+        'uint32 U32_MAX=4294967295\nint16 I16_MIN=-32768\nbyte B=-128\nchar C=255\n'
+        'int32 value\n')}),
     ('float-constants-at-their-limits', {'msg/FloatLimits.msg': FLOAT_LIMITS_MSG}),
     ('string-constants-with-escapes', {'msg/Quotes.msg': (
-        'string QUOTE="quoted" \\\\ back\nstring TRIGRAPH=??= ??/ ??\'\nstring HASH=a # not a comment\n'
-        'int32 value\n')}),
+        'string QUOTE="quoted" \\\\ back\nstring TRIGRAPH=??= ??/ ??\'\n'
+        'string HASH=a # not a comment\nint32 value\n')}),
     ('zero-length-fixed-arrays',
      {'msg/ZeroArrays.msg': 'int32[0] none\nEmpty[0] empties\nstring[0] texts\n'}),
     ('empty-message', {'msg/Empty.msg': '# nothing\n'}),
@@ -92,9 +96,10 @@ ACCEPTED = [
     ('type-named-like-support-types', {'msg/Codec.msg': 'int32 a\n', 'msg/Reader.msg': 'Codec c\n',
                                        'msg/Message.msg': 'Reader r\nCodec[] cs\n'}),
     ('type-named-like-c-type', {'msg/FILE.msg': 'int32 fd\n'}),
-    ('types-named-like-support-namespaces', {'msg/constants.msg': 'int32 A=1\nint32 a\n',
-                                             'msg/mros_constants.msg': 'int32 B=2\nconstants c\nwire w\n',
-                                             'msg/wire.msg': 'int32 C=3\n'}),
+    ('types-named-like-support-namespaces',
+     {'msg/constants.msg': 'int32 A=1\nint32 a\n',
+      'msg/mros_constants.msg': 'int32 B=2\nconstants c\nwire w\n',
+      'msg/wire.msg': 'int32 C=3\n'}),
     ('types-differing-in-case', {'msg/Thing.msg': 'int32 a\n', 'msg/THING.msg': 'string b\n'}),
     ('guard-of-package-and-type-underscores', {'msg/b_C.msg': 'int32 from_hostile_ok\n'}),
     ('service-with-hostile-fields',
@@ -140,77 +145,93 @@ REFUSED = [
      'a macro of the C/C++ standard headers'),
     ('type-gnu-macro', 'hostile_bad', {'msg/unix.msg': 'int32 a\n'}, 'msg/unix.msg', ':',
      'a macro of the C/C++ standard headers'),
-    ('type-fixed-width-name', 'hostile_bad', {'msg/uint32_t.msg': 'int32 a\n'}, 'msg/uint32_t.msg', ':',
-     'a name the generated headers use'),
+    ('type-fixed-width-name', 'hostile_bad', {'msg/uint32_t.msg': 'int32 a\n'},
+     'msg/uint32_t.msg', ':', 'a name the generated headers use'),
     ('type-mros', 'hostile_bad', {'msg/mros.msg': 'int32 a\n'}, 'msg/mros.msg', ':',
      'a name the generated headers use'),
     ('type-std', 'hostile_bad', {'msg/std.msg': 'int32 a\n'}, 'msg/std.msg', ':',
      'a name the generated headers use'),
     ('type-reserved-member', 'hostile_bad', {'msg/Ptr.msg': 'int32 a\n'}, 'msg/Ptr.msg', ':',
      'a name the generated headers use'),
-    ('type-like-its-package', 'hostile_bad', {'msg/hostile_bad.msg': 'int32 a\n'}, 'msg/hostile_bad.msg', ':',
-     'the name of its package'),
+    ('type-like-its-package', 'hostile_bad', {'msg/hostile_bad.msg': 'int32 a\n'},
+     'msg/hostile_bad.msg', ':', 'the name of its package'),
     ('type-non-ascii', 'hostile_bad', {'msg/a\u00b2.msg': 'int32 a\n'}, 'msg/a\u00b2.msg', ':',
      "type name 'hostile_bad/a\u00b2' cannot be a C++ type: not an ASCII identifier"),
-    ('type-like-used-package', 'hostile_bad', {'msg/std_msgs.msg': 'int32 a\n',
-                                               'msg/User.msg': 'int32 a\nstd_msgs/Header header\n'},
+    ('type-like-used-package', 'hostile_bad',
+     {'msg/std_msgs.msg': 'int32 a\n', 'msg/User.msg': 'int32 a\nstd_msgs/Header header\n'},
      'msg/User.msg', ':2:', "type 'hostile_bad/std_msgs' is named like package 'std_msgs'"),
-    ('field-non-ascii', 'hostile_bad', {'msg/A.msg': 'int32 ok\nint32 a\u00b2\n'}, 'msg/A.msg', ':2:',
-     "'a\u00b2' is not a legal field name for C++"),
+    ('field-non-ascii', 'hostile_bad', {'msg/A.msg': 'int32 ok\nint32 a\u00b2\n'},
+     'msg/A.msg', ':2:', "'a\u00b2' is not a legal field name for C++"),
     ('constant-non-ascii', 'hostile_bad', {'msg/A.msg': 'int32 \u00fc=1\n'}, 'msg/A.msg', ':1:',
      "'\u00fc' is not a legal constant name for C++"),
-    ('escape-meets-field', 'hostile_bad', {'msg/A.msg': 'int32 EOF\nint32 EOF_\n'}, 'msg/A.msg', ':2:',
-     "name 'EOF_' is already declared on line 1"),
+    ('escape-meets-field', 'hostile_bad', {'msg/A.msg': 'int32 EOF\nint32 EOF_\n'},
+     'msg/A.msg', ':2:', "name 'EOF_' is already declared on line 1"),
     ('escape-meets-typedef-field', 'hostile_bad', {'msg/A.msg': 'int32 uint8_t_\nint32 uint8_t\n'},
      'msg/A.msg', ':2:', "name 'uint8_t' is already declared on line 1"),
-    ('escape-meets-own-type', 'hostile_bad', {'msg/A.msg': 'int32 A_\nint32 A\n'}, 'msg/A.msg', ':2:',
-     "name 'A' is already declared on line 1"),
-    ('service-named-like-its-typedef', 'hostile_bad', {'srv/Request.srv': 'int32 a\n---\n'}, 'srv/Request.srv', ':',
+    ('escape-meets-own-type', 'hostile_bad', {'msg/A.msg': 'int32 A_\nint32 A\n'},
+     'msg/A.msg', ':2:', "name 'A' is already declared on line 1"),
+    ('service-named-like-its-typedef', 'hostile_bad', {'srv/Request.srv': 'int32 a\n---\n'},
+     'srv/Request.srv', ':',
      "service name 'hostile_bad/Request' cannot be a C++ type: a name the service header uses"),
-    ('service-named-like-its-member', 'hostile_bad', {'srv/response.srv': 'int32 a\n---\n'}, 'srv/response.srv',
-     ':', "service name 'hostile_bad/response'"),
-    ('srv-meets-request-msg', 'hostile_bad', {'srv/Foo.srv': 'int32 a\n---\n', 'msg/FooRequest.msg': 'int32 a\n'},
+    ('service-named-like-its-member', 'hostile_bad', {'srv/response.srv': 'int32 a\n---\n'},
+     'srv/response.srv', ':', "service name 'hostile_bad/response'"),
+    ('srv-meets-request-msg', 'hostile_bad',
+     {'srv/Foo.srv': 'int32 a\n---\n', 'msg/FooRequest.msg': 'int32 a\n'},
      'msg/FooRequest.msg', ':', "'hostile_bad/FooRequest' would be defined twice"),
-    ('srv-meets-response-msg', 'hostile_bad', {'srv/Foo.srv': 'int32 a\n---\n', 'msg/FooResponse.msg': 'int32 a\n'},
+    ('srv-meets-response-msg', 'hostile_bad',
+     {'srv/Foo.srv': 'int32 a\n---\n', 'msg/FooResponse.msg': 'int32 a\n'},
      'msg/FooResponse.msg', ':', "'hostile_bad/FooResponse' would be defined twice"),
-    ('srv-meets-request-srv', 'hostile_bad', {'srv/Foo.srv': 'int32 a\n---\n', 'srv/FooRequest.srv': 'int32 a\n---\n'},
+    ('srv-meets-request-srv', 'hostile_bad',
+     {'srv/Foo.srv': 'int32 a\n---\n', 'srv/FooRequest.srv': 'int32 a\n---\n'},
      'srv/Foo.srv', ':', "'hostile_bad/FooRequest' would be defined twice"),
-    ('srv-meets-msg', 'hostile_bad', {'srv/Pair.srv': 'int32 a\n---\n', 'msg/Pair.msg': 'int32 a\n'},
+    ('srv-meets-msg', 'hostile_bad',
+     {'srv/Pair.srv': 'int32 a\n---\n', 'msg/Pair.msg': 'int32 a\n'},
      'msg/Pair.msg', ':', "'hostile_bad/Pair' would be defined twice"),
-    ('fixed-array-beyond-int32', 'hostile_bad', {'msg/A.msg': 'int8 a\nuint8[2147483648] big\n'}, 'msg/A.msg',
-     ':2:', 'uint8[2147483648]: more elements than the 2147483647 a message can have'),
-    ('empty-elements-beyond-int32', 'hostile_bad', {'msg/A.msg': 'Empty[4294967296] e\n', 'msg/Empty.msg': ''},
+    ('fixed-array-beyond-int32', 'hostile_bad', {'msg/A.msg': 'int8 a\nuint8[2147483648] big\n'},
+     'msg/A.msg', ':2:',
+     'uint8[2147483648]: more elements than the 2147483647 a message can have'),
+    ('empty-elements-beyond-int32', 'hostile_bad',
+     {'msg/A.msg': 'Empty[4294967296] e\n', 'msg/Empty.msg': ''},
      'msg/A.msg', ':1:', 'more elements than the 2147483647'),
-    ('fixed-size-2-to-31', 'hostile_bad', {'msg/A.msg': 'uint8[2147483647] a\nuint8 b\n'}, 'msg/A.msg', ':',
-     'hostile_bad/A takes at least 2147483648 bytes on the wire'),
-    ('min-size-of-strings', 'hostile_bad', {'msg/A.msg': 'string[600000000] s\n'}, 'msg/A.msg', ':',
-     'takes at least 2400000000 bytes'),
-    ('nested-fixed-size', 'hostile_bad', {'msg/Big.msg': 'uint8[1073741824] a\n', 'msg/Huge.msg': 'Big[2] b\n'},
+    ('fixed-size-2-to-31', 'hostile_bad', {'msg/A.msg': 'uint8[2147483647] a\nuint8 b\n'},
+     'msg/A.msg', ':', 'hostile_bad/A takes at least 2147483648 bytes on the wire'),
+    ('min-size-of-strings', 'hostile_bad', {'msg/A.msg': 'string[600000000] s\n'},
+     'msg/A.msg', ':', 'takes at least 2400000000 bytes'),
+    ('nested-fixed-size', 'hostile_bad',
+     {'msg/Big.msg': 'uint8[1073741824] a\n', 'msg/Huge.msg': 'Big[2] b\n'},
      'msg/Huge.msg', ':', 'hostile_bad/Huge takes at least 2147483648 bytes'),
-    ('int64-just-past-max', 'hostile_bad', {'msg/A.msg': 'int64 X=9223372036854775808\n'}, 'msg/A.msg', ':1:',
-     'cannot coerce [9223372036854775808] to int64 (out of bounds)'),
-    ('uint64-just-past-max', 'hostile_bad', {'msg/A.msg': 'int8 a\nuint64 X=18446744073709551616\n'}, 'msg/A.msg',
-     ':2:', 'cannot coerce [18446744073709551616] to uint64 (out of bounds)'),
-    ('int64-just-past-min', 'hostile_bad', {'msg/A.msg': 'int64 X=-9223372036854775809\n'}, 'msg/A.msg', ':1:',
-     'out of bounds'),
+    ('int64-just-past-max', 'hostile_bad', {'msg/A.msg': 'int64 X=9223372036854775808\n'},
+     'msg/A.msg', ':1:', 'cannot coerce [9223372036854775808] to int64 (out of bounds)'),
+    ('uint64-just-past-max', 'hostile_bad',
+     {'msg/A.msg': 'int8 a\nuint64 X=18446744073709551616\n'},
+     'msg/A.msg', ':2:', 'cannot coerce [18446744073709551616] to uint64 (out of bounds)'),
+    ('int64-just-past-min', 'hostile_bad', {'msg/A.msg': 'int64 X=-9223372036854775809\n'},
+     'msg/A.msg', ':1:', 'out of bounds'),
     ('uint32-past-max', 'hostile_bad',
      {'msg/A.msg': 'uint32 X=4294967296\n'}, 'msg/A.msg', ':1:', 'out of bounds'),
-    ('float32-beyond-max', 'hostile_bad', {'msg/A.msg': 'int8 a\nfloat32 X=1e39\n'}, 'msg/A.msg', ':2:',
-     'float32 constant 1e39 is beyond the range of float32 (largest finite value 3.4028234663852886e+38)'),
-    ('float32-just-beyond-max', 'hostile_bad', {'msg/A.msg': 'float32 X=3.4028236e38\n'}, 'msg/A.msg', ':1:',
-     'float32 constant 3.4028236e38 is beyond the range of float32'),
-    ('float32-beyond-lowest', 'hostile_bad', {'msg/A.msg': 'float32 X=-1e39\n'}, 'msg/A.msg', ':1:',
-     'float32 constant -1e39 is beyond the range of float32'),
-    ('float64-beyond-max', 'hostile_bad', {'msg/A.msg': 'float64 Y=1e400\n'}, 'msg/A.msg', ':1:',
-     'float64 constant 1e400 is beyond the range of float64 (largest finite value 1.7976931348623157e+308)'),
-    ('float64-beyond-lowest', 'hostile_bad', {'msg/A.msg': 'int8 a\nint8 b\nfloat64 Y=-2e308\n'}, 'msg/A.msg',
-     ':3:', 'float64 constant -2e308 is beyond the range of float64'),
-    ('srv-second-separator', 'hostile_bad', {'srv/A.srv': 'int32 a\n---\nint32 b\n---\nint32 c\nfloat32 1x\n'},
+    ('float32-beyond-max', 'hostile_bad', {'msg/A.msg': 'int8 a\nfloat32 X=1e39\n'},
+     'msg/A.msg', ':2:',
+     'float32 constant 1e39 is beyond the range of float32 '
+     '(largest finite value 3.4028234663852886e+38)'),
+    ('float32-just-beyond-max', 'hostile_bad', {'msg/A.msg': 'float32 X=3.4028236e38\n'},
+     'msg/A.msg', ':1:', 'float32 constant 3.4028236e38 is beyond the range of float32'),
+    ('float32-beyond-lowest', 'hostile_bad', {'msg/A.msg': 'float32 X=-1e39\n'},
+     'msg/A.msg', ':1:', 'float32 constant -1e39 is beyond the range of float32'),
+    ('float64-beyond-max', 'hostile_bad', {'msg/A.msg': 'float64 Y=1e400\n'},
+     'msg/A.msg', ':1:',
+     'float64 constant 1e400 is beyond the range of float64 '
+     '(largest finite value 1.7976931348623157e+308)'),
+    ('float64-beyond-lowest', 'hostile_bad', {'msg/A.msg': 'int8 a\nint8 b\nfloat64 Y=-2e308\n'},
+     'msg/A.msg', ':3:', 'float64 constant -2e308 is beyond the range of float64'),
+    ('srv-second-separator', 'hostile_bad',
+     {'srv/A.srv': 'int32 a\n---\nint32 b\n---\nint32 c\nfloat32 1x\n'},
      'srv/A.srv', ':6:', '1x is not a legal message field name'),
-    ('srv-second-separator-duplicate', 'hostile_bad', {'srv/A.srv': 'int32 a\n---\nint32 b\n---\nint32 b\n'},
+    ('srv-second-separator-duplicate', 'hostile_bad',
+     {'srv/A.srv': 'int32 a\n---\nint32 b\n---\nint32 b\n'},
      'srv/A.srv', ':5:', "duplicate field name 'b'"),
-    ('srv-only-package-unknown-type', 'hostile_srv_only', {'srv/A.srv': 'int32 a\n---\nMissing m\n'},
-     'srv/A.srv', ':3:', "unknown type 'hostile_srv_only/Missing' (package hostile_srv_only has no msg directory)"),
+    ('srv-only-package-unknown-type', 'hostile_srv_only',
+     {'srv/A.srv': 'int32 a\n---\nMissing m\n'}, 'srv/A.srv', ':3:',
+     "unknown type 'hostile_srv_only/Missing' (package hostile_srv_only has no msg directory)"),
 ]
 
 
@@ -225,8 +246,9 @@ def _load_specs(search_path, full_names):
 class WireImages:
     """Random ROS 1 wire images of a type, written from genmsg's field list."""
 
-    FORMATS = {'bool': '<B', 'int8': '<b', 'uint8': '<B', 'byte': '<b', 'char': '<B', 'int16': '<h',
-               'uint16': '<H', 'int32': '<i', 'uint32': '<I', 'int64': '<q', 'uint64': '<Q',
+    FORMATS = {'bool': '<B', 'int8': '<b', 'uint8': '<B', 'byte': '<b', 'char': '<B',
+               'int16': '<h', 'uint16': '<H', 'int32': '<i', 'uint32': '<I', 'int64': '<q',
+               'uint64': '<Q',
                'float32': '<I', 'float64': '<Q', 'time': '<II', 'duration': '<ii'}
 
     def __init__(self, context, seed):
@@ -244,8 +266,8 @@ class WireImages:
         for code in fmt[1:]:
             size = struct.calcsize('<' + code)
             signed = code.islower()
-            low, high = (-(1 << (8 * size - 1)), (1 << (8 * size - 1)) - \
-                         1) if signed else (0, (1 << (8 * size)) - 1)
+            low, high = ((-(1 << (8 * size - 1)), (1 << (8 * size - 1)) - 1) if signed
+                         else (0, (1 << (8 * size)) - 1))
             values.append(self.random.randint(low, high))
         return struct.pack(fmt, *values)
 
@@ -325,7 +347,7 @@ int main(int argc, char** argv) {
   printf("%%d images, %%d failures\n", images, failures);
   return failures != 0;
 }
-'''
+'''  # noqa: E501
 
 
 def _accepted_files():
@@ -393,13 +415,17 @@ def test_accepted_headers_compile_together_and_alone(accepted_export, tmp_path):
 def test_header_guards_are_unique(accepted_export, tmp_path):
     _, _, output = accepted_export
     source = tmp_path / 'guards.cpp'
-    source.write_text('#include <hostile_ok/b_C.h>\n#include <hostile_ok_b/C.h>\n#include <hostile_ok/Thing.h>\n'
-                      '#include <hostile_ok/THING.h>\n'
-                      'int main() { hostile_ok::b_C a; hostile_ok_b::C b; hostile_ok::Thing c; hostile_ok::THING d;\n'
-                      '  a.from_hostile_ok = 1; b.from_hostile_ok_b = "x"; c.a = 2; d.b = "y";\n'
-                      '  return a.serializedLength() + b.serializedLength() + c.serializedLength()\n'
+    source.write_text('#include <hostile_ok/b_C.h>\n#include <hostile_ok_b/C.h>\n'
+                      '#include <hostile_ok/Thing.h>\n#include <hostile_ok/THING.h>\n'
+                      'int main() { hostile_ok::b_C a; hostile_ok_b::C b; '
+                      'hostile_ok::Thing c; hostile_ok::THING d;\n'
+                      '  a.from_hostile_ok = 1; b.from_hostile_ok_b = "x"; '
+                      'c.a = 2; d.b = "y";\n'
+                      '  return a.serializedLength() + b.serializedLength() '
+                      '+ c.serializedLength()\n'
                       '      + d.serializedLength() == 4 + 5 + 4 + 5 ? 0 : 1; }\n')
-    _run(['g++', '-std=gnu++98', '-o', str(tmp_path / 'guards'), str(source), '-I' + output] + STRICT)
+    _run(['g++', '-std=gnu++98', '-o', str(tmp_path / 'guards'), str(source), '-I' + output]
+         + STRICT)
     _run([str(tmp_path / 'guards')])
 
 
@@ -441,14 +467,15 @@ def test_float_constants_hold_what_their_type_holds(accepted_export, tmp_path):
     for ros_type, declaration in constants:
         name = declaration.split('=')[0]
         cpp_type = 'float' if ros_type == 'float32' else 'double'
-        prints.append('  { const %s v = hostile_ok::FloatLimits::%s; printBytes("%s", &v, sizeof v); }'
-                      % (cpp_type, name, name))
+        prints.append('  { const %s v = hostile_ok::FloatLimits::%s; '
+                      'printBytes("%s", &v, sizeof v); }' % (cpp_type, name, name))
     source = tmp_path / 'float_constants.cpp'
     source.write_text(
         '#include <stdio.h>\n#include <hostile_ok/FloatLimits.h>\n'
         'static void printBytes(const char* name, const void* value, size_t size) {\n'
         '  printf("%%s ", name);\n'
-        '  for (size_t i = 0; i < size; ++i) printf("%%02x", static_cast<const unsigned char*>(value)[i]);\n'
+        '  for (size_t i = 0; i < size; ++i) '
+        'printf("%%02x", static_cast<const unsigned char*>(value)[i]);\n'
         '  printf("\\n");\n}\nint main() {\n%s\n  return 0;\n}\n' % '\n'.join(prints))
     expected = []
     for ros_type, declaration in constants:
@@ -462,7 +489,8 @@ def test_float_constants_hold_what_their_type_holds(accepted_export, tmp_path):
         assert _run([program]).stdout.splitlines() == expected, mode
 
 
-def test_empty_elements_in_nested_arrays_stay_within_the_allocation_bound(accepted_export, tmp_path):
+def test_empty_elements_in_nested_arrays_stay_within_the_allocation_bound(accepted_export,
+                                                                          tmp_path):
     """Outer{Inner[] inners}, Inner{Empty[] es}: 1,000 inners each claiming
     65,536 empties (4,004 bytes) once allocated 65,536,000 elements."""
     _, _, output = accepted_export
@@ -508,7 +536,8 @@ def good_export(tmp_path_factory):
     """An export of a good package, copied into every refused case's output."""
     root = tmp_path_factory.mktemp('hostile_good')
     write_tree(str(root / 'ws' / 'src' / 'hostile_good'),
-               {'package.xml': package_xml('hostile_good'), 'msg/Good.msg': 'std_msgs/Header header\nint32 a\n'})
+               {'package.xml': package_xml('hostile_good'),
+                'msg/Good.msg': 'std_msgs/Header header\nint32 a\n'})
     output = str(root / 'out')
     run_genmros('export', '--workspace', str(root / 'ws'), '-o', output,
                 *prefix_arguments(ros1_prefixes()))
@@ -549,7 +578,8 @@ def test_non_ascii_package_in_generator_mode(tmp_path):
     result = run_genmros('generate', str(source), '-p', 'paquete_\u00f1',
                          '-o', str(tmp_path / 'out' / 'x'), check=False)
     assert_one_line_error(result, str(source) + ':',
-                          "package name 'paquete_\u00f1' cannot be a C++ namespace: not an ASCII identifier")
+                          "package name 'paquete_\u00f1' cannot be a C++ namespace: "
+                          "not an ASCII identifier")
     assert not (tmp_path / 'out').exists()
 
 
@@ -572,8 +602,8 @@ def test_nesting_as_deep_as_gencpp_handles(tmp_path):
     source.write_text('#include <hostile_deep/D0.h>\nint main() { hostile_deep::D0 d; '
                       'return d.serializedLength() == 1000 ? 0 : 1; }\n')
     # Each header includes the next, as gencpp's do: past g++'s default of 200.
-    _run(['g++', '-std=gnu++98', '-fmax-include-depth=300', '-o', str(tmp_path / 'deep'), str(source),
-          '-I' + output] + STRICT)
+    _run(['g++', '-std=gnu++98', '-fmax-include-depth=300', '-o', str(tmp_path / 'deep'),
+          str(source), '-I' + output] + STRICT)
     _run([str(tmp_path / 'deep')])
     context = _load_specs({'hostile_deep': [os.path.join(package, 'msg')]}, ['hostile_deep/D0'])
     with open(os.path.join(output, 'hostile_deep', 'D0.h')) as stream:
@@ -584,7 +614,8 @@ def test_nesting_as_deep_as_gencpp_handles(tmp_path):
 def test_nesting_beyond_the_limit_is_refused(tmp_path):
     package = str(tmp_path / 'ws' / 'src' / 'hostile_deep')
     write_tree(package, _chain(1002))
-    result = run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', str(tmp_path / 'out'),
+    result = run_genmros('export', '--workspace', str(tmp_path / 'ws'),
+                         '-o', str(tmp_path / 'out'),
                          *prefix_arguments(ros1_prefixes()), check=False)
     assert_one_line_error(result, os.path.join(package, 'msg', 'D999.msg') + ':2:',
                           "field 'next' nests types more than 1000 levels deep")
@@ -595,7 +626,8 @@ def _diamond(depth):
     files = {'package.xml': package_xml('hostile_wide')}
     for level in range(depth):
         files['msg/W%d.msg' % level] = ('W%d left\nW%d right\n' % (level + 1, level + 1)
-                                        if level + 1 < depth else '# empty: the wire image stays small\n')
+                                        if level + 1 < depth
+                                        else '# empty: the wire image stays small\n')
     return files
 
 
@@ -626,7 +658,8 @@ def test_error_on_the_last_line_of_a_long_file_is_found_quickly(tmp_path):
     write_tree(package, {'package.xml': package_xml('hostile_long'),
                'msg/Long.msg': '\n'.join(lines) + '\n'})
     started = time.monotonic()
-    result = run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', str(tmp_path / 'out'),
+    result = run_genmros('export', '--workspace', str(tmp_path / 'ws'),
+                         '-o', str(tmp_path / 'out'),
                          *prefix_arguments(ros1_prefixes()), check=False)
     assert time.monotonic() - started < 20
     assert_one_line_error(result, os.path.join(package, 'msg', 'Long.msg') + ':20000:',

@@ -44,12 +44,14 @@ def truncation_program(tmp_path_factory, debian_export, test_ws_export):
     directory = str(tmp_path_factory.mktemp('truncation'))
     sources = cpp_harness.write_sources(directory, type_set, with_roscpp=False)
     objects = [
-        cpp_harness.compile_object(sources['mros_side.cpp'], directory, [test_ws_export, debian_export, directory],
-                                   flags=SANITIZERS),
-        cpp_harness.compile_object(os.path.join(cpp_harness.RANDOM_HEADER_DIR, 'truncation_check.cpp'),
-                                   directory, [directory], flags=SANITIZERS),
+        cpp_harness.compile_object(sources['mros_side.cpp'], directory,
+                                   [test_ws_export, debian_export, directory], flags=SANITIZERS),
+        cpp_harness.compile_object(
+            os.path.join(cpp_harness.RANDOM_HEADER_DIR, 'truncation_check.cpp'),
+            directory, [directory], flags=SANITIZERS),
     ]
-    return type_set, cpp_harness.link_program(objects, os.path.join(directory, 'truncation_check'), flags=SANITIZERS)
+    return type_set, cpp_harness.link_program(objects, os.path.join(directory, 'truncation_check'),
+                                              flags=SANITIZERS)
 
 
 def test_every_proper_prefix_is_refused_cleanly(truncation_program):

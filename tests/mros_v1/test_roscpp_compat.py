@@ -50,7 +50,8 @@ def test_all_headers_compile_together_without_warnings(debian_export, tmp_path):
     assert len(headers) > 180
     source = tmp_path / 'all_headers.cpp'
     source.write_text(''.join('#include <%s>\n' % h for h in headers
-                              if h != 'message_class_specialization.h') + 'int main() { return 0; }\n')
+                              if h != 'message_class_specialization.h')
+                      + 'int main() { return 0; }\n')
     result = subprocess.run(['g++', '-std=c++11', '-Wall', '-Wextra', '-Werror', '-pedantic',
                              '-fsyntax-only', '-I', debian_export, str(source)],
                             capture_output=True, text=True)
@@ -64,8 +65,9 @@ def test_bytes_md5_and_definitions_equal_roscpp(harness_sources, debian_export):
                                    directory, [directory], strict=False),
         cpp_harness.compile_object(sources['mros_side.cpp'], directory, [
                                    debian_export, directory]),
-        cpp_harness.compile_object(os.path.join(cpp_harness.RANDOM_HEADER_DIR, 'compare_with_roscpp.cpp'),
-                                   directory, [directory]),
+        cpp_harness.compile_object(
+            os.path.join(cpp_harness.RANDOM_HEADER_DIR, 'compare_with_roscpp.cpp'),
+            directory, [directory]),
     ]
     program = cpp_harness.link_program(objects, os.path.join(directory, 'compare_with_roscpp'),
                                        libraries=cpp_harness.ROSCPP_LIBRARIES)

@@ -31,8 +31,9 @@ from testing.ros_paths import prefix_arguments, ros1_prefixes
 
 pytestmark = [pytest.mark.needs_qemu, pytest.mark.slow]
 
-DEBIAN_SET = ['sensor_msgs/Image', 'sensor_msgs/PointCloud2', 'sensor_msgs/JointState', 'nav_msgs/Odometry',
-              'visualization_msgs/MarkerArray', 'std_msgs/Header', 'std_msgs/Float64MultiArray']
+DEBIAN_SET = ['sensor_msgs/Image', 'sensor_msgs/PointCloud2', 'sensor_msgs/JointState',
+              'nav_msgs/Odometry', 'visualization_msgs/MarkerArray', 'std_msgs/Header',
+              'std_msgs/Float64MultiArray']
 
 CORTEX_M_LINK = ['--specs=rdimon.specs', '-nostartfiles',
                  '-Wl,--gc-sections', '-L' + cpp_harness.TARGETS_DIR]
@@ -61,25 +62,32 @@ CPUS = {
     'cortex-m0': Cpu('arm-none-eabi-g++', ['-mcpu=cortex-m0', '-mthumb', '-Os'], 'gnu++98',
                      ['qemu-system-arm', '-M', 'microbit'] + BARE_METAL,
                      instances=40, modes=[cpp_harness.COMPACT],
-                     link=CORTEX_M_LINK + ['-T', os.path.join(cpp_harness.TARGETS_DIR, 'microbit.ld')], startup=CORTEX_M_STARTUP),
-    'cortex-m4': Cpu('arm-none-eabi-g++', ['-mcpu=cortex-m4', '-mthumb', '-mfloat-abi=hard', '-mfpu=fpv4-sp-d16',
-                                           '-O1'], 'c++11',
+                     link=CORTEX_M_LINK + ['-T', os.path.join(cpp_harness.TARGETS_DIR,
+                                                              'microbit.ld')],
+                     startup=CORTEX_M_STARTUP),
+    'cortex-m4': Cpu('arm-none-eabi-g++', ['-mcpu=cortex-m4', '-mthumb', '-mfloat-abi=hard',
+                                           '-mfpu=fpv4-sp-d16', '-O1'], 'c++11',
                      ['qemu-system-arm', '-M', 'mps2-an386'] + BARE_METAL,
-                     instances=60, modes=[cpp_harness.BINARY, cpp_harness.TEXT, cpp_harness.COMPACT],
-                     link=CORTEX_M_LINK + ['-T', os.path.join(cpp_harness.TARGETS_DIR, 'mps2_an386.ld')], startup=CORTEX_M_STARTUP),
+                     instances=60,
+                     modes=[cpp_harness.BINARY, cpp_harness.TEXT, cpp_harness.COMPACT],
+                     link=CORTEX_M_LINK + ['-T', os.path.join(cpp_harness.TARGETS_DIR,
+                                                              'mps2_an386.ld')],
+                     startup=CORTEX_M_STARTUP),
     'cortex-a9': Cpu('arm-none-eabi-g++', ['-mcpu=cortex-a9', '-marm', '-mfpu=vfpv3',
-                                           '-mfloat-abi=hard', '-mno-unaligned-access', '-O1'], 'gnu++98',
-                     ['qemu-arm', '-cpu', 'cortex-a9'], instances=60, modes=[cpp_harness.BINARY, cpp_harness.TEXT, cpp_harness.COMPACT],
+                                           '-mfloat-abi=hard', '-mno-unaligned-access', '-O1'],
+                     'gnu++98', ['qemu-arm', '-cpu', 'cortex-a9'], instances=60,
+                     modes=[cpp_harness.BINARY, cpp_harness.TEXT, cpp_harness.COMPACT],
                      link=['--specs=rdimon.specs', '-Wl,--gc-sections']),
     's390x': Cpu('s390x-linux-gnu-g++', ['-O1'], 'c++11', ['qemu-s390x'], instances=60,
-                 modes=[cpp_harness.BINARY, cpp_harness.TEXT, cpp_harness.COMPACT], link=['-static']),
+                 modes=[cpp_harness.BINARY, cpp_harness.TEXT, cpp_harness.COMPACT],
+                 link=['-static']),
 }
 # Bounded storage on the smallest core, at mROS v1's language mode, and on
 # the big-endian CPU: compact instances only, which fit the bounds.
 BOUNDED_CPUS = {
     'cortex-m0': CPUS['cortex-m0'],
-    's390x': Cpu('s390x-linux-gnu-g++', ['-O1'], 'gnu++98', ['qemu-s390x'], instances=60, modes=[cpp_harness.COMPACT],
-                 link=['-static']),
+    's390x': Cpu('s390x-linux-gnu-g++', ['-O1'], 'gnu++98', ['qemu-s390x'], instances=60,
+                 modes=[cpp_harness.COMPACT], link=['-static']),
 }
 # -Wno-psabi: GCC's note that std::vector iterators pass differently since GCC 7.1 (ARM).
 FIRMWARE_FLAGS = ['-fno-exceptions', '-fno-rtti', '-Wno-psabi']
@@ -117,9 +125,10 @@ def target_sources(tmp_path_factory):
 
 def test_type_set_covers_the_types_named_for_the_targets(target_sources):
     type_set = target_sources[0]
-    for name in DEBIAN_SET + ['mros_test/PersonalData', 'mros_test/ArrayTypes', 'mros_test/BuiltinTypes',
-                              'mros_test/NestedTypes', 'mros_test/LookupPersonRequest',
-                              'mros_test_base/Labeled', 'visualization_msgs/Marker', 'geometry_msgs/Pose']:
+    for name in DEBIAN_SET + ['mros_test/PersonalData', 'mros_test/ArrayTypes',
+                              'mros_test/BuiltinTypes', 'mros_test/NestedTypes',
+                              'mros_test/LookupPersonRequest', 'mros_test_base/Labeled',
+                              'visualization_msgs/Marker', 'geometry_msgs/Pose']:
         assert name in type_set.messages
 
 
@@ -134,15 +143,16 @@ def _build(cpu, sources, export, directory):
     if cpu.startup:
         # Start-up code is C (it calls main); the C compiler of the same tool chain.
         startup = os.path.join(directory, 'startup.o')
-        _compile([cpu.compiler[:-len('g++')] + 'gcc', '-std=c99', '-Wall', '-Wextra', '-Werror'] + cpu.flags +
-                 ['-c', cpu.startup, '-o', startup])
+        _compile([cpu.compiler[:-len('g++')] + 'gcc', '-std=c99', '-Wall', '-Wextra', '-Werror']
+                 + cpu.flags + ['-c', cpu.startup, '-o', startup])
         link.append(startup)
     warnings = ['-Wall', '-Wextra', '-Werror'] + \
         (['-pedantic'] if cpu.standard != 'gnu++98' else [])
     command = ([cpu.compiler, '-std=' + cpu.standard] + cpu.flags + FIRMWARE_FLAGS + warnings +
-               ['-DTARGET_INSTANCES=%du' % cpu.instances, '-DTARGET_MODES=%s' % ','.join(map(str, cpu.modes)),
-                '-I', export, '-I', os.path.dirname(sources['target_side.cpp']
-                                                    ), '-I', cpp_harness.TARGETS_DIR,
+               ['-DTARGET_INSTANCES=%du' % cpu.instances,
+                '-DTARGET_MODES=%s' % ','.join(map(str, cpu.modes)),
+                '-I', export, '-I', os.path.dirname(sources['target_side.cpp']),
+                '-I', cpp_harness.TARGETS_DIR,
                 '-I', cpp_harness.RANDOM_HEADER_DIR, sources['target_side.cpp'],
                 os.path.join(cpp_harness.TARGETS_DIR, 'target_main.cpp')] + link + ['-o', program])
     _compile(command)
@@ -162,8 +172,10 @@ def _first_difference(expected, actual):
             while offset < min(len(want_fields[5]), len(got_fields[5])) and \
                     want_fields[5][offset] == got_fields[5][offset]:
                 offset += 1
-            return ('%s seed %s mode %s: roscpp %s bytes, target %s bytes, first difference at byte %d'
-                    % (want_fields[1], want_fields[2], want_fields[3], want_fields[4], got_fields[4], offset // 2))
+            return ('%s seed %s mode %s: roscpp %s bytes, target %s bytes, '
+                    'first difference at byte %d'
+                    % (want_fields[1], want_fields[2], want_fields[3], want_fields[4],
+                       got_fields[4], offset // 2))
     return 'roscpp gave %d cases, the target %d' % (len(expected), len(actual))
 
 
@@ -175,8 +187,8 @@ def test_wire_images_equal_roscpp_on_the_cpu(target_sources, name, storage, tmp_
     program = _build(cpu, sources, exports[storage], str(tmp_path))
     run = subprocess.run(cpu.run + [program], capture_output=True, text=True, timeout=RUN_SECONDS)
     report = run.stdout.splitlines()
-    assert run.returncode == 0, '\n'.join([line for line in report if not line.startswith('case ')][-40:]
-                                          + [run.stderr[-2000:]])
+    assert run.returncode == 0, '\n'.join(
+        [line for line in report if not line.startswith('case ')][-40:] + [run.stderr[-2000:]])
     assert not [line for line in report if line.startswith('FAIL ')]
     instances = cpu.instances * len(type_set.messages)
     assert report[-1].startswith('checked %d instances, ' %

@@ -58,16 +58,17 @@ DEFINITION_CASES = [
      'msg/Bad.msg:1:', 'int32[x] is not a legal message field type'),
     ('duplicate-constant', {'msg/Bad.msg': 'int32 A=1\nint32 A=2\n'}, 'msg/Bad.msg:2:',
      "name 'A' is already declared on line 1"),
-    ('constant-named-like-field', {'msg/Bad.msg': 'int32 value=1\nint32 value\n'}, 'msg/Bad.msg:2:',
-     "name 'value' is already declared on line 1"),
+    ('constant-named-like-field', {'msg/Bad.msg': 'int32 value=1\nint32 value\n'},
+     'msg/Bad.msg:2:', "name 'value' is already declared on line 1"),
     ('keyword-escape-collision', {'msg/Bad.msg': 'int32 class\nint32 class_\n'}, 'msg/Bad.msg:2:',
      "name 'class_' is already declared on line 1"),
     ('recursive-type', {'msg/Bad.msg': 'int32 depth\nBad child\n'}, 'msg/Bad.msg:2:',
      "type 'mros_bad/Bad' contains itself through field 'child'"),
-    ('error-in-dependency', {'msg/Bad.msg': 'Inner inner\n', 'msg/Inner.msg': 'int32 a\nint32 b c\n'},
+    ('error-in-dependency',
+     {'msg/Bad.msg': 'Inner inner\n', 'msg/Inner.msg': 'int32 a\nint32 b c\n'},
      'msg/Inner.msg:2:', 'Invalid declaration: int32 b c'),
-    ('service-response-line', {'srv/Bad.srv': 'int32 a\n---\nint32 b\nfloat32 1x\n'}, 'srv/Bad.srv:4:',
-     '1x is not a legal message field name'),
+    ('service-response-line', {'srv/Bad.srv': 'int32 a\n---\nint32 b\nfloat32 1x\n'},
+     'srv/Bad.srv:4:', '1x is not a legal message field name'),
     ('service-unknown-type', {'srv/Bad.srv': 'Missing a\n---\n'},
      'srv/Bad.srv:1:', "unknown type 'mros_bad/Missing'"),
     ('not-utf8', {'msg/Bad.msg': b'# caf\xe9\nint32 a\n'}, 'msg/Bad.msg:1:', 'not UTF-8 text'),
@@ -118,7 +119,8 @@ def test_bad_definition_in_generator_mode(workspace, files, location, problem):
     write_tree(package, files)
     target = [name for name in files if name.startswith(('msg/Bad', 'srv/Bad'))][0]
     before = snapshot(output)
-    result = run_genmros('generate', os.path.join(package, target), '-p', 'mros_bad', '-o', os.path.join(output, 'mros_bad'),
+    result = run_genmros('generate', os.path.join(package, target), '-p', 'mros_bad',
+                         '-o', os.path.join(output, 'mros_bad'),
                          '-I', 'mros_bad:' + os.path.join(package, 'msg'),
                          '-I', 'std_msgs:' + ros1_package_dir('std_msgs'), check=False)
     assert_one_line_error(result, os.path.join(package, location), problem)
@@ -140,7 +142,8 @@ ARGUMENT_CASES = [
 ]
 
 
-@pytest.mark.parametrize('arguments, problem', [c[1:] for c in ARGUMENT_CASES], ids=[c[0] for c in ARGUMENT_CASES])
+@pytest.mark.parametrize('arguments, problem', [c[1:] for c in ARGUMENT_CASES],
+                         ids=[c[0] for c in ARGUMENT_CASES])
 def test_bad_export_selection(workspace, arguments, problem):
     workspace_dir, _, output = workspace
     before = snapshot(output)
@@ -185,8 +188,8 @@ def test_unwritable_output_directory(workspace, tmp_path):
 
 
 def test_missing_input_file(tmp_path):
-    result = run_genmros('generate', str(tmp_path / 'Nope.msg'), '-p', 'mros_bad', '-o', str(tmp_path / 'out' / 'mros_bad'),
-                         check=False)
+    result = run_genmros('generate', str(tmp_path / 'Nope.msg'), '-p', 'mros_bad',
+                         '-o', str(tmp_path / 'out' / 'mros_bad'), check=False)
     assert_one_line_error(result, str(tmp_path / 'Nope.msg'), 'cannot read file')
     assert not (tmp_path / 'out').exists()
 
@@ -249,8 +252,9 @@ def test_relative_output_paths_whose_first_part_is_new(tmp_path, mode):
                      os.path.join('new', 'include'), *prefix_arguments(ros1_prefixes())]
         written = tmp_path / 'new' / 'include' / 'mros_test' / 'PersonalData.h'
     else:
-        arguments = ['generate', os.path.join(TEST_WS, 'src', 'mros_test', 'msg', 'PersonalData.msg'), '-p', 'mros_test',
-                     '-o', os.path.join('new', 'mros_test')]
+        arguments = ['generate',
+                     os.path.join(TEST_WS, 'src', 'mros_test', 'msg', 'PersonalData.msg'),
+                     '-p', 'mros_test', '-o', os.path.join('new', 'mros_test')]
         written = tmp_path / 'new' / 'mros_test' / 'PersonalData.h'
     result = subprocess.run([sys.executable, '-m', 'colcon_mros'] + arguments, cwd=str(tmp_path),
                             env=dict(os.environ, PYTHONPATH=REPO), capture_output=True, text=True)

@@ -75,10 +75,12 @@ def roscpp_images(tmp_path_factory):
     root = tmp_path_factory.mktemp('definition_text')
     search_path = cpp_harness.search_path()
     test_ws_services = [(p, f) for p in ('mros_test', 'mros_test_base')
-                        for f in sorted(glob.glob(os.path.join(TEST_WS, 'src', p, 'srv', '*.srv')))]
+                        for f in sorted(glob.glob(os.path.join(TEST_WS, 'src', p, 'srv',
+                                                               '*.srv')))]
     debian_services = [(p, f) for p in DEBIAN_MESSAGE_PACKAGES
                        for f in ros1_definitions(p, 'srv')]
-    type_set = cpp_harness.TypeSet(search_path, [n for n in names if not n.endswith(('Request', 'Response'))],
+    type_set = cpp_harness.TypeSet(search_path,
+                                   [n for n in names if not n.endswith(('Request', 'Response'))],
                                    debian_services + test_ws_services)
     _, program = cpp_harness.expected_bytes_program(type_set, search_path, root)
     modes = [cpp_harness.BINARY, cpp_harness.TEXT, cpp_harness.COMPACT]
@@ -158,7 +160,8 @@ def test_export_writes_the_chosen_text_into_every_header(tmp_path):
                 '-o', str(tmp_path / 'full'))
     run_genmros('export', *prefix_arguments(ros1_prefixes()), '--type', 'nav_msgs/Odometry',
                 '-o', str(tmp_path / 'compact'), '--definition-text', 'compact')
-    for relative in ('nav_msgs/Odometry.h', 'std_msgs/Header.h', 'geometry_msgs/PoseWithCovariance.h'):
+    for relative in ('nav_msgs/Odometry.h', 'std_msgs/Header.h',
+                     'geometry_msgs/PoseWithCovariance.h'):
         name = relative[:-2]
         full = _definition_in_header(str(tmp_path / 'full' / relative))
         compact = _definition_in_header(str(tmp_path / 'compact' / relative))
@@ -177,14 +180,18 @@ def test_cmake_module_and_make_fragment_take_the_choice(tmp_path):
     project.mkdir()
     (project / 'main.cpp').write_text('#include <std_msgs/Header.h>\nint main() { return 0; }\n')
     (project / 'CMakeLists.txt').write_text(
-        'cmake_minimum_required(VERSION 3.10)\nproject(f CXX)\ninclude(%s/cmake/mros_generate.cmake)\n'
+        'cmake_minimum_required(VERSION 3.10)\nproject(f CXX)\n'
+        'include(%s/cmake/mros_generate.cmake)\n'
         'add_executable(generated main.cpp)\n'
         'mros_generate_messages(TARGET generated TYPES std_msgs/Header PACKAGE_PATHS %s '
         'DEFINITION_TEXT compact)\n'
         'add_executable(imported main.cpp)\n'
-        'mros_import_messages(TARGET imported EXPORT_DIR %s TYPES std_msgs/Header DEFINITION_TEXT compact)\n'
+        'mros_import_messages(TARGET imported EXPORT_DIR %s TYPES std_msgs/Header '
+        'DEFINITION_TEXT compact)\n'
         'add_executable(bad main.cpp)\n'
-        'if(BAD)\n  mros_generate_messages(TARGET bad TYPES std_msgs/Header DEFINITION_TEXT short)\nendif()\n'
+        'if(BAD)\n'
+        '  mros_generate_messages(TARGET bad TYPES std_msgs/Header DEFINITION_TEXT short)\n'
+        'endif()\n'
         % (REPO, ' '.join(ros1_prefixes()), tmp_path / 'export'))
     # An export dir as colcon writes it: full-text headers and the definitions.
     export = ExportDir(str(tmp_path / 'export'))
@@ -200,11 +207,12 @@ def test_cmake_module_and_make_fragment_take_the_choice(tmp_path):
         compact = _definition_in_header(
             str(build / 'mros_messages' / target / 'std_msgs' / 'Header.h'))
         assert compact == 'uint32 seq\ntime stamp\nstring frame_id\n', target
-    bad = subprocess.run(['cmake', '-S', str(project), '-B', str(build), '-DBAD=ON'], capture_output=True,
-                         text=True)
+    bad = subprocess.run(['cmake', '-S', str(project), '-B', str(build), '-DBAD=ON'],
+                         capture_output=True, text=True)
     assert bad.returncode != 0
     assert ("mros_generate_messages(): genmros export: error: argument --definition-text: "
-            "invalid choice: 'short' (choose from 'full', 'compact')") in ' '.join(bad.stderr.split())
+            "invalid choice: 'short' (choose from 'full', 'compact')") in ' '.join(
+                bad.stderr.split())
 
     app = tmp_path / 'app'
     app.mkdir()

@@ -14,7 +14,8 @@ WITHOUT_GENMSG = "import sys; sys.modules['genmsg'] = None; sys.path.insert(0, %
 
 def _genmros_without_genmsg(*arguments):
     program = WITHOUT_GENMSG + 'from colcon_mros.cli import main; sys.exit(main(sys.argv[1:]))'
-    return subprocess.run([sys.executable, '-c', program] + list(arguments), capture_output=True, text=True)
+    return subprocess.run([sys.executable, '-c', program] + list(arguments),
+                          capture_output=True, text=True)
 
 
 def test_help_needs_no_genmsg():
@@ -26,17 +27,20 @@ def test_help_needs_no_genmsg():
 
 def test_generating_without_genmsg_says_what_to_do():
     for arguments in (['export', '--workspace', TEST_WS, '-o', '/tmp/unused'],
-                      ['generate', TEST_WS + '/src/mros_test/msg/PersonalData.msg', '-p', 'mros_test', '-o', '/tmp/unused']):
+                      ['generate', TEST_WS + '/src/mros_test/msg/PersonalData.msg',
+                       '-p', 'mros_test', '-o', '/tmp/unused']):
         result = _genmros_without_genmsg(*arguments)
         assert result.returncode == 1
         assert result.stderr.splitlines() == [
-            'genmros: error: %s cannot import genmsg; install or source genmsg (Debian: apt-get install '
-            'python3-genmsg; ROS Noetic: source /opt/ros/noetic/setup.bash), or run genmros with the '
-            'Python that has it' % sys.executable]
+            'genmros: error: %s cannot import genmsg; install or source genmsg '
+            '(Debian: apt-get install python3-genmsg; ROS Noetic: source '
+            '/opt/ros/noetic/setup.bash), or run genmros with the Python that has it'
+            % sys.executable]
 
 
 def test_colcon_extension_loads_without_genmsg():
     # colcon loads every extension for every command: it must not need genmsg to load.
-    result = subprocess.run([sys.executable, '-c', WITHOUT_GENMSG + 'import colcon_mros.integrations.colcon_argument_parser'],
+    result = subprocess.run([sys.executable, '-c', WITHOUT_GENMSG
+                             + 'import colcon_mros.integrations.colcon_argument_parser'],
                             capture_output=True, text=True)
     assert result.returncode == 0, result.stderr

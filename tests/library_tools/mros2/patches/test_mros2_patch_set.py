@@ -36,7 +36,8 @@ def _differing(left, right):
     def walk(node, prefix):
         return [os.path.join(prefix, name)
                 for name in node.diff_files + node.left_only + node.right_only] + [
-            name for sub, child in node.subdirs.items() for name in walk(child, os.path.join(prefix, sub))]
+            name for sub, child in node.subdirs.items()
+            for name in walk(child, os.path.join(prefix, sub))]
     return sorted(walk(comparison, ''))
 
 

@@ -1,8 +1,9 @@
 """The patch set's mechanics (colcon_mros.library_tools.patch_series) on a small
 tree of the tests' own (tests/fixtures/patch_tree): library/, copied to a
 checkout's mros-lib/ for each test, two patches of its own, and patched/,
-the same files with the fixes written by hand. Apply, check, revert, refusal of a tree changed by hand, and whole-file
-writes; the real patch set on a real checkout is test_patch_set.py's."""
+the same files with the fixes written by hand. Apply, check, revert, refusal
+of a tree changed by hand, and whole-file writes; the real patch set on a real
+checkout is test_patch_set.py's."""
 
 import filecmp
 import os

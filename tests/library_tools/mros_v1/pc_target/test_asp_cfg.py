@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""colcon_mros.library_tools.mros_v1.pc_target.asp_cfg: the PC target's TOPPERS/ASP configurator, on
-app.cfg files of its own and on the real mROS v1 kernel configuration when a
-checkout is given (MROS_V1_ROOT)."""
+"""colcon_mros.library_tools.mros_v1.pc_target.asp_cfg: the PC target's
+TOPPERS/ASP configurator, on app.cfg files of its own and on the real mROS v1
+kernel configuration when a checkout is given (MROS_V1_ROOT)."""
 
 import os
 
@@ -55,9 +55,10 @@ def test_a_stack_size_names_the_header_line_that_defines_it(tmp_path):
     # What the overflow line of the PC target's task stacks quotes.
     _write(tmp_path, 'app/config/sizes.h', '#ifndef SIZES\n#define SIZES\n'
                                            '#define USER_STACK (1024 * 1)\n#endif\n')
-    cfg = _write(tmp_path, 'app/app.cfg', '#include "config/sizes.h"\n'
-                                          'CRE_TSK(USER, { TA_NULL, 0, user, 5, USER_STACK, NULL });\n'
-                                          'CRE_TSK(OTHER, { TA_NULL, 0, other, 5, ELSEWHERE, NULL });\n')
+    cfg = _write(tmp_path, 'app/app.cfg',
+                 '#include "config/sizes.h"\n'
+                 'CRE_TSK(USER, { TA_NULL, 0, user, 5, USER_STACK, NULL });\n'
+                 'CRE_TSK(OTHER, { TA_NULL, 0, other, 5, ELSEWHERE, NULL });\n')
     config = read_config(cfg, [])
     user, other = config.objects
     assert config.stack_origin(user) == 'USER_STACK at config/sizes.h:3; CRE_TSK at app.cfg:2'

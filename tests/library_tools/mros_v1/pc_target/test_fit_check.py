@@ -152,10 +152,9 @@ def test_ros_cpp_refuses_to_compile_where_no_genmros_check_ran(tmp_path, compile
     library = os.path.join(MROS_V1_ROOT, 'mros-lib')
     library_paths = app_variables(os.path.join(library, 'Makefile.m'),
                                   ['MROS_DIR=' + library])['MROS_INCLUDE_PATHS'].split()
-    command = (['g++', '-std=gnu++98', '-fsyntax-only'] + compiler + ['-I', include,
-                                                                      '-I', os.path.join(TARGET_DIR,
-                                                                                         'config'),
-                                                                      '-I', os.path.join(CUSTOM_PUBSUB, 'mros_config')] + library_paths
+    command = (['g++', '-std=gnu++98', '-fsyntax-only'] + compiler
+               + ['-I', include, '-I', os.path.join(TARGET_DIR, 'config'),
+                  '-I', os.path.join(CUSTOM_PUBSUB, 'mros_config')] + library_paths
                + ['-I', os.path.join(TARGET_DIR, 'asp'), '-I', os.path.join(TARGET_DIR, 'lwip'),
                   '-I', os.path.join(TARGET_DIR, 'mbed'), str(source)])
     refused = subprocess.run(command, capture_output=True, text=True)

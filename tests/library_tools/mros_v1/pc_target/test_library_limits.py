@@ -3,9 +3,10 @@
 where the fit check cannot refuse the firmware: a frame of heap storage
 (no largest size) beyond the largest memory pool, more ROS peers than its
 node table holds (the firmware's code, not its types, decides how many
-topics and peers it has), and a node name at its maximum length. The app is tests/fixtures/mros_v1_pc_app/
-library_limits.cpp with custom_pubsub's mros_config; docs/pc-target.md
-("The library's own limits") describes each case.
+topics and peers it has), and a node name at its maximum length. The app is
+tests/fixtures/mros_v1_pc_app/library_limits.cpp with custom_pubsub's
+mros_config; docs/pc-target.md ("The library's own limits") describes each
+case.
 """
 
 import os
@@ -100,7 +101,8 @@ def test_hardened_publish_drops_a_frame_larger_than_the_largest_pool(hardened_li
         board = Board(graph, hardened_limits_program, str(tmp_path), inputs=PUBLISH)
         dropped = board.process.wait_for(
             r'publish\(\) dropped a frame of (\d+) bytes: no memory pool block holds it \(raise '
-            r'the largest ROS_INNER_TOPIC_PUBLISHER_MEMPOOL<n>_SIZE\)', timeout=DELIVERY_TIMEOUT)[0]
+            r'the largest ROS_INNER_TOPIC_PUBLISHER_MEMPOOL<n>_SIZE\)',
+            timeout=DELIVERY_TIMEOUT)[0]
         board.process.wait_for(r'\] published$', timeout=DELIVERY_TIMEOUT)
         assert int(dropped.group(1)) > 2000
         time.sleep(1)

@@ -160,7 +160,7 @@ def test_string_pubsub_publishes_to_roscpp_rospy_byte_equal_to_genpy(ros_side, p
             rospy.init_node('rospy_listener')
             rospy.Subscriber('mros_msg', String, lambda m: print('rospy heard %r' % m.data, flush=True))
             rospy.spin()
-        ''')
+        ''')  # noqa: E501
         graph.wait_for_graph(subscribers=[('/mros_msg', '/ultrasonic_subscriber'),
                                           ('/mros_msg', '/rospy_listener')])
         raw = RawSubscriber(board.slave_uri, '/mros_msg', 'std_msgs/String', STRING_MD5)
@@ -194,7 +194,8 @@ def test_string_pubsub_callback_gets_what_roscpp_and_rospy_publish(ros_side, pro
     with RosGraph(ros_side) as graph:
         board = Board(graph, programs['string_pubsub'], str(tmp_path))
         roscpp = ros_node(graph, 'led_switch_publisher',
-                          sample_node(ros_side, 'string_pubsub', 'led_switch_publisher'), interactive=True)
+                          sample_node(ros_side, 'string_pubsub', 'led_switch_publisher'),
+                          interactive=True)
         graph.wait_for_graph(publishers=[('/test_string', '/led_switch_publisher')],
                              subscribers=[('/test_string', '/mros_node2')])
         board.process.wait_for(r'sub connected', timeout=DELIVERY_TIMEOUT)
@@ -218,7 +219,8 @@ def round_trip_with_the_samples_roscpp_nodes(ros_side, program, directory, runne
         subscriber = ros_node(graph, 'custom_subscriber',
                               sample_node(ros_side, 'custom_pubsub', 'custom_subscriber'))
         publisher = ros_node(graph, 'custom_publisher',
-                             sample_node(ros_side, 'custom_pubsub', 'custom_publisher'), interactive=True)
+                             sample_node(ros_side, 'custom_pubsub', 'custom_publisher'),
+                             interactive=True)
         subscriber.wait_for(r'I heard from \[Charlie Parker\]', timeout=DELIVERY_TIMEOUT)
         graph.wait_for_graph(publishers=[('/test_msg', '/custom_publisher')],
                              subscribers=[('/test_msg', '/mros_node2')])

@@ -70,7 +70,8 @@ def test_a_task_that_overruns_its_stack_stops_with_the_setting_to_change(program
     assert (header, int(header_line)) == (
         'stack_test.h', _line_of(os.path.join(FIXTURE, 'stack_test.h'), 'define SMALL_STACK_SIZE'))
     assert (cfg, int(cfg_line)) == (
-        'stack_test.cfg', _line_of(os.path.join(FIXTURE, 'stack_test.cfg'), r'CRE_TSK\(SMALL_TASK'))
+        'stack_test.cfg',
+        _line_of(os.path.join(FIXTURE, 'stack_test.cfg'), r'CRE_TSK\(SMALL_TASK'))
     assert int(needed) >= 2000 + KERNEL_CONTEXT_BYTES
     assert not any('kept a buffer' in line for line in lines), process.output()
 

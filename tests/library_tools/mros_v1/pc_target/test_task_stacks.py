@@ -22,7 +22,8 @@ pytestmark = [pytest.mark.needs_mros_v1, pytest.mark.needs_qemu, pytest.mark.slo
 OS_CONFIG = os.path.join('mros_config', 'os', 'target', 'os_asp', 'mros_os_config.h')
 # The app keeps the type and never sends it: the fit check's settings for
 # sending it do not matter here.
-HEADER_FLAGS = ('--storage', 'bounded', '--options', os.path.join(APP_FIXTURE, 'stack_use.options'),
+HEADER_FLAGS = ('--storage', 'bounded',
+                '--options', os.path.join(APP_FIXTURE, 'stack_use.options'),
                 '--no-fit-check')
 OVERFLOW = re.compile(r'^mROS PC target: task (\w+) overflowed its stack of (\d+) bytes '
                       r'\((\w+) at ([^:]+):(\d+); CRE_TSK at ([^:]+):(\d+)\); it needs at least '
@@ -45,7 +46,8 @@ def _defined_size(name):
 
 def _cfg_line(task):
     with open(os.path.join(APP_FIXTURE, 'app.cfg')) as stream:
-        return next(number for number, line in enumerate(stream, 1) if 'CRE_TSK(%s,' % task in line)
+        return next(number for number, line in enumerate(stream, 1)
+                    if 'CRE_TSK(%s,' % task in line)
 
 
 @pytest.fixture(scope='module')
