@@ -69,6 +69,9 @@ WARNING_FLAGS = ['-Wall', '-Wextra', '-Wpedantic', '-Wconversion', '-Wsign-conve
 # The sizes of the caller's fragment buffer: smaller than most images, the
 # 64 bytes of mros2's frag_buf, and the 100 of its whole-message buf.
 FRAGMENT_BUFFER_SIZES = (16, 64, 100)
+# The size whose fragments are also sent flattened (see PROGRAM): the
+# smallest, which most copies are over.
+FLATTENED_SIZE = 16
 
 Configuration = collections.namedtuple('Configuration', 'compiler level standard')
 Build = collections.namedtuple('Build', 'configuration output warnings errors stderr')
@@ -129,6 +132,12 @@ def message_types(include_dir):
     return types
 
 
+# The types whose fragments are sent as the compiler inlines the calls, not
+# flattened: MultiNested's walk flattened (three levels of arrays and
+# sequences of Arrays, BoundedSequences and UnboundedSequences, each
+# flattened on its own) takes g++ -O1 a minute.
+AS_COMPILED = ('test_interface_files::msg::MultiNested',)
+
 # The caller. publish_in_fragments is mros2's Publisher::publish (v0.5.4)
 # for a message over its buffer, with frag_buf a local array of N bytes: the
 # compiler sees the object copyToFragBuf writes into, and warns where a copy
@@ -166,12 +175,8 @@ uint32_t sent_size;
 
 // One call of mros2's publish loop for msg, with a frag_buf of N bytes:
 // the next fragment, added to sent; in the first, the encapsulation
-// header and the image's first N - 4 bytes. Flattened, every call in it
-// inlined, the message's walk included, so that the compiler sees frag_buf
-// in every copy, for every type and N, as in a firmware that publishes a
-// type from one place.
-template <size_t N, class T>
-__attribute__((flatten)) typename T::FragCopyReturnType send_fragment(T& msg) {
+// header and the image's first N - 4 bytes.
+template <size_t N, class T> typename T::FragCopyReturnType send_fragment(T& msg) {
   uint8_t frag_buf[N];
   uint32_t cdr_enc_offset = 0;
   if (0 == msg.getPubCnt()) {
@@ -190,14 +195,35 @@ __attribute__((flatten)) typename T::FragCopyReturnType send_fragment(T& msg) {
   return ret;
 }
 
+// send_fragment flattened: every call in it inlined, the message's walk
+// included, so that the compiler sees frag_buf in every copy, as in a
+// firmware that publishes the type from one place.
+template <size_t N, class T>
+__attribute__((flatten)) typename T::FragCopyReturnType send_fragment_flattened(T& msg) {
+  return send_fragment<N>(msg);
+}
+
+// How a type's fragments are sent: through send_fragment as the compiler
+// chooses to inline it, or flattened.
+struct AsCompiled {
+  template <size_t N, class T> static typename T::FragCopyReturnType send(T& msg) {
+    return send_fragment<N>(msg);
+  }
+};
+struct Flattened {
+  template <size_t N, class T> static typename T::FragCopyReturnType send(T& msg) {
+    return send_fragment_flattened<N>(msg);
+  }
+};
+
 // mros2's publish of msg in fragments of N bytes: calls that end with
-// {true, 0}, each before it writing a byte at least. False if they did not
-// end.
-template <size_t N, class T> bool publish_in_fragments(T& msg) {
+// {true, 0}, each before it writing a byte at least. False if they did
+// not end.
+template <size_t N, class How, class T> bool publish_in_fragments(T& msg) {
   sent_size = 0;
   const uint32_t announced = msg.calcTotalSize();
   for (uint32_t calls = 0; calls <= announced; ++calls) {
-    typename T::FragCopyReturnType ret = send_fragment<N>(msg);
+    typename T::FragCopyReturnType ret = How::template send<N>(msg);
     if (ret.first && ret.second == 0) {
       msg.resetCount();
       return true;
@@ -208,8 +234,8 @@ template <size_t N, class T> bool publish_in_fragments(T& msg) {
 
 // 1 if msg's fragments of N bytes carry other bytes than image, after
 // naming type and N.
-template <size_t N, class T> int differs(const char* type, T& msg, const Bytes& image) {
-  if (publish_in_fragments<N>(msg) && sent_size == image.size() &&
+template <size_t N, class How, class T> int differs(const char* type, T& msg, const Bytes& image) {
+  if (publish_in_fragments<N, How>(msg) && sent_size == image.size() &&
       memcmp(sent, image.data(), sent_size) == 0)
     return 0;
   printf("differs %%s %%u\n", type, static_cast<unsigned>(N));
@@ -218,7 +244,7 @@ template <size_t N, class T> int differs(const char* type, T& msg, const Bytes& 
 
 // The failures of type: the sample refused, or fragments of some size that
 // carry other bytes than copyToBuf writes.
-template <class T> int check(const char* type, const Bytes& sample) {
+template <class How, class T> int check(const char* type, const Bytes& sample) {
   T msg;
   if (!msg.copyFromBuf(sample.data(), static_cast<uint32_t>(sample.size()))) {
     printf("refused %%s\n", type);
@@ -248,10 +274,13 @@ def write_program(types, path):
     text = PROGRAM % {
         'includes': '\n'.join('#include "%s"' % header
                               for header in sorted({header for header, _ in types})),
-        'publications': ' +\n         '.join('differs<%d>(type, msg, image)' % size
-                                            for size in FRAGMENT_BUFFER_SIZES),
-        'checks': '\n'.join('  failures += check<%s>("%s", sample);' % (name, name)
-                            for _, name in types),
+        'publications': ' +\n         '.join(
+            'differs<%d, %s>(type, msg, image)' % (size, 'How' if size == FLATTENED_SIZE
+                                                   else 'AsCompiled')
+            for size in FRAGMENT_BUFFER_SIZES),
+        'checks': '\n'.join('  failures += check<%s, %s>("%s", sample);' % (
+            'AsCompiled' if name in AS_COMPILED else 'Flattened', name, name)
+            for _, name in types),
         'type_count': len(types),
         'size_count': len(FRAGMENT_BUFFER_SIZES),
     }
