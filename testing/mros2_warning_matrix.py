@@ -1,11 +1,15 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The warning matrix of the mros2 headers: every message type of
 test_ws_ros2 and of ROS 2's test interface files (Debian's
-ros2-test-interface-files) published in fragments by a caller written as
-mros2's ``Publisher::publish`` is (an array ``uint8_t frag_buf[N]``, the
-first fragment after the 4-byte encapsulation header), in one translation
-unit, compiled with every warning flag of :data:`WARNING_FLAGS` by
-{g++, arm-none-eabi-g++, clang++} x {-O0 .. -Os} x {C++11 .. C++20}.
+ros2-test-interface-files), and issue 50's float64[64], published in
+fragments by a caller written as mros2's ``Publisher::publish`` is (an
+array ``uint8_t frag_buf[N]``, the first fragment after the 4-byte
+encapsulation header), in one translation unit, compiled with every
+warning flag of :data:`WARNING_FLAGS` by {g++, arm-none-eabi-g++, clang++}
+x {-O0 .. -Os} x {C++11 .. C++20}. The fragments of FLATTENED_SIZE bytes
+are sent with every call inlined (GCC's flatten), so that the compiler
+holds every copy of every walk against frag_buf, not only those it
+happens to inline.
 
 A program built for the host also checks the bytes: each type, decoded
 from one patterned sample, goes out in fragments of N = 16, 64 and 100
