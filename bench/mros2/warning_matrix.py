@@ -98,7 +98,7 @@ def main():
               len(builds), warnings, len([build for build in builds if build.output is None]),
               len(checked), sum(checked)))
     for build in builds:
-        if build.stderr:
+        if build.warnings or build.errors or build.output is None:
             print('\n%s:\n%s' % (' '.join(build.configuration), build.stderr[-3000:]))
     return 0 if warnings == 0 and sum(checked) == 0 and all(
         build.output for build in builds) else 1

@@ -8,8 +8,8 @@ first fragment), compiles without a warning under -Wall -Wextra -Wpedantic
 copyToBuf writes (testing/mros2_warning_matrix.py).
 
 The part of the matrix run here: g++ at -O0, -O1, -O2, -O3 and -Os with
--std=c++11, g++ -O2 -std=c++17 and clang++ -O2 -std=c++20, each built and
-run (about a minute on two cores: the flattened walks are slow to compile);
+-std=c++11 and clang++ -O2 -std=c++17, each built and run (about 120 s of
+CPU, two builds at a time: the flattened walks are slow to compile);
 arm-none-eabi-g++ -Os -std=c++14 for a Cortex-M4, compiled only (slow: a
 cross compiler). All types are in one translation unit per configuration.
 bench/mros2/warning_matrix.py builds the whole matrix (3 compilers x 5
@@ -26,7 +26,7 @@ from testing import mros2_warning_matrix as matrix
 from testing.mros2_warning_matrix import Configuration
 
 HOST_PART = [Configuration('g++', level, 'c++11') for level in matrix.LEVELS] + [
-    Configuration('g++', '-O2', 'c++17'), Configuration('clang++', '-O2', 'c++20')]
+    Configuration('clang++', '-O2', 'c++17')]
 BOARD_PART = [Configuration('arm-none-eabi-g++', '-Os', 'c++14')]
 
 
@@ -73,6 +73,8 @@ def test_fragments_compile_warning_free_and_carry_copytobufs_bytes(caller, tmp_p
 
 @pytest.mark.slow
 def test_fragments_compile_warning_free_for_a_board(caller, tmp_path):
+    """arm-none-eabi-g++ also prints -Wpsabi notes (std::move_iterator's
+    parameter passing changed in GCC 7.1): notes, not warnings."""
     builds = _build_all(BOARD_PART, caller, tmp_path)
     assert [(build.configuration, build.stderr[-3000:]) for build in builds
-            if build.stderr or build.output is None] == []
+            if build.warnings or build.errors or build.output is None] == []
