@@ -77,22 +77,22 @@ class CountingSink {
 class WindowSink {
  public:
   WindowSink(uint8_t* buffer, uint32_t start, uint32_t size)
-      : buffer_(buffer), start_(start), end_(start + size) {}
+      : buffer_(buffer), start_(start), end_(start + size), size_(size) {}
   uint32_t start() const { return start_; }
   uint32_t end() const { return end_; }
   // Bytes wholly inside, the common case, are copied as they come: a
   // number's fixed count then makes the copy one store.
   void put(uint32_t position, const uint8_t* bytes, uint32_t count) {
-    uint32_t first, last;
-    if (inside(position, count))
-      memcpy(buffer_ + (position - start_), bytes, count);
+    uint32_t offset, first, last;
+    if (inside(position, count, offset))
+      memcpy(buffer_ + offset, bytes, count);
     else if (overlap(position, count, first, last))
       memcpy(buffer_ + (first - start_), bytes + (first - position), last - first);
   }
   void zeros(uint32_t position, uint32_t count) {
-    uint32_t first, last;
-    if (inside(position, count))
-      memset(buffer_ + (position - start_), 0, count);
+    uint32_t offset, first, last;
+    if (inside(position, count, offset))
+      memset(buffer_ + offset, 0, count);
     else if (overlap(position, count, first, last))
       memset(buffer_ + (first - start_), 0, last - first);
   }
@@ -107,8 +107,16 @@ class WindowSink {
   }
 
  private:
-  bool inside(uint32_t position, uint32_t count) const {
-    return position >= start_ && position + count <= end_;
+  // Whether [position, position + count) is inside, and then its offset in
+  // the buffer. The count is held against the buffer's size first, not as
+  // a stream position against the window's end: where the compiler knows
+  // both (a fixed count, an array the caller passed), a count over the
+  // size, such as a long array of numbers into a short fragment, is seen
+  // never to be copied here, and no warning says the copy could pass the
+  // buffer's end.
+  bool inside(uint32_t position, uint32_t count, uint32_t& offset) const {
+    offset = position - start_;
+    return count <= size_ && position >= start_ && offset <= size_ - count;
   }
   // [first, last): the part of [position, position + count) inside the window.
   bool overlap(uint32_t position, uint32_t count, uint32_t& first, uint32_t& last) const {
@@ -120,6 +128,7 @@ class WindowSink {
   uint8_t* buffer_;
   uint32_t start_;
   uint32_t end_;
+  uint32_t size_;
 };
 
 // The little-endian bytes of a number, whatever the host's byte order.
