@@ -32,12 +32,13 @@ import re
 import subprocess
 import sys
 
+from testing import ros_paths
+
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TEST_WS_ROS2 = os.path.join(REPO, 'test_ws_ros2')
-# test_ws_ros2's packages, and the test interface files, which Debian
-# installs as the package test_interface_files under /usr.
+# test_ws_ros2's packages, and ROS 2's test interface files, installed as
+# the package test_interface_files (Debian: under /usr).
 PACKAGES = ('mros2_base_msgs', 'mros2_test_msgs', 'test_interface_files')
-PREFIX = '/usr'
 # And the type issue 50 found the warning with: a fixed array larger than
 # every fragment buffer, whose one copy the compiler held against the
 # buffer; in a package of its own, written beside the export.
@@ -113,7 +114,8 @@ def export_headers(include_dir):
     issue_workspace = _write_issue_package(include_dir.rstrip(os.sep) + '-workspace')
     result = subprocess.run(
         [sys.executable, '-m', 'colcon_mros', 'mros2-export', '--workspace', TEST_WS_ROS2,
-         '--workspace', issue_workspace, '--prefix', PREFIX, '-o', include_dir]
+         '--workspace', issue_workspace, '-o', include_dir]
+        + ros_paths.prefix_arguments(ros_paths.ros2_prefixes())
         + ['--package=%s' % p for p in PACKAGES + (ISSUE_PACKAGE,)],
         capture_output=True, text=True, cwd=REPO)
     if result.returncode != 0:
