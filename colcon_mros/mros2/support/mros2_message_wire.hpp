@@ -108,15 +108,16 @@ class WindowSink {
 
  private:
   // Whether [position, position + count) is inside, and then its offset in
-  // the buffer. The count is held against the buffer's size first, not as
-  // a stream position against the window's end: where the compiler knows
-  // both (a fixed count, an array the caller passed), a count over the
+  // the buffer (a position before the window wraps to an offset past it).
+  // The count is held against the buffer's size first, not as a stream
+  // position against the window's end: where the compiler knows both (a
+  // fixed count, an array the caller passed), a count over the buffer's
   // size, such as a long array of numbers into a short fragment, is seen
   // never to be copied here, and no warning says the copy could pass the
   // buffer's end.
   bool inside(uint32_t position, uint32_t count, uint32_t& offset) const {
     offset = position - start_;
-    return count <= size_ && position >= start_ && offset <= size_ - count;
+    return count <= size_ && offset <= size_ - count;
   }
   // [first, last): the part of [position, position + count) inside the window.
   bool overlap(uint32_t position, uint32_t count, uint32_t& first, uint32_t& last) const {
