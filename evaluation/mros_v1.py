@@ -44,7 +44,7 @@ def build_app(mros_root, build_root):
     output = os.path.join(build_root, 'build')
     with open(os.path.join(build_root, 'mros-v1-pc.log'), 'w') as log:
         result = subprocess.run(['genmros', 'mros-v1-pc', app, '--mros-root', mros_root,
-                                 '--msg-path', TEST_WS_SRC, '-o', output,
+                                 '--workspace', TEST_WS_SRC, '-o', output,
                                  '--type', 'mros_test/PersonalData', '-j2'],
                                 stdout=log, stderr=subprocess.STDOUT)
     if result.returncode != 0:

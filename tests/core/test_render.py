@@ -14,6 +14,7 @@ import sys
 import pytest
 
 from conftest import REPO
+from testing import ros_paths
 
 # Two renders, then rosidl_adapter's own template, in one process, as
 # genmros mros2-export and colcon's --mros-export run them.
@@ -238,13 +239,15 @@ def _real_renders(tmp_path, monkeypatch):
 
     for module in (render, mros_v1_render, aggregates, fit_check_header, mros2_render):
         monkeypatch.setattr(module, 'render_template', recording)
-    assert cli.main(['export', '-o', str(tmp_path / 'v1'), '--underlay', '/usr', '--package',
-                     'std_msgs', '--package', 'std_srvs', '--package', 'geometry_msgs']) == 0
-    assert cli.main(['generate', '/usr/share/std_msgs/msg/Header.msg', '-p', 'std_msgs',
-                     '-o', str(tmp_path / 'generated'), '-I', 'std_msgs:/usr/share/std_msgs/msg',
+    std_msgs = ros_paths.ros1_package_dir('std_msgs')
+    assert cli.main(['export', '-o', str(tmp_path / 'v1'), '--package', 'std_msgs', '--package',
+                     'std_srvs', '--package', 'geometry_msgs']
+                    + ros_paths.prefix_arguments(ros_paths.ros1_prefixes())) == 0
+    assert cli.main(['generate', os.path.join(std_msgs, 'Header.msg'), '-p', 'std_msgs',
+                     '-o', str(tmp_path / 'generated'), '-I', 'std_msgs:%s' % std_msgs,
                      '--add-to-export-dir', str(tmp_path / 'export_dir')]) == 0
     package = 'test_interface_files'
-    builder = ModelBuilder(all_packages((), ['/usr']), HeapStorage())
+    builder = ModelBuilder(all_packages((), ros_paths.ros2_prefixes()), HeapStorage())
     interfaces = sorted(builder.packages[package].interfaces)
     messages = [builder.message('%s/msg/%s' % (package, n)) for k, n in interfaces if k == 'msg']
     for message in messages:
