@@ -33,6 +33,7 @@ import subprocess
 import sys
 
 from testing import ros_paths
+from testing.interface_packages import write_interface_package
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TEST_WS_ROS2 = os.path.join(REPO, 'test_ws_ros2')
@@ -44,21 +45,6 @@ PACKAGES = ('mros2_base_msgs', 'mros2_test_msgs', 'test_interface_files')
 # buffer; in a package of its own, written beside the export.
 ISSUE_PACKAGE = 'warning_matrix_msgs'
 ISSUE_MESSAGES = {'WideArray': 'float64[64] values\n'}
-ISSUE_PACKAGE_XML = '''<?xml version="1.0"?>
-<package format="3">
-  <name>warning_matrix_msgs</name>
-  <version>0.1.0</version>
-  <description>The message of testing/mros2_warning_matrix.py.</description>
-  <maintainer email="dev@example.com">colcon-mros developers</maintainer>
-  <license>BSD-3-Clause</license>
-  <buildtool_depend>ament_cmake</buildtool_depend>
-  <buildtool_depend>rosidl_default_generators</buildtool_depend>
-  <member_of_group>rosidl_interface_packages</member_of_group>
-  <export>
-    <build_type>ament_cmake</build_type>
-  </export>
-</package>
-'''
 
 COMPILERS = {
     'g++': ['g++'],
@@ -95,23 +81,13 @@ def every_configuration():
             for level in LEVELS for standard in STANDARDS]
 
 
-def _write_issue_package(root):
-    """The workspace under root of ISSUE_PACKAGE, with ISSUE_MESSAGES."""
-    package = os.path.join(root, 'src', ISSUE_PACKAGE)
-    os.makedirs(os.path.join(package, 'msg'), exist_ok=True)
-    with open(os.path.join(package, 'package.xml'), 'w') as stream:
-        stream.write(ISSUE_PACKAGE_XML)
-    for name, text in ISSUE_MESSAGES.items():
-        with open(os.path.join(package, 'msg', name + '.msg'), 'w') as stream:
-            stream.write(text)
-    return root
-
-
 def export_headers(include_dir):
     """The headers of every message type and service half of PACKAGES and
     ISSUE_PACKAGE, written into include_dir with genmros' mros2 back end, as
     users run it (the issue's package in a workspace beside include_dir)."""
-    issue_workspace = _write_issue_package(include_dir.rstrip(os.sep) + '-workspace')
+    issue_workspace = write_interface_package(
+        include_dir.rstrip(os.sep) + '-workspace', ISSUE_PACKAGE, ISSUE_MESSAGES,
+        'The message of testing/mros2_warning_matrix.py.')
     result = subprocess.run(
         [sys.executable, '-m', 'colcon_mros', 'mros2-export', '--workspace', TEST_WS_ROS2,
          '--workspace', issue_workspace, '-o', include_dir]

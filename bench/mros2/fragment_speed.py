@@ -47,24 +47,12 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, REPO)  # colcon_mros and the shared testing package
+from testing.interface_packages import write_interface_package  # noqa: E402
+
 SOURCE = os.path.join(HERE, 'fragment_speed.cpp')
 TYPES = ('Items', 'Numbers', 'Groups')
 
-PACKAGE_XML = '''<?xml version="1.0"?>
-<package format="3">
-  <name>frag_bench</name>
-  <version>0.1.0</version>
-  <description>Messages of bench/mros2/fragment_speed.py.</description>
-  <maintainer email="dev@example.com">colcon-mros developers</maintainer>
-  <license>BSD-3-Clause</license>
-  <buildtool_depend>ament_cmake</buildtool_depend>
-  <buildtool_depend>rosidl_default_generators</buildtool_depend>
-  <member_of_group>rosidl_interface_packages</member_of_group>
-  <export>
-    <build_type>ament_cmake</build_type>
-  </export>
-</package>
-'''
 MESSAGES = {
     'Item': 'int32 id\nfloat64 value\nstring name\n',
     'Items': 'Item[] items\n',
@@ -74,14 +62,8 @@ MESSAGES = {
 
 
 def _workspace(root):
-    package = os.path.join(root, 'ws', 'src', 'frag_bench')
-    os.makedirs(os.path.join(package, 'msg'))
-    with open(os.path.join(package, 'package.xml'), 'w') as stream:
-        stream.write(PACKAGE_XML)
-    for name, text in MESSAGES.items():
-        with open(os.path.join(package, 'msg', name + '.msg'), 'w') as stream:
-            stream.write(text)
-    return os.path.join(root, 'ws')
+    return write_interface_package(os.path.join(root, 'ws'), 'frag_bench', MESSAGES,
+                                   'Messages of bench/mros2/fragment_speed.py.')
 
 
 def _export(genmros_root, workspace, include_dir):
@@ -112,7 +94,6 @@ def _nesting_depth(message):
 def _state_bytes(workspace):
     """The bytes that keep where a fragment stopped, per type: idxSerialized
     of the message and of the nested message at each level, and cntSub."""
-    sys.path.insert(0, REPO)
     from colcon_mros.core.storage import HeapStorage
     from colcon_mros.ros2.interfaces import all_packages
     from colcon_mros.ros2.model import ModelBuilder
