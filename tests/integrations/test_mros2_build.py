@@ -178,6 +178,27 @@ def test_the_export_dirs_mros2_half_is_refused_naming_its_parent(workspace, tmp_
         in unwrapped(result.stdout), result.stdout[-3000:]
 
 
+def test_bad_topic_names_stop_the_configure_step_one_line_each(workspace, tmp_path):
+    firmware = tmp_path / 'firmware'
+    shutil.copytree(workspace.firmware, str(firmware), ignore=shutil.ignore_patterns('build'))
+    cmake = firmware / 'CMakeLists.txt'
+    cmake.write_text(cmake.read_text().replace(
+        'PUBLISH reading:mros2_test_msgs/msg/Reading',
+        'PUBLISH 9reading:mros2_test_msgs/msg/Reading').replace(
+        'SUBSCRIBE stamp:mros2_base_msgs/msg/Stamp', 'SUBSCRIBE st-amp:mros2_base_msgs/msg/Stamp'))
+    result = run(['cmake', '-S', str(firmware), '-B', str(firmware / 'build')], workspace.root,
+                 check=False)
+    assert result.returncode != 0
+    output = unwrapped(result.stdout)
+    assert ("--publish topic '9reading' (in '9reading:mros2_test_msgs/msg/Reading'): ROS 2 "
+            "refuses a name with '9reading' starting with a digit, so no ROS node would match "
+            'it') in output, result.stdout[-3000:]
+    assert ("--subscribe topic 'st-amp' (in 'st-amp:mros2_base_msgs/msg/Stamp'): ROS 2 refuses "
+            "a name with '-' (a ROS 2 name holds only A-Z, a-z, 0-9, _ and /), so no ROS node "
+            'would match it') in output
+    assert not (firmware / 'build' / 'mros2_messages').exists()
+
+
 def test_a_board_config_too_small_stops_the_configure_step(workspace):
     """The fit check runs in mros2_import_messages(); the config is a
     configure dependency, so editing it configures again."""
