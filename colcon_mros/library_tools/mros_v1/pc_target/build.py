@@ -10,27 +10,20 @@ PC target's ASP, lwIP and mbed stand-ins, the app, the link.
 """
 
 import dataclasses
-import filecmp
 import os
 import re
-import shutil
 import subprocess
 import sys
-import tempfile
 
 from colcon_mros.core.defaults import DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE
 from colcon_mros.errors import GenmrosError
 from colcon_mros.integrations.installed_files import MAKE_FRAGMENT, installed_file
+from colcon_mros.library_tools.pc_build import SANITIZER_FLAGS, check_tools, patched_copy, runner
 from colcon_mros.library_tools.mros_v1.pc_target.asp_cfg import read_config, write_kernel_config
 from colcon_mros.mros_v1.app import App, find_app
 
 TARGET_DIR = os.path.dirname(os.path.abspath(__file__))
 MAKEFILE = os.path.join(TARGET_DIR, 'mros_v1_pc.mk')
-# The cross compiler of the arm target and what runs its programs.
-ARM_COMPILER = 'arm-linux-gnueabihf-g++'
-ARM_RUNNER = 'qemu-arm'
-# What --sanitize adds to every compile and the link (native target only).
-SANITIZER_FLAGS = '-fsanitize=address,undefined -fno-omit-frame-pointer'
 # The steps of a build: (make goal, what the step's line says).
 STEPS = (('library', 'the mROS v1 library of %(root)s, the PC target and the message headers'),
          ('app', 'the app %(name)s'),
@@ -62,40 +55,10 @@ class PcBuild:
 
 def hardened_library(mros_root, build_dir):
     """The root of a copy of mros_root's mros-lib in build_dir with the patch
-    set applied; a file whose text is the same as at the last build keeps
-    its time, so that make rebuilds only what changed."""
+    set applied (only changed files rewritten)."""
     from colcon_mros.library_tools.mros_v1.patches import LIBRARY_DIR, mros_v1_patches
-    from colcon_mros.library_tools.patch_series import apply_patches
-    root = os.path.join(build_dir, 'hardened')
-    os.makedirs(build_dir, exist_ok=True)
-    with tempfile.TemporaryDirectory(prefix='genmros-hardened-', dir=build_dir) as scratch:
-        shutil.copytree(os.path.join(mros_root, LIBRARY_DIR), os.path.join(scratch, LIBRARY_DIR))
-        apply_patches(scratch, mros_v1_patches())
-        for directory, _, names in os.walk(os.path.join(scratch, LIBRARY_DIR)):
-            target = os.path.join(root, os.path.relpath(directory, scratch))
-            os.makedirs(target, exist_ok=True)
-            for name in names:
-                source, copy = os.path.join(directory, name), os.path.join(target, name)
-                if not os.path.isfile(copy) or not filecmp.cmp(source, copy, shallow=False):
-                    shutil.copy2(source, copy)
-    return root
-
-
-def check_tools(target, sanitize):
-    if sanitize and target != 'native':
-        raise GenmrosError('--sanitize needs --target native (qemu-arm runs no sanitizer)')
-    compiler = ARM_COMPILER if target == 'arm' else 'g++'
-    if shutil.which(compiler) is None:
-        raise GenmrosError('%s not found: install %s' % (
-            compiler, 'g++-arm-linux-gnueabihf (or use --target native)'
-            if target == 'arm' else 'g++'))
-    if shutil.which('make') is None:
-        raise GenmrosError('make not found: install make')
-
-
-def runner(target):
-    """The command that runs a program built for target on this PC."""
-    return [ARM_RUNNER] if target == 'arm' else []
+    return patched_copy(mros_root, [LIBRARY_DIR], mros_v1_patches(),
+                        os.path.join(build_dir, 'hardened'))
 
 
 def _unresolved_task(config, linker_output):
