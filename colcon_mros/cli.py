@@ -35,7 +35,7 @@ prefixes (--prefix PREFIX); without --prefix, from the ROS environment.
 SUBCOMMAND_GROUPS = (
     ('mROS v1 (ROS 1)', ('export', 'mros-v1-fit', 'mros-v1-pc', 'mros-v1-harden',
                          'prune-export')),
-    ('mros2 (ROS 2)', ('mros2-export', 'mros2-fit', 'mros2-harden')),
+    ('mros2 (ROS 2)', ('mros2-export', 'mros2-fit', 'mros2-pc', 'mros2-harden')),
     ('paths for builds', ('cmake-dir', 'make-fragment', 'catkin-prefix')),
 )
 
@@ -422,9 +422,73 @@ def _add_mros2_fit(subparsers):
     parser.set_defaults(run=_mros2_fit)
 
 
+def _add_mros2_pc(subparsers):
+    from colcon_mros.library_tools.mros2.pc_target.build import DEFAULT_RECEIVE_LIMIT
+    parser = subparsers.add_parser(
+        'mros2-pc', help='build and run an unmodified mros2 app and mros2 on this PC',
+        description="Build an mros2 app with the user's mros2 (and its embeddedRTPS), "
+                    "unchanged, genmros' headers and templates.hpp (after the fit check), and "
+                    "stand-ins for the board's CMSIS-RTOS2 and lwIP, then run it on a network "
+                    'of its own: the board side has the board\'s address, the ROS side the '
+                    'peer\'s, in one user namespace with two network namespaces (no root). '
+                    '`genmros mros2-pc ros -- CMD` runs a ROS 2 command on the ROS side of the '
+                    'board that runs.',
+        usage='genmros mros2-pc APP_DIR --rtps-config FILE [options]\n'
+              '       genmros mros2-pc ros -- CMD [ARG ...]')
+    parser.add_argument('app_dir', metavar='APP_DIR',
+                        help="the app's directory (its Filelists.cmake, else its .c/.cpp "
+                             "files); 'ros' runs the command after -- on the ROS side")
+    parser.add_argument('command', nargs='*', metavar='CMD', help=argparse.SUPPRESS)
+    parser.add_argument('--rtps-config', metavar='FILE',
+                        help="the board's rtps/config.h, the one the firmware compiles with")
+    parser.add_argument('--receive-limit', metavar='BYTES|FILE:NAME',
+                        default=DEFAULT_RECEIVE_LIMIT,
+                        help="the largest datagram the board's network stack takes; a larger "
+                             "one is cut to it (default %s, mros2-posix' lwIP)"
+                             % DEFAULT_RECEIVE_LIMIT)
+    parser.add_argument('--mros2-root', metavar='DIR',
+                        help='the mros2 checkout, with its embeddedRTPS (default: MROS2_ROOT)')
+    parser.add_argument('--lwipopts', metavar='FILE',
+                        help="the port's lwipopts.h: the tcpip thread's stack size "
+                             '(TCPIP_THREAD_STACKSIZE; default 1024 bytes)')
+    parser.add_argument('--board-address', metavar='ADDRESS',
+                        help="the board's IPv4 address, on a /24 (default: the config's "
+                             "IP_ADDRESS, else mros2-posix' 192.168.11.3)")
+    _add_mros2_sources(parser)
+    _add_mros2_endpoints(parser, " (default: the app's create_publisher and "
+                                 'create_subscription calls)')
+    _add_mros2_storage(parser)
+    parser.add_argument('--target', choices=PC_TARGETS, default='arm',
+                        help="arm: 32-bit ARM Linux, the board's data layout, a static program "
+                             'run with qemu-arm, each thread on its board stack size (default); '
+                             'native: this PC, host stacks')
+    parser.add_argument('--sanitize', action='store_true',
+                        help='build with AddressSanitizer and UndefinedBehaviorSanitizer '
+                             '(with --target native)')
+    patches = parser.add_mutually_exclusive_group()
+    patches.add_argument('--hardened', action='store_true',
+                         help="build a copy of mros2 with genmros' whole patch series applied "
+                              '(genmros mros2-harden); the checkout stays as it is')
+    patches.add_argument('--patch', dest='patches', action='append', default=[],
+                         metavar='NAME',
+                         help='apply only this patch of the series to the copy (repeatable), '
+                              'e.g. accept-fast-dds-3-discovery')
+    parser.add_argument('-o', dest='build_dir', metavar='DIR',
+                        help='build directory (default: APP_DIR/build-mros2-pc-FLAVOUR)')
+    parser.add_argument('-j', dest='jobs', type=int, default=os.cpu_count() or 1,
+                        help='parallel make jobs (default: the number of CPUs)')
+    parser.add_argument('--no-fit-check', action='store_true',
+                        help="build even where the endpoints do not fit the board's settings")
+    parser.add_argument('--build-only', action='store_true',
+                        help='build the program, and do not run it')
+    parser.add_argument('-v', '--verbose', action='store_true',
+                        help='show every compiler command')
+    parser.set_defaults(run=_mros2_pc)
+
+
 SUBCOMMANDS = (_add_generate, _add_export, _add_printers, _add_export_dir_commands,
                _add_mros_v1_pc, _add_mros_v1_fit, _add_mros_v1_harden, _add_mros2_export,
-               _add_mros2_fit, _add_mros2_harden)
+               _add_mros2_fit, _add_mros2_pc, _add_mros2_harden)
 
 
 def build_parser():
@@ -617,6 +681,38 @@ def _harden(root, patches, options):
 def _mros_v1_harden(options):
     from colcon_mros.library_tools.mros_v1.patches import check_root, mros_v1_patches
     return _harden(check_root(options.mros_root), mros_v1_patches(), options)
+
+
+def _mros2_pc(options):
+    from colcon_mros.library_tools.mros2.pc_target import network
+    if options.app_dir == 'ros':
+        if not options.command:
+            raise GenmrosError('give the command to run on the ROS side: genmros mros2-pc ros '
+                               '-- CMD')
+        command = network.ros_side_command(options.command)
+        sys.stdout.flush()
+        os.execvp(command[0], command)
+    if options.command:
+        raise GenmrosError('unexpected %s after APP_DIR' % ' '.join(options.command))
+    if not options.rtps_config:
+        raise GenmrosError("give the board's rtps/config.h: --rtps-config FILE")
+    from colcon_mros.library_tools.mros2.pc_target.build import Mros2PcBuild, build
+    from colcon_mros.ros2.environment import require_rosidl
+    require_rosidl()
+    workspaces, prefixes = _definition_places(options)
+    program = build(Mros2PcBuild(
+        app_dir=options.app_dir, rtps_config=options.rtps_config,
+        mros2_root=options.mros2_root, receive_limit=options.receive_limit,
+        publish=options.publish, subscribe=options.subscribe, workspaces=workspaces,
+        prefixes=prefixes, storage=options.storage, option_files=options.option_files,
+        target=options.target, sanitize=options.sanitize, hardened=options.hardened,
+        patches=tuple(options.patches), build_dir=options.build_dir,
+        board_address=options.board_address, lwipopts=options.lwipopts,
+        fit_check=not options.no_fit_check, jobs=options.jobs, verbose=options.verbose))
+    if options.build_only:
+        print('genmros: built %s' % program.path)
+        return 0
+    return network.run_board(program)
 
 
 def _mros2_harden(options):

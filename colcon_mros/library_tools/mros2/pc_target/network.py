@@ -20,7 +20,9 @@ import ipaddress
 import json
 import os
 import shutil
+import signal
 import subprocess
+import sys
 import tempfile
 
 from colcon_mros.errors import GenmrosError
@@ -161,3 +163,26 @@ def ros_side_command(command):
                            'mros2-pc APP_DIR' % state_file())
     return _inside(state['ros_pid']) + ['env', 'ROS_DOMAIN_ID=%d' % state['domain_id']] + \
         list(command)
+
+
+def run_board(program):
+    """Runs a Mros2Program on the board side of a BoardNetwork until it
+    ends or is stopped (Ctrl-C, SIGTERM); returns its exit status."""
+    with BoardNetwork(program.board_address, program.domain_id) as network:
+        print('genmros: the board runs at %s, the ROS side at %s (ROS_DOMAIN_ID=%d); from '
+              'another shell, ROS 2 commands reach it with: genmros mros2-pc ros -- ros2 topic '
+              'list' % (network.board_address, network.ros_address, network.domain_id),
+              flush=True)
+        board = subprocess.Popen(network.board_command(program.command))
+        stop = signal.signal(signal.SIGTERM, lambda *_: board.send_signal(signal.SIGTERM))
+        try:
+            while True:
+                try:
+                    status = board.wait()
+                    break
+                except KeyboardInterrupt:  # the terminal's SIGINT reached the board too
+                    continue
+        finally:
+            signal.signal(signal.SIGTERM, stop)
+        sys.stdout.flush()
+        return status
