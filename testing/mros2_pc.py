@@ -1,0 +1,161 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""genmros mros2-pc programs, run for the tests, the main job and the bench.
+
+:func:`build` builds an app with the user's mros2 through genmros' own build
+(:mod:`colcon_mros.library_tools.mros2.pc_target.build`); a :class:`Session` holds the
+board's network (:class:`~colcon_mros.library_tools.mros2.pc_target.network.BoardNetwork`),
+runs the program on its board side with its output in a log, and rclpy peers
+(testing/mros2_pc_peer.py, in the ROS 2 wheels' venv) on its ROS side. Waits are for
+events (a line in the board's log, the peer's "peer ready"), each with a cap that only a
+broken run reaches.
+"""
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+
+from colcon_mros.library_tools.mros2.pc_target.build import Mros2PcBuild
+from colcon_mros.library_tools.mros2.pc_target.build import build as build_program
+from colcon_mros.library_tools.mros2.pc_target.network import BoardNetwork
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+WHEELS_VENV = os.path.join(REPO, 'build', 'ros2-wheels')
+PEER_SCRIPT = os.path.join(REPO, 'testing', 'mros2_pc_peer.py')
+# What a run waits for at most: discovery through embeddedRTPS' SEDP, whose heartbeat
+# comes every 4 s, under qemu on a busy 2-core machine.
+EVENT_CAP = 180
+
+
+def build(app_dir, build_dir, mros2_root, rtps_config, **options):
+    """The Mros2Program of app_dir, built in build_dir (options: Mros2PcBuild's)."""
+    options.setdefault('prefixes', [WHEELS_VENV])
+    options.setdefault('jobs', 2)
+    return build_program(Mros2PcBuild(app_dir=app_dir, rtps_config=rtps_config,
+                                      mros2_root=mros2_root, build_dir=build_dir, **options))
+
+
+def peer_environment(log_dir):
+    """rclpy's environment: the wheels' Fast DDS with its defaults, logs in log_dir."""
+    env = {key: value for key, value in os.environ.items()
+           if not key.startswith(('ROS_', 'RMW_', 'FASTRTPS_', 'FASTDDS_', 'AMENT_'))}
+    env.update(RMW_IMPLEMENTATION='rmw_fastrtps_cpp', ROS_LOG_DIR=log_dir)
+    return env
+
+
+class Peer:
+    """testing/mros2_pc_peer.py running on the ROS side."""
+
+    def __init__(self, command, job, log_dir):
+        self._stderr = open(os.path.join(log_dir, 'peer-%d.err' % time.monotonic_ns()), 'w+')
+        self._process = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                         stderr=self._stderr, text=True,
+                                         env=peer_environment(log_dir))
+        self._process.stdin.write(json.dumps(job))
+        self._process.stdin.close()
+
+    def wait_ready(self):
+        _wait(lambda: 'peer ready' in self._errors() or self._process.poll() is not None,
+              'the rclpy peer to start')
+        assert self._process.poll() is None, self._errors()[-3000:]
+
+    def _errors(self):
+        self._stderr.seek(0)
+        return self._stderr.read()
+
+    def result(self, stop=False):
+        """Its report once it is done (stop: end it now)."""
+        if stop:
+            self._process.send_signal(signal.SIGTERM)
+        output = self._process.stdout.read()
+        status = self._process.wait(timeout=EVENT_CAP)
+        if status != 0:
+            raise AssertionError('the rclpy peer failed (%d): %s' % (status,
+                                                                     self._errors()[-3000:]))
+        report = json.loads(output)
+        report['received'] = {topic: [bytes.fromhex(sample) for sample in samples]
+                              for topic, samples in report['received'].items()}
+        return report
+
+
+def _wait(condition, what):
+    deadline = time.monotonic() + EVENT_CAP
+    while not condition():
+        if time.monotonic() > deadline:
+            raise AssertionError('waited %d s for %s' % (EVENT_CAP, what))
+        time.sleep(0.05)
+
+
+class Session:
+    """A program on a BoardNetwork's board side and peers on its ROS side."""
+
+    def __init__(self, program, work_dir, environment=None):
+        self.program = program
+        self.work_dir = work_dir
+        self.environment = environment
+        self.log_path = os.path.join(work_dir, 'board.log')
+        self.network = BoardNetwork(program.board_address, program.domain_id)
+        self._board = None
+        self.status = None
+
+    def __enter__(self):
+        self.network.__enter__()
+        return self
+
+    def start_board(self):
+        self._log = open(self.log_path, 'w')
+        self._board = subprocess.Popen(self.network.board_command(self.program.command),
+                                       stdout=self._log, stderr=subprocess.STDOUT,
+                                       env=self.environment)
+
+    def output(self):
+        with open(self.log_path, errors='replace') as stream:
+            return stream.read()
+
+    def wait_for_output(self, text):
+        _wait(lambda: text in self.output() or self._board.poll() is not None,
+              "'%s' in the board's output" % text)
+        return text in self.output()
+
+    def wait_for_exit(self):
+        self.status = self._board.wait(timeout=EVENT_CAP)
+        return self.status
+
+    def peer(self, job, wait_ready=True):
+        peer = Peer(self.network.ros_command([os.path.join(WHEELS_VENV, 'bin', 'python'),
+                                              PEER_SCRIPT]), job, self.work_dir)
+        if wait_ready:
+            peer.wait_ready()
+        return peer
+
+    def stop_board(self):
+        """Stops the board as Ctrl-C does; returns its output."""
+        if self._board is not None and self._board.poll() is None:
+            self._board.send_signal(signal.SIGINT)
+            self.status = self._board.wait(timeout=EVENT_CAP)
+        return self.output()
+
+    def __exit__(self, *exception):
+        if self._board is not None:
+            if self._board.poll() is None:
+                self._board.kill()
+                self._board.wait()
+            self._log.close()
+        self.network.__exit__()
+
+
+def host_network():
+    """The host namespace's addresses, routes and links, as ip -j gives them."""
+    return [subprocess.run(['ip', '-j'] + what, capture_output=True, text=True,
+                           check=True).stdout
+            for what in (['addr'], ['route'], ['link'])]
+
+
+def python_in_wheels():
+    return os.path.join(WHEELS_VENV, 'bin', 'python')
+
+
+def main_module():
+    return [sys.executable, '-m', 'colcon_mros']
