@@ -123,11 +123,11 @@ class Session:
         self.status = self._board.wait(timeout=EVENT_CAP)
         return self.status
 
-    def peer(self, job, wait_ready=True):
+    def peer(self, job):
+        """A Peer with job on the ROS side, once its endpoints exist."""
         peer = Peer(self.network.ros_command([os.path.join(WHEELS_VENV, 'bin', 'python'),
                                               PEER_SCRIPT]), job, self.work_dir)
-        if wait_ready:
-            peer.wait_ready()
+        peer.wait_ready()
         return peer
 
     def stop_board(self):
@@ -152,10 +152,3 @@ def host_network():
                            check=True).stdout
             for what in (['addr'], ['route'], ['link'])]
 
-
-def python_in_wheels():
-    return os.path.join(WHEELS_VENV, 'bin', 'python')
-
-
-def main_module():
-    return [sys.executable, '-m', 'colcon_mros']

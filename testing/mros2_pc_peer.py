@@ -3,9 +3,9 @@
 and the bench (testing/mros2_pc.py runs it in the ROS 2 wheels' venv).
 
 stdin: JSON {"publish": [{"topic", "type" (pkg/msg/Type), "samples": [hex of serialized
-messages]}], "subscribe": [{"topic", "type"}], "want": samples per subscription,
+messages]}], "subscribe": [{"topic", "type"}], "want": {topic: samples},
 "period": seconds between publishes, "timeout": seconds}. Publishes the samples in turn,
-best-effort as mros2's endpoints are, until every subscription has taken "want" samples,
+best-effort as mros2's endpoints are, until each topic of "want" has taken its samples,
 the time-out passes or SIGTERM comes. Writes "peer ready" to stderr once its endpoints
 exist. stdout: JSON {"received": {topic: [hex of each sample as it came]}, "sent": count}.
 """
@@ -18,6 +18,7 @@ import time
 
 import rclpy
 from rclpy.qos import QoSProfile, ReliabilityPolicy
+from rclpy.signals import SignalHandlerOptions
 
 
 def message_class(type_name):
@@ -28,8 +29,9 @@ def message_class(type_name):
 def main():
     job = json.load(sys.stdin)
     stopped = []
+    # rclpy's own handlers would shut its context down under the loop.
+    rclpy.init(signal_handler_options=SignalHandlerOptions.NO)
     signal.signal(signal.SIGTERM, lambda *_: stopped.append(True))
-    rclpy.init()
     node = rclpy.create_node('genmros_pc_peer')
     qos = QoSProfile(depth=100, reliability=ReliabilityPolicy.BEST_EFFORT)
     received = {entry['topic']: [] for entry in job['subscribe']}
@@ -44,7 +46,8 @@ def main():
     deadline = time.monotonic() + job['timeout']
     sent = 0
     while not stopped and time.monotonic() < deadline:
-        if job['subscribe'] and all(len(samples) >= job['want'] for samples in received.values()):
+        if job['want'] and all(len(received[topic]) >= count
+                               for topic, count in job['want'].items()):
             break
         if outgoing:
             publisher, sample = outgoing[sent % len(outgoing)]

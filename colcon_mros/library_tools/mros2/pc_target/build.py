@@ -333,7 +333,7 @@ def build(request):
                           ['subscribe %s' % e for e in subscribe]), flush=True)
     config = BoardConfig(request.rtps_config, root)
     limit = receive_limit(request.receive_limit)
-    board = Board(config.path, request.receive_limit, user_root) if request.fit_check else None
+    board = Board(config.path, request.receive_limit, root) if request.fit_check else None
     export_firmware(os.path.join(build_dir, 'include'), request.workspaces, request.prefixes,
                     (), (), publish, subscribe, request.storage, request.option_files, board)
     if config.change:

@@ -71,7 +71,7 @@ def strings(typestore, texts):
 def echo_job(typestore, texts, want=3):
     return {'publish': [{'topic': 'to_stm', 'type': STRING,
                          'samples': [sample.hex() for sample in strings(typestore, texts)]}],
-            'subscribe': [{'topic': 'to_linux', 'type': STRING}], 'want': want,
+            'subscribe': [{'topic': 'to_linux', 'type': STRING}], 'want': {'to_linux': want},
             'period': 0.2, 'timeout': mros2_pc.EVENT_CAP}
 
 
@@ -122,7 +122,7 @@ def test_pub_twist(apps, posix_root, tmp_path, typestore):
                              MROS2_ROOT, config_of(posix_root), patches=DISCOVERY,
                              target='native')
     job = {'publish': [], 'subscribe': [{'topic': 'cmd_vel', 'type': 'geometry_msgs/msg/Twist'}],
-           'want': 3, 'period': 0.2, 'timeout': mros2_pc.EVENT_CAP}
+           'want': {'cmd_vel': 3}, 'period': 0.2, 'timeout': mros2_pc.EVENT_CAP}
     with mros2_pc.Session(program, str(tmp_path)) as session:
         session.start_board()
         report = session.peer(job).result()
@@ -151,7 +151,7 @@ def test_sub_pose(apps, posix_root, tmp_path, typestore):
     sample = wire_bytes(typestore, pose, 'geometry_msgs/msg/Pose')
     job = {'publish': [{'topic': 'cmd_vel', 'type': 'geometry_msgs/msg/Pose',
                         'samples': [sample.hex()]}],
-           'subscribe': [], 'want': 0, 'period': 0.2, 'timeout': mros2_pc.EVENT_CAP}
+           'subscribe': [], 'want': {}, 'period': 0.2, 'timeout': mros2_pc.EVENT_CAP}
     line = ('{ position: {x: 1.500000, y: -2.250000, z: 3.000000 }, orientation: '
             '{x: 0.000000, y: 0.500000, z: -0.500000, w: 0.750000 } }')
     with mros2_pc.Session(program, str(tmp_path)) as session:
@@ -162,12 +162,12 @@ def test_sub_pose(apps, posix_root, tmp_path, typestore):
         session.stop_board()
 
 
-def _two_publishers(apps, posix_root, tmp_path, **options):
+def _two_publishers(apps, posix_root, tmp_path, want, **options):
     program = mros2_pc.build(os.path.join(apps, 'two_publishers'), str(tmp_path / 'build'),
                              MROS2_ROOT, config_of(posix_root), target='native', **options)
     job = {'publish': [], 'subscribe': [{'topic': 'first', 'type': STRING},
                                         {'topic': 'second', 'type': STRING}],
-           'want': 4, 'period': 0.2, 'timeout': 60}
+           'want': want, 'period': 0.2, 'timeout': mros2_pc.EVENT_CAP}
     with mros2_pc.Session(program, str(tmp_path)) as session:
         session.start_board()
         report = session.peer(job).result()
@@ -179,12 +179,14 @@ def _two_publishers(apps, posix_root, tmp_path, **options):
 def test_two_publishers_as_it_is_send_on_the_last_ones_topic(apps, posix_root, tmp_path):
     # mros2 v0.5.4's defect on the real runtime: one writer, the last publisher's; so the
     # fit check (which says so) is off for this build.
-    topics = _two_publishers(apps, posix_root, tmp_path, patches=DISCOVERY, fit_check=False)
+    topics = _two_publishers(apps, posix_root, tmp_path, {'second': 8}, patches=DISCOVERY,
+                             fit_check=False)
     assert topics == {'first': set(), 'second': {'first', 'second'}}
 
 
 def test_two_publishers_hardened_each_on_its_own(apps, posix_root, tmp_path):
-    topics = _two_publishers(apps, posix_root, tmp_path, hardened=True)
+    topics = _two_publishers(apps, posix_root, tmp_path, {'first': 4, 'second': 4},
+                             hardened=True)
     assert topics == {'first': {'first'}, 'second': {'second'}}
 
 
@@ -201,7 +203,7 @@ def test_a_thread_over_its_stack_is_named(apps, posix_root, tmp_path, typestore)
                              MROS2_ROOT, str(config), patches=DISCOVERY)
     with mros2_pc.Session(program, str(tmp_path)) as session:
         session.start_board()
-        peer = session.peer(echo_job(typestore, ['hello']), wait_ready=False)
+        peer = session.peer(echo_job(typestore, ['hello']))
         assert session.wait_for_exit() == 70
         peer.result(stop=True)
     line = [line for line in session.output().splitlines() if 'overflowed' in line]
