@@ -228,3 +228,29 @@ def test_mros2_v041_of_mros2_posix(apps, posix_root, tmp_path, typestore):
     program = mros2_pc.build(os.path.join(apps, 'echoreply_string'), str(tmp_path / 'build'),
                              root, config_of(posix_root), patches=DISCOVERY, target='native')
     run_echo(program, str(tmp_path), typestore)
+
+
+@pytest.mark.parametrize('patches', [{'patches': DISCOVERY}, {'hardened': True}],
+                         ids=['as-it-is', 'hardened'])
+def test_a_sample_over_the_receive_limit(apps, posix_root, tmp_path, typestore, patches):
+    """The stack cuts the datagram at the limit, as mros2-posix' lwIP does; embeddedRTPS'
+    length check then refuses the DATA submessage, which now runs past the datagram, so
+    neither build delivers it (the unsized receive of mros2 as it is never sees it), and
+    the PC target counts the cut datagrams. The samples that fit go on being echoed."""
+    program = mros2_pc.build(os.path.join(apps, 'echoreply_string'), str(tmp_path / 'build'),
+                             MROS2_ROOT, config_of(posix_root), target='native', sanitize=True,
+                             receive_limit='1000', **patches)
+    texts = ['small %d' % index for index in range(3)] + ['B' * 2000]
+    job = echo_job(typestore, texts, want=8)
+    with mros2_pc.Session(program, str(tmp_path)) as session:
+        session.start_board()
+        assert session.wait_for_output('ready to pub/sub message')
+        report = session.peer(job).result()
+        output = session.stop_board()
+    echoes = report['received']['to_linux']
+    assert len(echoes) >= 8
+    assert set(echoes) <= set(strings(typestore, texts[:3]))
+    assert re.search(r"mros2 PC target: a datagram of \d+ bytes from 192\.168\.11\.2:\d+ was cut "
+                     r"to the board's receive limit of 1000 bytes \(1 so far\)", output)
+    assert "subscribed msg: 'BBB" not in output
+    assert [word for word in SANITIZER_REPORTS if word in output] == []
