@@ -34,8 +34,9 @@ BOARD_LINK, ROS_LINK = 'mros2-board', 'mros2-ros'
 # it is in place.
 _HOLDER = ['sh', '-c', 'echo ready; read done']
 _REFUSED = (
-    "cannot make the board's network: %s refused a user namespace (%s): %s. Run genmros "
-    'mros2-pc as root, or run the app on mros2-posix (docs/mros2.md)')
+    "cannot make the board's network: %s failed (%s): %s, so this machine gives no namespace "
+    'without root. Run genmros mros2-pc as root, or run the app on mros2-posix '
+    '(docs/mros2.md)')
 
 
 def state_file():
@@ -88,8 +89,9 @@ class BoardNetwork:
         if holder.stdout.readline().strip() != 'ready':
             error = holder.stderr.read().strip()
             holder.wait()
-            raise GenmrosError(_REFUSED % (what, error.splitlines()[-1] if error else
-                                           'exit %d' % holder.returncode, _why_refused()))
+            reason = error.splitlines()[-1] if error else 'exit %d' % holder.returncode
+            raise GenmrosError(_REFUSED % (what, reason.replace('unshare: ', ''),
+                                           _why_refused()))
         self._holders.append(holder)
         return holder.pid
 
@@ -180,8 +182,8 @@ def run_board(program):
                 try:
                     status = board.wait()
                     break
-                except KeyboardInterrupt:  # the terminal's SIGINT reached the board too
-                    continue
+                except KeyboardInterrupt:  # Ctrl-C: the board reports its stacks and ends
+                    board.send_signal(signal.SIGINT)
         finally:
             signal.signal(signal.SIGTERM, stop)
         sys.stdout.flush()

@@ -10,9 +10,15 @@ accept-fast-dds-3-discovery (without which embeddedRTPS discovers no Fast DDS 3
 participant), or --hardened; v0.4.1 is mros2-posix' own, where it is assembled.
 """
 
+import json
 import os
 import re
 import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
 
 import pytest
 
@@ -254,3 +260,57 @@ def test_a_sample_over_the_receive_limit(apps, posix_root, tmp_path, typestore, 
                      r"to the board's receive limit of 1000 bytes \(1 so far\)", output)
     assert "subscribed msg: 'BBB" not in output
     assert [word for word in SANITIZER_REPORTS if word in output] == []
+
+
+@pytest.mark.parametrize('uid', [None, 65534], ids=['as-root', 'as-nobody'])
+def test_the_command_runs_the_board_and_ros_commands_reach_it(posix_root, typestore, uid):
+    """genmros mros2-pc as a user runs it: the board on its network, a ROS 2 command on
+    the ROS side through `genmros mros2-pc ros --`, Ctrl-C, and the host as it was."""
+    if uid is not None and (os.geteuid() != 0 or shutil.which('setpriv') is None):
+        pytest.skip('runs genmros as another uid: needs root and setpriv')
+    before = mros2_pc.host_network()
+    with tempfile.TemporaryDirectory() as work:  # pytest's own are root's alone
+        app = os.path.join(work, 'echoreply_string')
+        shutil.copytree(os.path.join(posix_root, 'workspace', 'echoreply_string'), app)
+        as_user = []
+        if uid is not None:
+            subprocess.run(['chown', '-R', '%d:%d' % (uid, uid), work], check=True)
+            as_user = ['setpriv', '--reuid', str(uid), '--regid', str(uid), '--clear-groups']
+        env = dict(mros2_pc.peer_environment(work), HOME=work, XDG_RUNTIME_DIR=work,
+                   PYTHONPATH=REPO)
+        genmros = as_user + [sys.executable, '-m', 'colcon_mros', 'mros2-pc']
+        log_path = os.path.join(work, 'genmros.log')
+        with open(log_path, 'w') as log:
+            board = subprocess.Popen(
+                genmros + [app, '--rtps-config', config_of(posix_root), '--mros2-root',
+                           MROS2_ROOT, '--prefix', mros2_pc.WHEELS_VENV, '--target', 'native',
+                           '--patch', DISCOVERY[0], '-j2'],
+                stdout=log, stderr=subprocess.STDOUT, env=env)
+        try:
+            deadline = time.monotonic() + mros2_pc.EVENT_CAP
+            while 'ready to pub/sub message' not in open(log_path).read():
+                assert board.poll() is None and time.monotonic() < deadline, \
+                    open(log_path).read()[-3000:]
+                time.sleep(0.05)
+            assert ('genmros: the board runs at 192.168.11.3, the ROS side at 192.168.11.2 '
+                    '(ROS_DOMAIN_ID=0); from another shell, ROS 2 commands reach it with: '
+                    'genmros mros2-pc ros -- ros2 topic list') in open(log_path).read()
+            texts = ['hello %d' % index for index in range(5)]
+            peer = subprocess.run(
+                genmros + ['ros', '--', os.path.join(mros2_pc.WHEELS_VENV, 'bin', 'python'),
+                           mros2_pc.PEER_SCRIPT], input=json.dumps(echo_job(typestore, texts)),
+                capture_output=True, text=True, env=env, timeout=mros2_pc.EVENT_CAP)
+            assert peer.returncode == 0, peer.stderr[-3000:]
+            report = json.loads(peer.stdout)
+            report['received'] = {topic: [bytes.fromhex(sample) for sample in samples]
+                                  for topic, samples in report['received'].items()}
+            check_echoes(report, typestore, texts)
+            board.send_signal(signal.SIGINT)
+            assert board.wait(timeout=mros2_pc.EVENT_CAP) == 0
+        finally:
+            if board.poll() is None:
+                board.kill()
+                board.wait()
+        # The state file `genmros mros2-pc ros` reads goes with the board.
+        assert not [name for name in os.listdir(work) if name.startswith('genmros-mros2-pc')]
+    assert mros2_pc.host_network() == before
