@@ -14,7 +14,6 @@ import json
 import os
 import signal
 import subprocess
-import sys
 import time
 
 from colcon_mros.library_tools.mros2.pc_target.build import Mros2PcBuild
@@ -152,3 +151,11 @@ def host_network():
                            check=True).stdout
             for what in (['addr'], ['route'], ['link'])]
 
+
+def defined_c_symbols(objects, nm='nm'):
+    """The C symbols the objects define for others (their own C++ is left out)."""
+    result = subprocess.run([nm, '-g', '--defined-only'] + objects, capture_output=True,
+                            text=True, check=True)
+    return {fields[2] for fields in (line.split() for line in result.stdout.splitlines())
+            if len(fields) == 3 and fields[1] in 'TDBRV' and not fields[2].startswith('_Z')
+            and not fields[2].startswith('DW.ref.')}

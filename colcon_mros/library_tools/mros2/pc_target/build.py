@@ -236,7 +236,7 @@ def _mros2_thread_setting(mros2_root):
 def settings_header(board_address, receive_limit, tcpip_stack, thread_settings, domain_id):
     """mros2_pc_settings.h: what the stand-ins take from genmros."""
     rows = ',\n'.join('  {%s, %s}' % (cpp_string_literal_lines(name)[0],
-                                       ' '.join(cpp_string_literal_lines(setting)))
+                                      ' '.join(cpp_string_literal_lines(setting)))
                       for name, setting in thread_settings)
     return ('// Written by genmros mros2-pc: the PC target\'s settings for this board.\n'
             '#ifndef MROS2_PC_SETTINGS_H\n#define MROS2_PC_SETTINGS_H\n\n'
@@ -281,7 +281,8 @@ def _library_root(request, build_dir):
 
 def _run_steps(request, variables, words, app_dir):
     command = ['make', '--no-print-directory', '-f', MAKEFILE, '-j%d' % request.jobs] + \
-        ([] if request.verbose else ['-s']) + ['%s=%s' % item for item in sorted(variables.items())]
+        ([] if request.verbose else ['-s']) + \
+        ['%s=%s' % item for item in sorted(variables.items())]
     for goal, line in STEPS:
         print('genmros: %s' % (line % words), flush=True)
         if goal != 'program':

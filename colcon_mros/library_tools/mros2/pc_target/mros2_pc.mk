@@ -45,10 +45,12 @@ INCLUDES := -I$(BUILD)/include -I$(BUILD)/settings -I$(CONFIG_DIR) -I$(PC_TARGET
             -I$(APP_DIR) $(addprefix -I,$(MROS2_INCLUDE_DIRS))
 COMMON_FLAGS := $(CPU_FLAGS) -g -pthread -MMD -MP $(SANITIZER_FLAGS) $(INCLUDES)
 # The library and the app optimized for size, as board builds are, so that
-# their frames on the board's stacks are the board's; the stand-ins -O2.
-BOARD_OPTIMIZATION := -Os
-CFLAGS = $(COMMON_FLAGS) $(OPTIMIZATION)
-CXXFLAGS = $(COMMON_FLAGS) $(OPTIMIZATION) -std=gnu++14
+# their frames on the board's stacks are the board's, and without the host's
+# unix macros, which no board compiler defines: embeddedRTPS then takes its
+# board paths (its time from the RTOS tick); the stand-ins -O2.
+BOARD_FLAGS := -Os -U__unix__ -Uunix -U__unix
+CFLAGS = $(COMMON_FLAGS) $(FLAGS_OF_GROUP)
+CXXFLAGS = $(COMMON_FLAGS) $(FLAGS_OF_GROUP) -std=gnu++14
 
 STAND_IN_SOURCES := $(addprefix $(PC_TARGET)/src/,board_threads.cpp cmsis_os.cpp sys_arch.cpp \
                       pbuf.cpp network.cpp)
@@ -68,14 +70,14 @@ program: $(BUILD)/$(PROGRAM)
 $(BUILD)/$(PROGRAM): $(LIBRARY_OBJS) $(STAND_IN_OBJS) $(APP_OBJS)
 	$(CXX) $(CPU_FLAGS) -pthread $(SANITIZER_FLAGS) $(LINK_FLAGS) -o $@ $^
 
-# compile_rule(group, source, optimization, extra flags)
+# compile_rule(group, source, the group's flags, extra flags)
 define compile_rule
 $(call object,$(1),$(2)): $(2) | $(OBJ_DIR)
 	$$(if $$(filter %.c,$(2)),$$(CC) $$(CFLAGS),$$(CXX) $$(CXXFLAGS)) $(4) -c $(2) -o $$@
-$(call object,$(1),$(2)): OPTIMIZATION := $(3)
+$(call object,$(1),$(2)): FLAGS_OF_GROUP := $(3)
 endef
-$(foreach source,$(MROS2_SOURCES),$(eval $(call compile_rule,lib,$(source),$(BOARD_OPTIMIZATION))))
-$(foreach source,$(APP_SOURCES),$(eval $(call compile_rule,app,$(source),$(BOARD_OPTIMIZATION))))
+$(foreach source,$(MROS2_SOURCES),$(eval $(call compile_rule,lib,$(source),$(BOARD_FLAGS))))
+$(foreach source,$(APP_SOURCES),$(eval $(call compile_rule,app,$(source),$(BOARD_FLAGS))))
 $(foreach source,$(STAND_IN_SOURCES),$(eval $(call compile_rule,pc,$(source),-O2,\
   -Wall -Wextra -pedantic $(STAND_IN_FLAGS))))
 

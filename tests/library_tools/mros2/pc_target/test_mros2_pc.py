@@ -314,3 +314,18 @@ def test_the_command_runs_the_board_and_ros_commands_reach_it(posix_root, typest
         # The state file `genmros mros2-pc ros` reads goes with the board.
         assert not [name for name in os.listdir(work) if name.startswith('genmros-mros2-pc')]
     assert mros2_pc.host_network() == before
+
+
+def test_every_stand_in_symbol_is_one_the_link_needs(apps, posix_root, tmp_path):
+    """mros2 and an app that publishes and subscribes need every symbol the stand-ins
+    define: they stand in for what the link needs and nothing more."""
+    program = mros2_pc.build(os.path.join(apps, 'echoreply_string'), str(tmp_path / 'build'),
+                             MROS2_ROOT, config_of(posix_root), target='native')
+    obj_dir = os.path.join(os.path.dirname(program.path), 'obj')
+    board = [os.path.join(obj_dir, name) for name in os.listdir(obj_dir)
+             if name.startswith(('lib_', 'app_')) and name.endswith('.o')]
+    stand_ins = [os.path.join(obj_dir, name) for name in os.listdir(obj_dir)
+                 if name.startswith('pc_') and name.endswith('.o')]
+    needed = set(subprocess.run(['nm', '-u'] + board, capture_output=True, text=True,
+                                check=True).stdout.split())
+    assert mros2_pc.defined_c_symbols(stand_ins) - needed == set()

@@ -49,8 +49,6 @@ void sys_mutex_free(sys_mutex_t* mutex) {
   mutex->handle = NULL;
 }
 
-int sys_mutex_valid(sys_mutex_t* mutex) { return mutex->handle != NULL; }
-
 err_t sys_sem_new(sys_sem_t* sem, u8_t count) {
   Semaphore* made = new Semaphore;
   pthread_mutex_init(&made->lock, NULL);

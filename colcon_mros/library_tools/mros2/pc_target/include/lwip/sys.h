@@ -27,7 +27,6 @@ err_t sys_mutex_new(sys_mutex_t* mutex);
 void sys_mutex_lock(sys_mutex_t* mutex);
 void sys_mutex_unlock(sys_mutex_t* mutex);
 void sys_mutex_free(sys_mutex_t* mutex);
-int sys_mutex_valid(sys_mutex_t* mutex);
 
 err_t sys_sem_new(sys_sem_t* sem, u8_t count);
 void sys_sem_signal(sys_sem_t* sem);
