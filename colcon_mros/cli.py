@@ -479,6 +479,10 @@ def _add_mros2_pc(subparsers):
                         help='parallel make jobs (default: the number of CPUs)')
     parser.add_argument('--no-fit-check', action='store_true',
                         help="build even where the endpoints do not fit the board's settings")
+    parser.add_argument('-D', dest='app_defines', action='append', default=[],
+                        metavar='NAME[=VALUE]',
+                        help="a preprocessor definition for the app's sources (repeatable), as "
+                             "an app's Filelists.cmake options give them")
     parser.add_argument('--build-only', action='store_true',
                         help='build the program, and do not run it')
     parser.add_argument('-v', '--verbose', action='store_true',
@@ -707,6 +711,7 @@ def _mros2_pc(options):
         prefixes=prefixes, storage=options.storage, option_files=options.option_files,
         target=options.target, sanitize=options.sanitize, hardened=options.hardened,
         patches=tuple(options.patches), build_dir=options.build_dir,
+        app_defines=tuple(options.app_defines),
         board_address=options.board_address, lwipopts=options.lwipopts,
         fit_check=not options.no_fit_check, jobs=options.jobs, verbose=options.verbose))
     if options.build_only:

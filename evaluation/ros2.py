@@ -167,18 +167,24 @@ def exchange(workspace, program):
     finally:
         peer.stop(signal.SIGTERM)
         bridge.stop(signal.SIGTERM)
-    lines = [line[len('peer: '):].strip() for line in peer.lines() if line.startswith('peer: ')]
-    if not lines:
+    results = peer_rows(peer.lines(), 'board')
+    if not results:
         raise Failure('the rclpy peer reported nothing; it printed: %s; the bridge: %s'
                       % (' | '.join(peer.lines()[-5:]), ' | '.join(bridge.lines()[-5:])))
+    return results
+
+
+def peer_rows(lines, board):
+    """[(title, detail, problem)] of ros2_peer.py's lines, one per topic."""
     results = []
-    for line in lines:
+    for line in [line[len('peer: '):].strip() for line in lines if line.startswith('peer: ')]:
         match = re.match(r'(\S+): (\d+) of (\d+) samples came, (\d+) byte for byte', line)
         if not match:
             raise Failure('the rclpy peer said: %s' % line)
         topic = match.group(1)
         came, expected, exact = map(int, match.group(2, 3, 4))
-        direction = 'rclpy -> board -> rclpy' if topic.endswith('_echo') else 'board -> rclpy'
+        direction = 'rclpy -> %s -> rclpy' % board if topic.endswith('_echo') else \
+            '%s -> rclpy' % board
         problem = None if came == exact == expected else line
         results.append(('%s: %s' % (direction, topic), line, problem))
     return results
@@ -225,3 +231,50 @@ def posix_run(posix_root, work_dir, mros2_root=None):
     return None, '%s (images up to %d bytes, in fragments; %d requests for %d answers)' % (
         counts, max(len(image) for image in exchanged.answers['images']),
         exchanged.requests_sent, 2 * mros2_posix.EXCHANGES)
+
+
+# The main job's mros2 app (evaluation/mros2_app) on mros2 itself: its endpoints, and the
+# topics the peer checks of each build.
+MROS2_APP = os.path.join(HERE, 'mros2_app')
+MROS2_APP_CONFIG = os.path.join(MROS2_APP, 'rtps', 'config.h')
+APP_SUBSCRIBES = ['command:std_msgs/msg/String', 'twist:geometry_msgs/msg/Twist',
+                  'reading_in:mros2_test_msgs/msg/Reading']
+APP_ALL_PUBLISHES = ['image:sensor_msgs/msg/Image', 'chatter:std_msgs/msg/String',
+                     'reading:mros2_test_msgs/msg/Reading', 'command_echo:std_msgs/msg/String',
+                     'twist_echo:geometry_msgs/msg/Twist',
+                     'reading_in_echo:mros2_test_msgs/msg/Reading']
+
+
+def mros2_pc_run(workspace, work_dir, mros2_root, hardened):
+    """Step 7: evaluation/mros2_app on the user's mros2 (genmros mros2-pc, qemu-arm) and
+    ros2_peer.py on its ROS side; [(title, detail, problem)], one per topic, and the board's
+    output. As it is (with the discovery patch alone) the app has one publisher, image;
+    hardened, all six."""
+    from testing import mros2_pc
+    os.makedirs(work_dir, exist_ok=True)
+    installs = sorted(glob.glob(os.path.join(workspace.root, 'install', '*')))
+    publishes = APP_ALL_PUBLISHES if hardened else APP_ALL_PUBLISHES[:1]
+    options = {'hardened': True, 'app_defines': ('APP_ALL_PUBLISHERS',)} if hardened else \
+        {'patches': ('accept-fast-dds-3-discovery',)}
+    program = mros2_pc.build(MROS2_APP, os.path.join(work_dir, 'build'), mros2_root,
+                             MROS2_APP_CONFIG, prefixes=installs + [WHEELS],
+                             publish=publishes, subscribe=APP_SUBSCRIBES, **options)
+    environment = {key: value for key, value in workspace.environment().items()
+                   if key != 'ROS_AUTOMATIC_DISCOVERY_RANGE'}
+    topics = [endpoint.split(':')[0] for endpoint in publishes]
+    with mros2_pc.Session(program, work_dir) as session:
+        session.start_board()
+        if not session.wait_for_output('app ready'):
+            raise Failure('the board stopped: %s' % session.output()[-500:])
+        peer = subprocess.run(
+            session.network.ros_command([os.path.join(WHEELS, 'bin', 'python'), PEER, '--count',
+                                         str(SAMPLES), '--timeout', str(PEER_TIMEOUT),
+                                         '--best-effort', '--topics', ','.join(topics)]),
+            capture_output=True, text=True, env=environment, timeout=PEER_TIMEOUT + 60)
+        output = session.stop_board()
+    with open(os.path.join(work_dir, 'board.log'), 'w') as log:
+        log.write(output)
+    results = peer_rows(peer.stdout.splitlines(), 'the board')
+    if not results:
+        raise Failure('the rclpy peer reported nothing: %s' % peer.stderr[-500:])
+    return results, output

@@ -15,7 +15,12 @@ can differ from those in the padding between members, which its Fast-CDR
 leaves as the buffer held it; the board writes zeros there, as rosbags.)
 One line per topic; exits 0 only if every sample came and matched.
 
-  ros2_peer.py [--count N] [--timeout SECONDS]
+  ros2_peer.py [--count N] [--timeout SECONDS] [--best-effort] [--topics T,...]
+
+With --best-effort (a board on mros2 itself, whose endpoints are best-effort) its
+endpoints are best-effort too, and it sends its first sample only once each of its
+publishers and subscriptions has matched the board (and a second more, for the board's
+own side of the match); --topics checks only those topics.
 
 Runs with rclpy (the ROS 2 wheels' venv) and test_ws_ros2's Python
 packages on the path; rosbags comes from the checkout's build/test-python.
@@ -31,7 +36,7 @@ import numpy
 import rclpy
 from geometry_msgs.msg import Twist, Vector3
 from rclpy.node import Node
-from rclpy.qos import QoSHistoryPolicy, QoSProfile
+from rclpy.qos import QoSHistoryPolicy, QoSProfile, ReliabilityPolicy
 from rclpy.serialization import serialize_message
 from std_msgs.msg import String
 from sensor_msgs.msg import Image
@@ -44,6 +49,10 @@ sys.path.append(os.path.join(REPO, 'build', 'test-python'))
 from rosbags.typesys import Stores, get_types_from_msg, get_typestore  # noqa: E402
 
 QOS = QoSProfile(depth=100, history=QoSHistoryPolicy.KEEP_LAST)
+BEST_EFFORT = QoSProfile(depth=100, history=QoSHistoryPolicy.KEEP_LAST,
+                         reliability=ReliabilityPolicy.BEST_EFFORT)
+# After the last match rclpy sees, for the board's own side of it.
+SETTLE_SECONDS = 1.0
 TYPESTORE = get_typestore(Stores.ROS2_HUMBLE)
 WORKSPACE_TYPES = (('mros2_base_msgs', 'Stamp'), ('mros2_test_msgs', 'Reading'))
 
@@ -140,7 +149,10 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     parser.add_argument('--count', type=int, default=20)
     parser.add_argument('--timeout', type=float, default=60)
+    parser.add_argument('--best-effort', action='store_true')
+    parser.add_argument('--topics', help='the topics to check (default: all)')
     options = parser.parse_args()
+    qos = BEST_EFFORT if options.best_effort else QOS
     count = options.count
     register_workspace_types()
     rclpy.init()
@@ -165,16 +177,22 @@ def main():
     ]
     message_types = {'chatter': String, 'image': Image, 'reading': Reading,
                      'command_echo': String, 'twist_echo': Twist, 'reading_in_echo': Reading}
-    kept = [node.create_subscription(message_types[t.name], t.name, t.receive, QOS, raw=True)
+    if options.topics:
+        topics = [topic for topic in topics if topic.name in options.topics.split(',')]
+    kept = [node.create_subscription(message_types[t.name], t.name, t.receive, qos, raw=True)
             for t in topics]
-    publishers = [(node.create_publisher(String, 'command', QOS), sent_commands),
-                  (node.create_publisher(Twist, 'twist', QOS), sent_twists),
-                  (node.create_publisher(Reading, 'reading_in', QOS), sent_readings)]
+    publishers = [(node.create_publisher(String, 'command', qos), sent_commands),
+                  (node.create_publisher(Twist, 'twist', qos), sent_twists),
+                  (node.create_publisher(Reading, 'reading_in', qos), sent_readings)]
     threading.Thread(target=rclpy.spin, args=(node,), daemon=True).start()
     deadline = time.monotonic() + options.timeout
-    while any(publisher.get_subscription_count() == 0 for publisher, _ in publishers) \
+    while (any(publisher.get_subscription_count() == 0 for publisher, _ in publishers) or
+           options.best_effort and any(subscription.get_publisher_count() == 0
+                                       for subscription in kept)) \
             and time.monotonic() < deadline:
         time.sleep(0.1)
+    if options.best_effort:
+        time.sleep(SETTLE_SECONDS)
     for number in range(count):
         for publisher, samples in publishers:
             publisher.publish(samples[number])

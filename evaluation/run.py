@@ -236,6 +236,7 @@ def run_ros2(steps, build_root):
               lambda: (None, ros2.in_sync(
                   workspace, os.path.join(build_root, 'firmware', 'arm-linux-gnueabihf'),
                   os.path.join(build_root, 'in_sync.log'))))
+    run_mros2_pc(steps, workspace, os.path.join(build_root, 'mros2_pc'))
     posix_root = os.environ.get('MROS2_POSIX_ROOT', '')
     if not posix_root:
         print('\nthe real mros2-posix app was not run: MROS2_POSIX_ROOT is not set '
@@ -256,6 +257,34 @@ def run_ros2(steps, build_root):
     if mros2_root:
         steps.run(title % 'v0.5.4 patched, two publishers', ros2.posix_run, posix_root,
                   os.path.join(build_root, 'mros2_posix_patched'), mros2_root)
+
+
+def run_mros2_pc(steps, workspace, build_root):
+    """The main job's mros2 app on the user's mros2 (MROS2_ROOT), twice: one row per topic."""
+    mros2_root = os.environ.get('MROS2_ROOT', '')
+    runs = (('mros2 as it is + accept-fast-dds-3-discovery, one publisher', False),
+            ('mros2 --hardened, six publishers', True))
+    if not mros2_root or not os.path.isfile(os.path.join(mros2_root, 'src', 'mros2.cpp')):
+        reason = 'MROS2_ROOT is not set' if not mros2_root else \
+            'no mros2 checkout at %s (no src/mros2.cpp)' % mros2_root
+        print('\nthe main job\'s mros2 app on your mros2 (genmros mros2-pc: %s) was not run: %s. '
+              'Set MROS2_ROOT=<your checkout of mROS-base/mros2 with its embeddedRTPS> to run '
+              'it as well.' % (' and '.join(name for name, _ in runs), reason), flush=True)
+        return
+    for name, hardened in runs:
+        title = 'ROS 2 on mros2 (%s)' % name
+        print('%s: evaluation/mros2_app under qemu-arm, rclpy on its network ...' % title,
+              flush=True)
+        try:
+            rows, output = ros2.mros2_pc_run(workspace, os.path.join(
+                build_root, 'hardened' if hardened else 'as_it_is'), mros2_root, hardened)
+        except (board.Failure, AssertionError, RuntimeError, OSError) as error:
+            steps.add(title, '', _first_line(error))
+            continue
+        for row_title, detail, problem in rows:
+            steps.add('%s: %s' % (title, row_title), detail, problem)
+        peaks = [line.strip() for line in output.splitlines() if ' of ' in line and '%' in line]
+        print('  stacks: ' + '; '.join(' '.join(line.split()[:5]) for line in peaks), flush=True)
 
 
 def run_mros_v1(steps, workspace, mros_root, build_root, count):

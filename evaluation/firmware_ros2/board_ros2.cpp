@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "board.h"
+#include "board_samples.hpp"
 #include "geometry_msgs/msg/twist.hpp"
 #include "mros2_test_msgs/msg/reading.hpp"
 #include "sensor_msgs/msg/image.hpp"
@@ -85,34 +86,13 @@ template <class T> void echo(int index, const uint8_t* body, uint32_t size) {
 
 void publishSamples(int number) {
   std_msgs::msg::String text;
-  char line[32];
-  snprintf(line, sizeof line, "board sample %d", number);
-  text.data = line;
+  board_samples::fill_chatter(text, number);
   publish(kChatter, text);
-
   sensor_msgs::msg::Image image;
-  image.header.stamp.sec = number;
-  image.header.stamp.nanosec = 1000u * static_cast<uint32_t>(number);
-  image.header.frame_id = "camera";
-  image.height = 10;
-  image.width = 20;
-  image.encoding = "mono8";
-  image.step = 20;
-  image.data.resize(200);
-  for (size_t i = 0; i < image.data.size(); ++i) {
-    image.data[i] = static_cast<uint8_t>(number + static_cast<int>(i));
-  }
+  board_samples::fill_image(image, number);
   publish(kImage, image);
-
   mros2_test_msgs::msg::Reading reading;
-  reading.stamp.sec = number;
-  reading.stamp.nanosec = 7u * static_cast<uint32_t>(number);
-  reading.sensor = "imu";
-  reading.position[0] = static_cast<float>(number);
-  reading.position[1] = static_cast<float>(number) + 0.5f;
-  reading.position[2] = -static_cast<float>(number);
-  reading.samples.push_back(static_cast<int16_t>(number));
-  reading.samples.push_back(static_cast<int16_t>(-number));
+  board_samples::fill_reading(reading, number);
   publish(kReading, reading);
 }
 

@@ -84,6 +84,7 @@ class Mros2PcBuild:
     hardened: bool = False  # the whole series; else the patches named
     patches: tuple = ()
     build_dir: str = None  # default: APP_DIR/build-mros2-pc-FLAVOUR
+    app_defines: tuple = ()  # NAME or NAME=VALUE, for the app's sources
     board_address: str = None  # default: the config's IP_ADDRESS, else mros2-posix'
     lwipopts: str = None
     fit_check: bool = True
@@ -363,6 +364,7 @@ def build(request):
         'BUILD': build_dir, 'PROGRAM': name,
         'SANITIZER_FLAGS': SANITIZER_FLAGS if request.sanitize else '',
         'STAND_IN_FLAGS': '-DMROS2_PC_SETS_RTPS_ADDRESS' if config.sets_address else '',
+        'APP_FLAGS': ' '.join('-D' + define for define in request.app_defines),
     }
     words = {'root': user_root + (' (patched copy)' if root != user_root else ''),
              'name': name, 'program': program}

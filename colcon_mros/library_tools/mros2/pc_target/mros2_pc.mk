@@ -15,7 +15,7 @@
 #                  thread on its board stack; native: this PC
 #   BUILD          the output directory; PROGRAM the program's name
 #   SANITIZER_FLAGS  added to every compile and the link (--sanitize)
-#   STAND_IN_FLAGS the stand-ins' own defines
+#   STAND_IN_FLAGS the stand-ins' own defines; APP_FLAGS the app's (-D)
 #
 # Goals, one step each: library (mros2 and the stand-ins), app, program
 # (the link).
@@ -77,7 +77,7 @@ $(call object,$(1),$(2)): $(2) | $(OBJ_DIR)
 $(call object,$(1),$(2)): FLAGS_OF_GROUP := $(3)
 endef
 $(foreach source,$(MROS2_SOURCES),$(eval $(call compile_rule,lib,$(source),$(BOARD_FLAGS))))
-$(foreach source,$(APP_SOURCES),$(eval $(call compile_rule,app,$(source),$(BOARD_FLAGS))))
+$(foreach source,$(APP_SOURCES),$(eval $(call compile_rule,app,$(source),$(BOARD_FLAGS),$(APP_FLAGS))))
 $(foreach source,$(STAND_IN_SOURCES),$(eval $(call compile_rule,pc,$(source),-O2,\
   -Wall -Wextra -pedantic $(STAND_IN_FLAGS))))
 
