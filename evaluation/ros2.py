@@ -262,19 +262,30 @@ def mros2_pc_run(workspace, work_dir, mros2_root, hardened):
     environment = {key: value for key, value in workspace.environment().items()
                    if key != 'ROS_AUTOMATIC_DISCOVERY_RANGE'}
     topics = [endpoint.split(':')[0] for endpoint in publishes]
+    go = os.path.join(work_dir, 'go')
+    # The board's side of each match, as mros2 reports it (pubMatch, subMatch).
+    matches = [('publisher matched with remote subscriber', len(publishes)),
+               ('subscriber matched with remote publisher', len(APP_SUBSCRIBES))]
     with mros2_pc.Session(program, work_dir) as session:
         session.start_board()
         if not session.wait_for_output('app ready'):
             raise Failure('the board stopped: %s' % session.output()[-500:])
-        peer = subprocess.run(
+        peer = subprocess.Popen(
             session.network.ros_command([os.path.join(WHEELS, 'bin', 'python'), PEER, '--count',
                                          str(SAMPLES), '--timeout', str(PEER_TIMEOUT),
-                                         '--best-effort', '--topics', ','.join(topics)]),
-            capture_output=True, text=True, env=environment, timeout=PEER_TIMEOUT + 60)
+                                         '--best-effort', '--topics', ','.join(topics),
+                                         '--go', go]),
+            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=environment)
+        deadline = time.monotonic() + PEER_TIMEOUT
+        while any(session.output().count(line) < count for line, count in matches) and \
+                peer.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.1)
+        open(go, 'w').close()
+        stdout, stderr = peer.communicate(timeout=PEER_TIMEOUT + 60)
         output = session.stop_board()
     with open(os.path.join(work_dir, 'board.log'), 'w') as log:
         log.write(output)
-    results = peer_rows(peer.stdout.splitlines(), 'the board')
+    results = peer_rows(stdout.splitlines(), 'the board')
     if not results:
-        raise Failure('the rclpy peer reported nothing: %s' % peer.stderr[-500:])
+        raise Failure('the rclpy peer reported nothing: %s' % stderr[-500:])
     return results, output

@@ -19,8 +19,9 @@ One line per topic; exits 0 only if every sample came and matched.
 
 With --best-effort (a board on mros2 itself, whose endpoints are best-effort) its
 endpoints are best-effort too, and it sends its first sample only once each of its
-publishers and subscriptions has matched the board (and a second more, for the board's
-own side of the match); --topics checks only those topics.
+publishers and subscriptions has matched the board and the file --go names exists (the
+main job makes it when the board's log shows the board's side of every match); --topics
+checks only those topics.
 
 Runs with rclpy (the ROS 2 wheels' venv) and test_ws_ros2's Python
 packages on the path; rosbags comes from the checkout's build/test-python.
@@ -51,8 +52,7 @@ from rosbags.typesys import Stores, get_types_from_msg, get_typestore  # noqa: E
 QOS = QoSProfile(depth=100, history=QoSHistoryPolicy.KEEP_LAST)
 BEST_EFFORT = QoSProfile(depth=100, history=QoSHistoryPolicy.KEEP_LAST,
                          reliability=ReliabilityPolicy.BEST_EFFORT)
-# After the last match rclpy sees, for the board's own side of it.
-SETTLE_SECONDS = 1.0
+
 TYPESTORE = get_typestore(Stores.ROS2_HUMBLE)
 WORKSPACE_TYPES = (('mros2_base_msgs', 'Stamp'), ('mros2_test_msgs', 'Reading'))
 
@@ -151,6 +151,7 @@ def main():
     parser.add_argument('--timeout', type=float, default=60)
     parser.add_argument('--best-effort', action='store_true')
     parser.add_argument('--topics', help='the topics to check (default: all)')
+    parser.add_argument('--go', help='with --best-effort: send once this file exists')
     options = parser.parse_args()
     qos = BEST_EFFORT if options.best_effort else QOS
     count = options.count
@@ -191,8 +192,9 @@ def main():
                                        for subscription in kept)) \
             and time.monotonic() < deadline:
         time.sleep(0.1)
-    if options.best_effort:
-        time.sleep(SETTLE_SECONDS)
+    while options.go and not os.path.exists(options.go) and time.monotonic() < deadline:
+        time.sleep(0.1)
+    print('peer: matched', file=sys.stderr, flush=True)
     for number in range(count):
         for publisher, samples in publishers:
             publisher.publish(samples[number])
