@@ -1,0 +1,117 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
+"""What genmros' mros2 patch set costs on the wire: round trips and throughput between an
+mros2 board on the PC target and rclpy, mros2 as it is against --hardened, in one run.
+
+    MROS2_ROOT=... MROS2_POSIX_ROOT=... /usr/bin/python3 bench/mros2/pc_round_trip.py
+        [--runs 5] [--trips 200] [--burst 1000] [--keep DIR]
+
+mros2-posix' echoreply_string (MROS2_POSIX_ROOT's workspace/, its include/rtps/config.h) is
+built with genmros mros2-pc for this PC, without sanitizers, twice: with MROS2_ROOT as it
+is plus accept-fast-dds-3-discovery (without which it discovers no Fast DDS 3 node), and
+--hardened. Each run starts the board on its own network and round_trip_peer.py (rclpy,
+the ROS 2 wheels) on its ROS side: --trips round trips one at a time, then --burst strings
+at once (best-effort: what is lost is counted). For orientation, rclpy_echo.py stands in
+for the board in the same place, rclpy on both sides. The builds take turns, run after run;
+each cell is the median of the runs' values (a run's round trip: its median).
+"""
+
+import argparse
+import json
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, REPO)  # colcon_mros and the shared testing package
+from testing import mros2_pc  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+PEER = os.path.join(HERE, 'round_trip_peer.py')
+RCLPY_ECHO = os.path.join(HERE, 'rclpy_echo.py')
+BUILDS = (('as it is + accept-fast-dds-3-discovery', {'patches': ('accept-fast-dds-3-discovery',)}),
+          ('--hardened', {'hardened': True}))
+RCLPY = 'rclpy echo (orientation)'
+
+
+def run_peer(network, work_dir, trips, burst):
+    result = subprocess.run(network.ros_command([os.path.join(mros2_pc.WHEELS_VENV, 'bin',
+                                                              'python'), PEER, str(trips),
+                                                 str(burst)]),
+                            capture_output=True, text=True, timeout=600,
+                            env=mros2_pc.peer_environment(work_dir))
+    if result.returncode != 0:
+        raise SystemExit('the peer failed: %s' % result.stderr[-2000:])
+    return json.loads(result.stdout)
+
+
+def run_board(program, work_dir, trips, burst):
+    with mros2_pc.Session(program, work_dir) as session:
+        session.start_board()
+        session.wait_for_output('ready to pub/sub message')
+        report = run_peer(session.network, work_dir, trips, burst)
+        session.stop_board()
+    return report
+
+
+def run_rclpy(work_dir, trips, burst):
+    from colcon_mros.library_tools.mros2.pc_target.network import BoardNetwork
+    with BoardNetwork('192.168.11.3', 0) as network:
+        echo = subprocess.Popen(network.board_command(
+            [os.path.join(mros2_pc.WHEELS_VENV, 'bin', 'python'), RCLPY_ECHO]),
+            env=mros2_pc.peer_environment(work_dir))
+        try:
+            return run_peer(network, work_dir, trips, burst)
+        finally:
+            echo.terminate()
+            echo.wait(timeout=60)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    parser.add_argument('--runs', type=int, default=5)
+    parser.add_argument('--trips', type=int, default=200)
+    parser.add_argument('--burst', type=int, default=1000)
+    parser.add_argument('--keep', help='build and log here (default: a temporary directory)')
+    options = parser.parse_args()
+    mros2_root = os.environ.get('MROS2_ROOT')
+    posix_root = os.environ.get('MROS2_POSIX_ROOT')
+    if not mros2_root or not posix_root:
+        raise SystemExit('set MROS2_ROOT (mros2 v0.5.4) and MROS2_POSIX_ROOT (its example apps)')
+    work = options.keep or tempfile.mkdtemp(prefix='mros2_round_trip_')
+    app = os.path.join(work, 'echoreply_string')
+    if not os.path.isdir(app):
+        shutil.copytree(os.path.join(posix_root, 'workspace', 'echoreply_string'), app)
+    config = os.path.join(posix_root, 'include', 'rtps', 'config.h')
+    programs = {name: mros2_pc.build(app, os.path.join(work, 'build-%d' % index), mros2_root,
+                                     config, target='native', **build)
+                for index, (name, build) in enumerate(BUILDS)}
+    results = {name: [] for name in list(programs) + [RCLPY]}
+    for run in range(options.runs):
+        for name, program in programs.items():
+            results[name].append(run_board(program, work, options.trips, options.burst))
+        results[RCLPY].append(run_rclpy(work, options.trips, options.burst))
+        print('run %d of %d done' % (run + 1, options.runs), file=sys.stderr, flush=True)
+    rows = {}
+    for name, reports in results.items():
+        rows[name] = (statistics.median(statistics.median(report['round_trips_us'])
+                                        for report in reports),
+                      statistics.median(report['echoed'] / report['burst_seconds']
+                                        for report in reports if report['burst_seconds']),
+                      statistics.median(report['echoed'] for report in reports))
+    base_trip, base_rate, _ = rows[BUILDS[0][0]]
+    print('| echo | round trip, median (µs) | ratio | echoes/s in a burst of %d | ratio | '
+          'echoed of %d |' % (options.burst, options.burst))
+    print('|---|---:|---:|---:|---:|---:|')
+    for name, (trip, rate, echoed) in rows.items():
+        print('| %s | %.0f | %.3f | %.0f | %.3f | %d |'
+              % (name, trip, trip / base_trip, rate, rate / base_rate, echoed))
+    print('\n%d runs each, builds taking turns; --trips %d; native, no sanitizer; %s'
+          % (options.runs, options.trips, work))
+
+
+if __name__ == '__main__':
+    main()
