@@ -80,7 +80,9 @@ def main():
     mros2_root = os.environ.get('MROS2_ROOT')
     posix_root = os.environ.get('MROS2_POSIX_ROOT')
     if not mros2_root or not posix_root:
-        raise SystemExit('set MROS2_ROOT (mros2 v0.5.4) and MROS2_POSIX_ROOT (its example apps)')
+        print('pc_round_trip.py: needs MROS2_ROOT (mros2 v0.5.4) and MROS2_POSIX_ROOT (its '
+              'example apps): docs/testing.md', file=sys.stderr)
+        return 2
     work = options.keep or tempfile.mkdtemp(prefix='mros2_round_trip_')
     app = os.path.join(work, 'echoreply_string')
     if not os.path.isdir(app):
@@ -97,21 +99,24 @@ def main():
         print('run %d of %d done' % (run + 1, options.runs), file=sys.stderr, flush=True)
     rows = {}
     for name, reports in results.items():
-        rows[name] = (statistics.median(statistics.median(report['round_trips_us'])
-                                        for report in reports),
-                      statistics.median(report['echoed'] / report['burst_seconds']
-                                        for report in reports if report['burst_seconds']),
-                      statistics.median(report['echoed'] for report in reports))
-    base_trip, base_rate, _ = rows[BUILDS[0][0]]
-    print('| echo | round trip, median (µs) | ratio | echoes/s in a burst of %d | ratio | '
-          'echoed of %d |' % (options.burst, options.burst))
-    print('|---|---:|---:|---:|---:|---:|')
-    for name, (trip, rate, echoed) in rows.items():
-        print('| %s | %.0f | %.3f | %.0f | %.3f | %d |'
-              % (name, trip, trip / base_trip, rate, rate / base_rate, echoed))
+        trips = [statistics.median(report['round_trips_us']) for report in reports]
+        rates = [report['echoed'] / report['burst_seconds'] for report in reports
+                 if report['burst_seconds']]
+        rows[name] = (trips, rates, [report['echoed'] for report in reports])
+    base_trip = statistics.median(rows[BUILDS[0][0]][0])
+    base_rate = statistics.median(rows[BUILDS[0][0]][1])
+    print('| echo | round trip, median (µs) | runs\' range | ratio | echoes/s in a burst of %d '
+          '| runs\' range | ratio | echoed of %d (range) |' % (options.burst, options.burst))
+    print('|---|---:|---:|---:|---:|---:|---:|---:|')
+    for name, (trips, rates, echoed) in rows.items():
+        trip, rate = statistics.median(trips), statistics.median(rates)
+        print('| %s | %.0f | %.0f-%.0f | %.3f | %.0f | %.0f-%.0f | %.3f | %d (%d-%d) |'
+              % (name, trip, min(trips), max(trips), trip / base_trip, rate, min(rates),
+                 max(rates), rate / base_rate, statistics.median(echoed), min(echoed),
+                 max(echoed)))
     print('\n%d runs each, builds taking turns; --trips %d; native, no sanitizer; %s'
           % (options.runs, options.trips, work))
 
 
 if __name__ == '__main__':
-    main()
+    sys.exit(main())
