@@ -329,3 +329,24 @@ def test_every_stand_in_symbol_is_one_the_link_needs(apps, posix_root, tmp_path)
     needed = set(subprocess.run(['nm', '-u'] + board, capture_output=True, text=True,
                                 check=True).stdout.split())
     assert mros2_pc.defined_c_symbols(stand_ins) - needed == set()
+
+
+def test_app_defines_reach_the_apps_sources_alone(apps, posix_root, tmp_path):
+    """-D as an app's Filelists.cmake options give it: MROS2_LOG_MIN_SEVERITY 5 (none) takes
+    every log line out of the app's code, and mros2's own keeps its lines."""
+    build_dir = str(tmp_path / 'build')
+    result = subprocess.run(
+        [sys.executable, '-m', 'colcon_mros', 'mros2-pc', os.path.join(apps, 'pub_twist'),
+         '--rtps-config', config_of(posix_root), '--mros2-root', MROS2_ROOT, '--prefix',
+         mros2_pc.WHEELS_VENV, '--target', 'native', '-o', build_dir, '--build-only',
+         '-D', 'MROS2_LOG_MIN_SEVERITY=5', '-j2'],
+        capture_output=True, text=True, env=dict(os.environ, PYTHONPATH=REPO))
+    assert result.returncode == 0, result.stderr[-3000:]
+    assert result.stdout.splitlines()[-1] == 'genmros: built %s' % os.path.join(build_dir,
+                                                                                'pub_twist')
+
+    def undefined(name):
+        return subprocess.run(['nm', '-u', os.path.join(build_dir, 'obj', name)],
+                              capture_output=True, text=True, check=True).stdout.split()
+    assert 'mros2_pc_log' not in undefined('app_app.o')
+    assert 'mros2_pc_log' in undefined('lib_mros2.o')
