@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The stand-in's definitions: CMSIS-RTOS2 on std::thread, lwIP's init, and
+// The stand-in's definitions: the CMSIS-RTOS2 calls of mros2's init on
+// std::thread, lwIP's init (declared as the PC target declares them), and
 // where the rtps stand-in keeps what was sent and the readers made.
 #include <chrono>
 #include <thread>

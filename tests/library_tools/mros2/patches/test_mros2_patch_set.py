@@ -12,6 +12,7 @@ import subprocess
 import pytest
 
 from colcon_mros.library_tools.mros2.patches import LIBRARY_DIRS
+from colcon_mros.library_tools.mros2.pc_target.build import TARGET_DIR
 from conftest import REPO, run_genmros
 from user_checkouts import MROS2_ROOT
 from testing.ros_paths import prefix_arguments, ros2_prefixes
@@ -19,6 +20,8 @@ from testing.ros_paths import prefix_arguments, ros2_prefixes
 pytestmark = [pytest.mark.needs_mros2, pytest.mark.slow]
 
 STAND_IN = os.path.join(REPO, 'testing', 'mros2_library')
+# CMSIS-RTOS2's and lwIP's declarations, as the PC target has them.
+PC_TARGET_HEADERS = os.path.join(TARGET_DIR, 'include')
 TIF = 'test_interface_files/msg/'
 ENDPOINTS = ['--publish', 'alpha:%sBasicTypes' % TIF, '--publish', 'beta:%sStrings' % TIF,
              '--subscribe', 'gamma:%sBasicTypes' % TIF, '--subscribe', 'delta:%sStrings' % TIF]
@@ -76,7 +79,8 @@ def _run_check(checkout, export, out, patched):
     program = str(out / 'library_check')
     command = ['g++', '-std=c++14', '-g', '-fsanitize=address,undefined',
                '-fno-sanitize-recover=all', '-DMROS2_LOG_MIN_SEVERITY=5',
-               '-I', STAND_IN, '-I', str(checkout / 'include'), '-I', export,
+               '-I', STAND_IN, '-I', PC_TARGET_HEADERS, '-I', str(checkout / 'include'),
+               '-I', export,
                str(checkout / 'src' / 'mros2.cpp'), os.path.join(STAND_IN, 'stand_in.cpp'),
                os.path.join(STAND_IN, 'library_check.cpp'), '-pthread', '-o', program]
     if patched:

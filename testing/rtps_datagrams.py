@@ -1,0 +1,235 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""RTPS datagrams for the mros2 network fuzzer (bench/fuzz/rtps_fuzz.py): recorded from a
+real exchange on the ROS side of a genmros mros2-pc board, read as RTPS (header and
+submessages), and mutated the ways RTPS can be wrong.
+
+``python3 -m testing.rtps_datagrams capture IFACE OUT`` (run on the ROS side, where the
+user namespace's root may open a packet socket) writes every UDP datagram of the RTPS
+ports (7400-7700) that crosses IFACE to OUT as JSON lines {"to_board": bool, "port":
+destination port, "data": hex}, until SIGTERM.
+"""
+
+import json
+import random
+import signal
+import socket
+import struct
+import sys
+
+RTPS_PORTS = range(7400, 7700)
+HEADER_SIZE = 20
+# Submessage ids (RTPS 2.x 9.4.5.1.1).
+PAD, ACKNACK, HEARTBEAT, GAP, INFO_TS, INFO_SRC, INFO_DST, NACK_FRAG, HEARTBEAT_FRAG, DATA, \
+    DATA_FRAG = 0x01, 0x06, 0x07, 0x08, 0x09, 0x0c, 0x0e, 0x12, 0x13, 0x15, 0x16
+KIND_NAMES = {ACKNACK: 'ACKNACK', HEARTBEAT: 'HEARTBEAT', GAP: 'GAP', INFO_TS: 'INFO_TS',
+              INFO_DST: 'INFO_DST', DATA: 'DATA', DATA_FRAG: 'DATA_FRAG',
+              HEARTBEAT_FRAG: 'HEARTBEAT_FRAG', NACK_FRAG: 'NACK_FRAG'}
+# Parameter ids of SPDP and SEDP samples whose values the board copies (9.6.2.2.2).
+STRING_PIDS = (0x0005, 0x0007, 0x0062)  # topic name, type name, entity name
+LOCATOR_PIDS = (0x002f, 0x0030, 0x0031, 0x0032, 0x0033, 0x0048)
+
+
+def capture(interface, out_path):
+    """Records RTPS datagrams crossing interface (see the module) until SIGTERM."""
+    stopped = []
+    signal.signal(signal.SIGTERM, lambda *_: stopped.append(True))
+    sniffer = socket.socket(socket.AF_PACKET, socket.SOCK_DGRAM, socket.htons(0x0800))
+    sniffer.bind((interface, 0))
+    sniffer.settimeout(0.2)
+    with open(out_path, 'w') as out:
+        print('capturing', file=sys.stderr, flush=True)
+        while not stopped:
+            try:
+                packet, address = sniffer.recvfrom(65535)
+            except socket.timeout:
+                continue
+            if len(packet) < 28 or packet[9] != 17:  # UDP over IPv4
+                continue
+            header_length = (packet[0] & 0x0f) * 4
+            source_port, port, length = struct.unpack_from('!HHH', packet, header_length)
+            payload = packet[header_length + 8:header_length + length]
+            if port in RTPS_PORTS or source_port in RTPS_PORTS:
+                # An outgoing packet (PACKET_OUTGOING, 4) came from the ROS side.
+                out.write(json.dumps({'to_board': address[2] == socket.PACKET_OUTGOING,
+                                      'port': port, 'data': payload.hex()}) + '\n')
+                out.flush()
+
+
+def read_capture(path):
+    with open(path) as stream:
+        return [json.loads(line) for line in stream if line.strip()]
+
+
+class Submessage:
+    """One submessage: id, flags, and its body (octetsToNextHeader bytes)."""
+
+    def __init__(self, kind, flags, body):
+        self.kind, self.flags, self.body = kind, flags, bytearray(body)
+
+    def little_endian(self):
+        return bool(self.flags & 1)
+
+    def encode(self, length=None):
+        endian = '<' if self.little_endian() else '>'
+        return bytes([self.kind, self.flags]) + struct.pack(
+            endian + 'H', len(self.body) if length is None else length) + bytes(self.body)
+
+
+def parse(datagram):
+    """(header, [Submessage]) of an RTPS datagram, or None."""
+    if len(datagram) < HEADER_SIZE or datagram[:4] != b'RTPS':
+        return None
+    header, position, submessages = bytearray(datagram[:HEADER_SIZE]), HEADER_SIZE, []
+    while position + 4 <= len(datagram):
+        kind, flags = datagram[position], datagram[position + 1]
+        length, = struct.unpack_from('<H' if flags & 1 else '>H', datagram, position + 2)
+        body = datagram[position + 4:position + 4 + length]
+        submessages.append(Submessage(kind, flags, body))
+        position += 4 + length
+    return header, submessages
+
+
+def kinds(datagram):
+    parsed = parse(datagram)
+    return [KIND_NAMES.get(sub.kind, hex(sub.kind)) for sub in parsed[1]] if parsed else []
+
+
+def _payload_offset(sub):
+    """Where a DATA or DATA_FRAG submessage's serialized payload starts in its body."""
+    if len(sub.body) < 4:
+        return None
+    to_inline_qos, = struct.unpack_from('<H' if sub.little_endian() else '>H', sub.body, 2)
+    return 4 + to_inline_qos if 4 + to_inline_qos <= len(sub.body) else None
+
+
+def _parameters(body, start):
+    """(offset of each parameter's header, pid, length) of a PL_CDR_LE parameter list."""
+    found, position = [], start
+    while position + 4 <= len(body):
+        pid, length = struct.unpack_from('<HH', body, position)
+        found.append((position, pid, length))
+        if pid == 1:  # PID_SENTINEL
+            break
+        position += 4 + length
+    return found
+
+
+class Mutator:
+    """Mutations of recorded datagrams, each named for the part of RTPS it breaks."""
+
+    def __init__(self, seed):
+        self.random = random.Random(seed)
+
+    def _number(self):
+        return self.random.choice([0, 1, 2, 3, 4, 0x7f, 0x80, 0xff, 0x100, 0x7fff, 0xffff,
+                                   0x7fffffff, 0x80000000, 0xffffffff,
+                                   self.random.getrandbits(32)])
+
+    def submessage_length(self, header, subs):
+        sub = self.random.choice(subs)
+        length = self.random.choice([0, 1, 3, len(sub.body) - 1, len(sub.body) + 1,
+                                     len(sub.body) + 4, 0xffff, self.random.getrandbits(16)])
+        return bytes(header) + b''.join(s.encode(max(0, length) if s is sub else None)
+                                        for s in subs)
+
+    def submessage_count(self, header, subs):
+        subs = list(subs)
+        choice = self.random.random()
+        if choice < 0.4:
+            subs = subs + [self.random.choice(subs)] * self.random.randint(1, 40)
+        elif choice < 0.7 and len(subs) > 1:
+            del subs[self.random.randrange(len(subs))]
+        else:
+            self.random.shuffle(subs)
+        return bytes(header) + b''.join(s.encode() for s in subs)
+
+    def submessage_kind(self, header, subs):
+        sub = self.random.choice(subs)
+        sub.kind = self.random.choice([DATA, DATA_FRAG, HEARTBEAT, ACKNACK, GAP, INFO_DST,
+                                       INFO_TS, HEARTBEAT_FRAG, NACK_FRAG, PAD])
+        return bytes(header) + b''.join(s.encode() for s in subs)
+
+    def _data(self, subs):
+        data = [s for s in subs if s.kind in (DATA, DATA_FRAG)]
+        return self.random.choice(data) if data else None
+
+    def parameter_list(self, header, subs):
+        sub = self._data(subs)
+        start = _payload_offset(sub) if sub else None
+        if start is None or len(sub.body) < start + 4 or sub.body[start + 1] not in (2, 3):
+            return self.bytes_flipped(header, subs)
+        parameters = _parameters(sub.body, start + 4)
+        if not parameters:
+            return self.bytes_flipped(header, subs)
+        position, pid, length = self.random.choice(parameters)
+        choice = self.random.random()
+        if choice < 0.3:  # a lying length
+            struct.pack_into('<H', sub.body, position + 2, self._number() & 0xffff)
+        elif choice < 0.6:  # a name longer than any board's field, or one with no end
+            text = b'n' * self.random.choice([39, 40, 41, 64, 200, 1000])
+            value = struct.pack('<I', self.random.choice([len(text) + 1, len(text), 0,
+                                                          0xffffffff])) + text + b'\0'
+            value += bytes(-len(value) % 4)
+            new = struct.pack('<HH', self.random.choice(STRING_PIDS), len(value)) + value
+            sub.body[position:position] = new
+        elif choice < 0.85:  # a locator: kind, port, address
+            locator = struct.pack('<iI', self.random.choice([1, 2, -1, 0, 16]),
+                                  self._number()) + bytes(self.random.getrandbits(8)
+                                                          for _ in range(16))
+            new = struct.pack('<HH', self.random.choice(LOCATOR_PIDS), 24) + locator
+            sub.body[position:position] = new
+        else:  # a parameter removed (the sentinel among them)
+            del sub.body[position:position + 4 + length]
+        return bytes(header) + b''.join(s.encode() for s in subs)
+
+    def sequence_numbers(self, header, subs):
+        sub = self.random.choice(subs)
+        endian = '<' if sub.little_endian() else '>'
+        # writerSN of DATA/DATA_FRAG at 12; HEARTBEAT's first and last, ACKNACK's and GAP's
+        # set bases at 8 and after.
+        offsets = {DATA: [12, 16], DATA_FRAG: [12, 16, 20, 24, 26, 28], HEARTBEAT: [8, 12, 16, 20],
+                   ACKNACK: [8, 12, 16, 20], GAP: [8, 12, 16, 20, 24]}.get(sub.kind, [0])
+        offset = self.random.choice(offsets)
+        if offset + 4 <= len(sub.body):
+            struct.pack_into(endian + 'I', sub.body, offset, self._number())
+        return bytes(header) + b''.join(s.encode() for s in subs)
+
+    def encapsulation(self, header, subs):
+        sub = self._data(subs)
+        start = _payload_offset(sub) if sub else None
+        if start is None or start + 4 > len(sub.body):
+            return self.bytes_flipped(header, subs)
+        sub.body[start:start + 4] = bytes(self.random.choice(
+            [[0, 0, 0, 0], [0, 1, 0, 0], [0, 2, 0, 0], [0, 3, 0, 0], [0xff, 0xff, 0, 0],
+             [0, 1, 0xff, 0xff]]))
+        if self.random.random() < 0.5:
+            del sub.body[start + 4 + self.random.randrange(max(1, len(sub.body) - start - 4)):]
+        return bytes(header) + b''.join(s.encode() for s in subs)
+
+    def truncated(self, header, subs):
+        whole = bytes(header) + b''.join(s.encode() for s in subs)
+        return whole[:self.random.randrange(len(whole))]
+
+    def bytes_flipped(self, header, subs):
+        whole = bytearray(bytes(header) + b''.join(s.encode() for s in subs))
+        for _ in range(self.random.randint(1, 8)):
+            position = self.random.randrange(len(whole))
+            whole[position] = self.random.getrandbits(8)
+        return bytes(whole)
+
+    MUTATIONS = ('submessage_length', 'submessage_count', 'submessage_kind', 'parameter_list',
+                 'sequence_numbers', 'encapsulation', 'truncated', 'bytes_flipped')
+
+    def mutate(self, datagram, unknown_source):
+        """(mutation's name, the mutated datagram); unknown_source: from a participant the
+        board has not discovered (a fresh GUID prefix)."""
+        header, subs = parse(datagram)
+        if unknown_source:
+            header[8:20] = bytes(self.random.getrandbits(8) for _ in range(12))
+        name = self.random.choice(self.MUTATIONS)
+        return name, getattr(self, name)(header, [Submessage(s.kind, s.flags, s.body)
+                                                  for s in subs])
+
+
+if __name__ == '__main__' and sys.argv[1:2] == ['capture']:
+    capture(sys.argv[2], sys.argv[3])
