@@ -194,7 +194,6 @@ def main():
         time.sleep(0.1)
     while options.go and not os.path.exists(options.go) and time.monotonic() < deadline:
         time.sleep(0.1)
-    print('peer: matched', file=sys.stderr, flush=True)
     for number in range(count):
         for publisher, samples in publishers:
             publisher.publish(samples[number])

@@ -232,11 +232,12 @@ def run_ros2(steps, build_root):
             steps.add('ROS 2: ' + title, detail, problem)
     except (board.Failure, OSError) as error:
         steps.add('ROS 2: the board under qemu-arm with rclpy nodes', '', _first_line(error))
+    # Before the field is added: the peer's samples are of Reading as it is.
+    run_mros2_pc(steps, workspace, os.path.join(build_root, 'mros2_pc'))
     steps.run('ROS 2: in sync by construction: a field added, colcon build, firmware rebuilt',
               lambda: (None, ros2.in_sync(
                   workspace, os.path.join(build_root, 'firmware', 'arm-linux-gnueabihf'),
                   os.path.join(build_root, 'in_sync.log'))))
-    run_mros2_pc(steps, workspace, os.path.join(build_root, 'mros2_pc'))
     posix_root = os.environ.get('MROS2_POSIX_ROOT', '')
     if not posix_root:
         print('\nthe real mros2-posix app was not run: MROS2_POSIX_ROOT is not set '

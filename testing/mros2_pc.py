@@ -118,6 +118,9 @@ class Session:
               "'%s' in the board's output" % text)
         return text in self.output()
 
+    def stopped(self):
+        return self._board.poll() is not None
+
     def wait_for_exit(self):
         self.status = self._board.wait(timeout=EVENT_CAP)
         return self.status

@@ -6,7 +6,9 @@ submessages), and mutated the ways RTPS can be wrong.
 ``python3 -m testing.rtps_datagrams capture IFACE OUT`` (run on the ROS side, where the
 user namespace's root may open a packet socket) writes every UDP datagram of the RTPS
 ports (7400-7700) that crosses IFACE to OUT as JSON lines {"to_board": bool, "port":
-destination port, "data": hex}, until SIGTERM.
+destination port, "data": hex}, until SIGTERM. ``python3 -m testing.rtps_datagrams send
+ADDRESS`` sends each line "PORT HEX" of its stdin to ADDRESS:PORT, one UDP datagram each,
+and says "sent N" at the end.
 """
 
 import json
@@ -231,5 +233,22 @@ class Mutator:
                                                   for s in subs])
 
 
-if __name__ == '__main__' and sys.argv[1:2] == ['capture']:
-    capture(sys.argv[2], sys.argv[3])
+def send(address):
+    """Sends stdin's "PORT HEX" lines to address (see the module)."""
+    sender = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    count = 0
+    for line in sys.stdin:
+        port, data = line.split()
+        try:
+            sender.sendto(bytes.fromhex(data), (address, int(port)))
+        except OSError:  # a datagram over 64 KB after mutation: not sendable
+            continue
+        count += 1
+    print('sent %d' % count, flush=True)
+
+
+if __name__ == '__main__':
+    if sys.argv[1] == 'capture':
+        capture(sys.argv[2], sys.argv[3])
+    else:
+        send(sys.argv[2])

@@ -32,8 +32,8 @@ from testing import mros2_pc  # noqa: E402
 HERE = os.path.dirname(os.path.abspath(__file__))
 PEER = os.path.join(HERE, 'round_trip_peer.py')
 RCLPY_ECHO = os.path.join(HERE, 'rclpy_echo.py')
-BUILDS = (('as it is + accept-fast-dds-3-discovery', {'patches': ('accept-fast-dds-3-discovery',)}),
-          ('--hardened', {'hardened': True}))
+DISCOVERY = 'accept-fast-dds-3-discovery'
+BUILDS = (('as it is + ' + DISCOVERY, {'patches': (DISCOVERY,)}), ('--hardened', {'hardened': True}))
 RCLPY = 'rclpy echo (orientation)'
 
 

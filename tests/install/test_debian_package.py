@@ -13,7 +13,7 @@ from conftest import REPO
 
 pytestmark = pytest.mark.slow
 
-# The PC target's and mros2's packages: Recommends, not Depends.
+# The PC targets' packages (iproute2: mros2-pc's network) and mros2's: Recommends, not Depends.
 RECOMMENDED = {'g++-arm-linux-gnueabihf', 'qemu-user', 'python3-rosidl', 'iproute2'}
 # What generating headers needs.
 NEEDED = {'python3-genmsg', 'python3-empy', 'python3-rospkg', 'python3-catkin-pkg',

@@ -85,6 +85,7 @@ class Mros2PcBuild:
     patches: tuple = ()
     build_dir: str = None  # default: APP_DIR/build-mros2-pc-FLAVOUR
     app_defines: tuple = ()  # NAME or NAME=VALUE, for the app's sources
+    extra_flags: tuple = ()  # for every compile and the link (--coverage, say)
     board_address: str = None  # default: the config's IP_ADDRESS, else mros2-posix'
     lwipopts: str = None
     fit_check: bool = True
@@ -362,7 +363,8 @@ def build(request):
         'APP_SOURCES': ' '.join(sources), 'APP_DIR': app_dir,
         'CONFIG_DIR': config.directory(build_dir), 'TARGET': request.target,
         'BUILD': build_dir, 'PROGRAM': name,
-        'SANITIZER_FLAGS': SANITIZER_FLAGS if request.sanitize else '',
+        'SANITIZER_FLAGS': ' '.join(([SANITIZER_FLAGS] if request.sanitize else []) +
+                                    list(request.extra_flags)),
         'STAND_IN_FLAGS': '-DMROS2_PC_SETS_RTPS_ADDRESS' if config.sets_address else '',
         'APP_FLAGS': ' '.join('-D' + define for define in request.app_defines),
     }

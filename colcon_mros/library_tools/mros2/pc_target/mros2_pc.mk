@@ -14,7 +14,8 @@
 #   TARGET         arm: 32-bit ARM Linux (static, run with qemu-arm), each
 #                  thread on its board stack; native: this PC
 #   BUILD          the output directory; PROGRAM the program's name
-#   SANITIZER_FLAGS  added to every compile and the link (--sanitize)
+#   SANITIZER_FLAGS  added to every compile and the link (--sanitize, and
+#                 the flags a bench adds, such as --coverage)
 #   STAND_IN_FLAGS the stand-ins' own defines; APP_FLAGS the app's (-D)
 #
 # Goals, one step each: library (mros2 and the stand-ins), app, program

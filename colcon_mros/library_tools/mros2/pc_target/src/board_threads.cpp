@@ -201,8 +201,19 @@ void install_fault_handler() {}
 
 #endif
 
+}  // namespace
+}  // namespace mros2_pc
+
+// gcov's, where the program is built with --coverage: a stop writes the counts, which
+// _exit would otherwise lose.
+extern "C" void __gcov_dump(void) __attribute__((weak));
+
+namespace mros2_pc {
+namespace {
+
 void on_stop(int) {
   report_stacks();
+  if (__gcov_dump != NULL) __gcov_dump();
   _exit(0);
 }
 

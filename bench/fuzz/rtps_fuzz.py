@@ -1,0 +1,231 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
+"""Fuzz an mros2 board's RTPS side on the PC target (genmros mros2-pc), on its own network.
+
+    MROS2_ROOT=... MROS2_POSIX_ROOT=... /usr/bin/python3 bench/fuzz/rtps_fuzz.py
+        [--seconds 600] [--seed S] [--as-it-is] [--coverage] [--build-dir DIR]
+        [--findings DIR] [--replay FILE]
+
+builds mros2-posix' echoreply_string with MROS2_ROOT --hardened (--as-it-is: with
+accept-fast-dds-3-discovery alone) for this PC with --sanitize (AddressSanitizer and
+UndefinedBehaviorSanitizer), starts it, and records on the ROS side of its network the
+datagrams of a real exchange with an rclpy node (testing/mros2_pc_peer.py): SPDP, SEDP,
+DATA, HEARTBEAT, ACKNACK, GAP, INFO_TS, INFO_DST, and DATA_FRAG where a sample is fragmented.
+Then it sends the board those datagrams mutated (testing/rtps_datagrams.Mutator: submessage
+lengths, counts and kinds, parameter lists, names longer than the config's fields, locators,
+sequence and fragment numbers, encapsulation headers, truncation, flipped bytes), from the
+rclpy participant the board has discovered and, one datagram in four, from one it has not.
+Every 500 datagrams it checks that the board runs and its output holds no sanitizer report;
+a finding saves the last 500 datagrams sent (--findings DIR, JSON lines "port hex") and
+stops. At the end the board must still echo an rclpy node's strings byte for byte.
+--coverage builds with gcov and prints, for the parsers the fuzzer must reach, how often
+each ran. --replay FILE sends a finding's datagrams to a fresh board and says whether it
+still reports. Exit 0: no finding and the board still echoing.
+"""
+
+import argparse
+import collections
+import json
+import os
+import random
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, REPO)  # colcon_mros and the shared testing package
+sys.path.append(os.path.join(REPO, 'build', 'test-python'))  # rosbags
+from testing import mros2_pc, rtps_datagrams  # noqa: E402
+from testing.mros2_posix import wire_bytes  # noqa: E402
+
+BATCH = 500
+SANITIZER_REPORTS = ('AddressSanitizer', 'LeakSanitizer', 'runtime error:', 'Segmentation fault')
+# The functions the fuzzer must reach, as gcov names them (demangled, prefix matched).
+PARSERS = (('MessageReceiver: DATA', 'rtps::MessageReceiver::processDataSubmessage'),
+           ('MessageReceiver: HEARTBEAT', 'rtps::MessageReceiver::processHeartbeatSubmessage'),
+           ('MessageReceiver: ACKNACK', 'rtps::MessageReceiver::processAckNackSubmessage'),
+           ('ParticipantProxyData::readFromUcdrBuffer',
+            'rtps::ParticipantProxyData::readFromUcdrBuffer'),
+           ('TopicData::readFromUcdrBuffer', 'rtps::TopicData::readFromUcdrBuffer'),
+           ('SEDP: publications', 'rtps::SEDPAgent::handlePublisherReaderMessage'),
+           ('SEDP: subscriptions', 'rtps::SEDPAgent::handleSubscriptionReaderMessage'),
+           ("mros2's callback", 'void mros2::Subscriber::callback_handler'))
+
+
+def echo_job(texts, want):
+    from rosbags.typesys import Stores, get_typestore
+    typestore = get_typestore(Stores.ROS2_HUMBLE)
+    string = typestore.types['std_msgs/msg/String']
+    samples = [wire_bytes(typestore, string(data=text), 'std_msgs/msg/String') for text in texts]
+    return samples, {'publish': [{'topic': 'to_stm', 'type': 'std_msgs/msg/String',
+                                  'samples': [sample.hex() for sample in samples]}],
+                     'subscribe': [{'topic': 'to_linux', 'type': 'std_msgs/msg/String'}],
+                     'want': {'to_linux': want}, 'period': 0.1, 'timeout': mros2_pc.EVENT_CAP}
+
+
+def echoes_exact(session, texts, want):
+    samples, job = echo_job(texts, want)
+    received = session.peer(job).result()['received']['to_linux']
+    return len(received) >= want and set(received) <= set(samples)
+
+
+def record(session, work_dir):
+    """The datagrams of an exchange with rclpy, as JSON objects (testing/rtps_datagrams)."""
+    path = os.path.join(work_dir, 'recorded.jsonl')
+    capture = subprocess.Popen(session.network.ros_command(
+        [sys.executable, '-m', 'testing.rtps_datagrams', 'capture', 'mros2-ros', path]),
+        stderr=subprocess.PIPE, text=True, env=dict(os.environ, PYTHONPATH=REPO))
+    assert capture.stderr.readline().strip() == 'capturing'
+    # Strings up to 3000 bytes: over mros2's 100-byte buffer the board's echo is fragmented.
+    texts = ['record %d %s' % (index, 'x' * (300 * index)) for index in range(11)]
+    exact = echoes_exact(session, texts, 11)
+    capture.terminate()
+    capture.wait()
+    if not exact:
+        raise SystemExit('the board did not echo before fuzzing: see %s' % session.log_path)
+    return rtps_datagrams.read_capture(path)
+
+
+def reports(output):
+    return [word for word in SANITIZER_REPORTS if word in output]
+
+
+class Sender:
+    """testing/rtps_datagrams' sender on the ROS side."""
+
+    def __init__(self, session):
+        self.process = subprocess.Popen(session.network.ros_command(
+            [sys.executable, '-m', 'testing.rtps_datagrams', 'send',
+             session.program.board_address]), stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+            text=True, env=dict(os.environ, PYTHONPATH=REPO))
+
+    def send(self, port, data):
+        self.process.stdin.write('%d %s\n' % (port, data.hex()))
+
+    def close(self):
+        self.process.stdin.close()
+        return self.process.stdout.read().strip()
+
+
+def fuzz(session, recorded, seconds, seed, findings_dir):
+    """Mutated datagrams until seconds pass or a finding; (counts, finding path or None)."""
+    mutator = rtps_datagrams.Mutator(seed)
+    corpus = [(entry['port'], bytes.fromhex(entry['data'])) for entry in recorded
+              if rtps_datagrams.parse(bytes.fromhex(entry['data']))]
+    counts = collections.Counter()
+    kinds = collections.Counter(kind for _, data in corpus for kind in rtps_datagrams.kinds(data))
+    print('recorded: %d datagrams; submessages: %s' % (len(corpus), dict(kinds)), flush=True)
+    sent = collections.deque(maxlen=BATCH)
+    deadline = time.monotonic() + seconds
+    sender = Sender(session)
+    finding = None
+    while time.monotonic() < deadline and finding is None:
+        for _ in range(BATCH):
+            port, data = mutator.random.choice(corpus)
+            name, mutated = mutator.mutate(data, mutator.random.random() < 0.25)
+            sender.send(port, mutated)
+            sent.append((port, mutated))
+            counts[name] += 1
+        sender.process.stdin.flush()
+        time.sleep(0.05)  # the board's queue holds 20 datagrams: let it read
+        output = session.output()
+        if reports(output) or session.stopped():
+            finding = os.path.join(findings_dir, 'finding-%d-%d.jsonl'
+                                   % (seed, sum(counts.values())))
+            os.makedirs(findings_dir, exist_ok=True)
+            with open(finding, 'w') as stream:
+                stream.writelines('%d %s\n' % (port, data.hex()) for port, data in sent)
+    print('sender: %s' % sender.close(), flush=True)
+    return counts, finding
+
+
+def coverage(program, build_dir):
+    """{parser: executions} from the gcov counts a stopped --coverage board wrote."""
+    obj_dir = os.path.join(os.path.dirname(program.path), 'obj')
+    counts = collections.Counter()
+    for name in sorted(os.listdir(obj_dir)):
+        if not (name.startswith('lib_') and name.endswith('.gcda')):
+            continue
+        result = subprocess.run(['gcov', '--json-format', '--stdout', '--demangled-names',
+                                 os.path.join(obj_dir, name)], capture_output=True, text=True,
+                                cwd=build_dir)
+        for line in result.stdout.splitlines():
+            for source in json.loads(line)['files']:
+                for function in source.get('functions', []):
+                    for title, prefix in PARSERS:
+                        if function['demangled_name'].startswith(prefix):
+                            counts[title] += function['execution_count']
+    return counts
+
+
+def build(options, work):
+    app = os.path.join(work, 'echoreply_string')
+    if not os.path.isdir(app):
+        shutil.copytree(os.path.join(os.environ['MROS2_POSIX_ROOT'], 'workspace',
+                                     'echoreply_string'), app)
+    patches = {'patches': ('accept-fast-dds-3-discovery',)} if options.as_it_is else \
+        {'hardened': True}
+    return mros2_pc.build(app, os.path.join(work, 'build'), os.environ['MROS2_ROOT'],
+                          os.path.join(os.environ['MROS2_POSIX_ROOT'], 'include', 'rtps',
+                                       'config.h'),
+                          target='native', sanitize=True,
+                          extra_flags=('--coverage',) if options.coverage else (), **patches)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    parser.add_argument('--seconds', type=float, default=600)
+    parser.add_argument('--seed', type=int, default=None)
+    parser.add_argument('--as-it-is', action='store_true')
+    parser.add_argument('--coverage', action='store_true')
+    parser.add_argument('--build-dir')
+    parser.add_argument('--findings', default=os.path.join(os.getcwd(), 'rtps_findings'))
+    parser.add_argument('--replay')
+    options = parser.parse_args()
+    if not os.environ.get('MROS2_ROOT') or not os.environ.get('MROS2_POSIX_ROOT'):
+        print('rtps_fuzz.py: needs MROS2_ROOT (mros2 v0.5.4) and MROS2_POSIX_ROOT (its example '
+              'apps): docs/testing.md', file=sys.stderr)
+        return 2
+    seed = options.seed if options.seed is not None else random.randrange(1 << 30)
+    work = options.build_dir or tempfile.mkdtemp(prefix='rtps_fuzz_')
+    program = build(options, work)
+    started = time.monotonic()
+    with mros2_pc.Session(program, work) as session:
+        session.start_board()
+        session.wait_for_output('ready to pub/sub message')
+        recorded = record(session, work)
+        if options.replay:
+            sender = Sender(session)
+            with open(options.replay) as stream:
+                for line in stream:
+                    port, data = line.split()
+                    sender.send(int(port), bytes.fromhex(data))
+            print('replayed: %s' % sender.close())
+            # An echo after them: the board's reader has been through what it kept.
+            echoing = not session.stopped() and echoes_exact(session, ['after replay'], 1)
+            found = reports(session.output()) or not echoing
+            print('the board %s' % ('reports: %s' % found if found else
+                                    'reports nothing and echoes'))
+            return 1 if found else 0
+        counts, finding = fuzz(session, recorded, options.seconds, seed, options.findings)
+        still = finding is None and echoes_exact(session, ['after %d' % index
+                                                           for index in range(5)], 5)
+        output = session.stop_board()
+    print('seed %d, %.0f s, %d datagrams sent: %s'
+          % (seed, time.monotonic() - started, sum(counts.values()), dict(counts)))
+    if finding:
+        print('FINDING: %s; the board said:\n%s' % (finding, output[-3000:]))
+    else:
+        print('no sanitizer report; the board %s echoing byte for byte afterwards'
+              % ('went on' if still else 'STOPPED'))
+    if options.coverage:
+        hits = coverage(program, work)
+        for title, _ in PARSERS:
+            print('  %-45s %d' % (title, hits[title]))
+    return 0 if finding is None and still else 1
+
+
+if __name__ == '__main__':
+    sys.exit(main())
