@@ -33,7 +33,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 PEER = os.path.join(HERE, 'round_trip_peer.py')
 RCLPY_ECHO = os.path.join(HERE, 'rclpy_echo.py')
 DISCOVERY = 'accept-fast-dds-3-discovery'
-BUILDS = (('as it is + ' + DISCOVERY, {'patches': (DISCOVERY,)}), ('--hardened', {'hardened': True}))
+BUILDS = (('as it is + ' + DISCOVERY, {'patches': (DISCOVERY,)}),
+          ('--hardened', {'hardened': True}))
 RCLPY = 'rclpy echo (orientation)'
 
 
