@@ -238,9 +238,9 @@ def send(address):
     sender = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
     count = 0
     for line in sys.stdin:
-        port, data = line.split()
+        port, _, data = line.partition(' ')
         try:
-            sender.sendto(bytes.fromhex(data), (address, int(port)))
+            sender.sendto(bytes.fromhex(data.strip()), (address, int(port)))
         except OSError:  # a datagram over 64 KB after mutation: not sendable
             continue
         count += 1
