@@ -50,10 +50,12 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
     assert before.returncode == 1
     assert [line.split(':')[0] for line in before.stdout.splitlines()] == [
         'not applied   one-writer-per-publisher', 'not applied   checked-receive',
-        'not applied   accept-fast-dds-3-discovery', 'not applied   checked-acknack']
+        'not applied   publish-keeps-a-copy', 'not applied   accept-fast-dds-3-discovery',
+        'not applied   checked-acknack']
     applied = run_genmros('mros2-harden', str(checkout))
     assert applied.stdout == ('genmros: applied one-writer-per-publisher, checked-receive, '
-                              'accept-fast-dds-3-discovery, checked-acknack\n')
+                              'publish-keeps-a-copy, accept-fast-dds-3-discovery, '
+                              'checked-acknack\n')
     changed = {'include': ['mros2.h'], 'src': ['mros2.cpp'],
                'embeddedRTPS': ['include/rtps/discovery/SEDPAgent.h',
                                 'include/rtps/discovery/SPDPAgent.h',

@@ -350,3 +350,29 @@ def test_app_defines_reach_the_apps_sources_alone(apps, posix_root, tmp_path):
                               capture_output=True, text=True, check=True).stdout.split()
     assert 'mros2_pc_log' not in undefined('app_app.o')
     assert 'mros2_pc_log' in undefined('lib_mros2.o')
+
+
+@pytest.mark.parametrize('hardened', [False, True], ids=['as-it-is', 'hardened'])
+def test_echoing_a_long_string_reads_the_message_after_it_is_gone(apps, posix_root, tmp_path,
+                                                                  typestore, hardened):
+    """mros2 v0.5.4 sends a sample over its 100-byte buffer from the writer thread, through a
+    reference to the message: echoreply_string's echo of its callback's message is read after
+    the callback freed it. publish-keeps-a-copy (in --hardened) keeps a copy for the writer."""
+    patches = {'hardened': True} if hardened else {'patches': DISCOVERY}
+    program = mros2_pc.build(os.path.join(apps, 'echoreply_string'), str(tmp_path / 'build'),
+                             MROS2_ROOT, config_of(posix_root), target='native', sanitize=True,
+                             **patches)
+    texts = ['long %d %s' % (index, 'x' * 200) for index in range(3)]
+    with mros2_pc.Session(program, str(tmp_path)) as session:
+        session.start_board()
+        assert session.wait_for_output('ready to pub/sub message')
+        peer = session.peer(echo_job(typestore, texts))
+        if hardened:
+            check_echoes(peer.result(), typestore, texts)
+            output = session.stop_board()
+            assert [word for word in SANITIZER_REPORTS if word in output] == []
+        else:
+            assert session.wait_for_output('heap-use-after-free')
+            assert session.wait_for_exit() != 0
+            peer.result(stop=True)
+            assert 'copyToFragBuf' in session.output()
