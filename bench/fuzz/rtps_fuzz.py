@@ -14,13 +14,15 @@ DATA, HEARTBEAT, ACKNACK, GAP, INFO_TS, INFO_DST, and DATA_FRAG where a sample i
 Then it sends the board those datagrams mutated (testing/rtps_datagrams.Mutator: submessage
 lengths, counts and kinds, parameter lists, names longer than the config's fields, locators,
 sequence and fragment numbers, encapsulation headers, truncation, flipped bytes), from the
-rclpy participant the board has discovered and, one datagram in four, from one it has not.
+rclpy participant the board has discovered and, one datagram in four (--unknown-share), from
+one it has not.
 Every 500 datagrams it checks that the board runs and its output holds no sanitizer report;
 a finding saves the last 500 datagrams sent (--findings DIR, JSON lines "port hex") and
 stops. At the end the board must still echo an rclpy node's strings byte for byte.
 --coverage builds with gcov and prints, for the parsers the fuzzer must reach, how often
 each ran. --replay FILE sends a finding's datagrams to a fresh board and says whether it
-still reports. Exit 0: no finding and the board still echoing.
+still reports. Exit 0: no finding and the board still echoing; 1: a finding; 3: no finding,
+but the board no longer echoes.
 """
 
 import argparse
@@ -41,6 +43,13 @@ from testing import mros2_pc, rtps_datagrams  # noqa: E402
 from testing.mros2_posix import wire_bytes  # noqa: E402
 
 BATCH = 500
+# The board's reader queue holds 20 datagrams (THREAD_POOL_WORKLOAD_QUEUE_LENGTH): the sender
+# pauses after each 20, so that most reach the parsers instead of being dropped.
+PACE = 20
+PAUSE_SECONDS = 0.005
+# gcov, and its dump linked in: the board's stop calls it (a weak reference alone would not
+# take it from libgcov).
+COVERAGE_FLAGS = ('--coverage', '-Wl,--undefined=__gcov_dump')
 SANITIZER_REPORTS = ('AddressSanitizer', 'LeakSanitizer', 'runtime error:', 'Segmentation fault')
 # The functions the fuzzer must reach, as gcov names them (demangled, prefix matched).
 PARSERS = (('MessageReceiver: DATA', 'rtps::MessageReceiver::processDataSubmessage'),
@@ -49,8 +58,8 @@ PARSERS = (('MessageReceiver: DATA', 'rtps::MessageReceiver::processDataSubmessa
            ('ParticipantProxyData::readFromUcdrBuffer',
             'rtps::ParticipantProxyData::readFromUcdrBuffer'),
            ('TopicData::readFromUcdrBuffer', 'rtps::TopicData::readFromUcdrBuffer'),
-           ('SEDP: publications', 'rtps::SEDPAgent::handlePublisherReaderMessage'),
-           ('SEDP: subscriptions', 'rtps::SEDPAgent::handleSubscriptionReaderMessage'),
+           ('SEDP: publications', 'rtps::SEDPAgent::onNewPublisher'),
+           ('SEDP: subscriptions', 'rtps::SEDPAgent::onNewSubscriber'),
            ("mros2's callback", 'void mros2::Subscriber::callback_handler'))
 
 
@@ -111,7 +120,7 @@ class Sender:
         return self.process.stdout.read().strip()
 
 
-def fuzz(session, recorded, seconds, seed, findings_dir):
+def fuzz(session, recorded, seconds, seed, findings_dir, unknown_share):
     """Mutated datagrams until seconds pass or a finding; (counts, finding path or None)."""
     mutator = rtps_datagrams.Mutator(seed)
     corpus = [(entry['port'], bytes.fromhex(entry['data'])) for entry in recorded
@@ -124,14 +133,15 @@ def fuzz(session, recorded, seconds, seed, findings_dir):
     sender = Sender(session)
     finding = None
     while time.monotonic() < deadline and finding is None:
-        for _ in range(BATCH):
+        for index in range(BATCH):
             port, data = mutator.random.choice(corpus)
-            name, mutated = mutator.mutate(data, mutator.random.random() < 0.25)
+            name, mutated = mutator.mutate(data, mutator.random.random() < unknown_share)
             sender.send(port, mutated)
             sent.append((port, mutated))
             counts[name] += 1
-        sender.process.stdin.flush()
-        time.sleep(0.05)  # the board's queue holds 20 datagrams: let it read
+            if index % PACE == PACE - 1:
+                sender.process.stdin.flush()
+                time.sleep(PAUSE_SECONDS)
         output = session.output()
         if reports(output) or session.stopped():
             if reports(output):
@@ -175,7 +185,7 @@ def build(options, work):
                           os.path.join(os.environ['MROS2_POSIX_ROOT'], 'include', 'rtps',
                                        'config.h'),
                           target='native', sanitize=True,
-                          extra_flags=('--coverage',) if options.coverage else (), **patches)
+                          extra_flags=COVERAGE_FLAGS if options.coverage else (), **patches)
 
 
 def main():
@@ -187,6 +197,9 @@ def main():
     parser.add_argument('--build-dir')
     parser.add_argument('--findings', default=os.path.join(os.getcwd(), 'rtps_findings'))
     parser.add_argument('--replay')
+    parser.add_argument('--unknown-share', type=float, default=0.25,
+                        help='the share of datagrams from a participant the board has not '
+                             'discovered (default 0.25)')
     options = parser.parse_args()
     if not os.environ.get('MROS2_ROOT') or not os.environ.get('MROS2_POSIX_ROOT'):
         print('rtps_fuzz.py: needs MROS2_ROOT (mros2 v0.5.4) and MROS2_POSIX_ROOT (its example '
@@ -213,7 +226,8 @@ def main():
             print('the board %s' % ('reports: %s' % found if found else
                                     'reports nothing and echoes'))
             return 1 if found else 0
-        counts, finding = fuzz(session, recorded, options.seconds, seed, options.findings)
+        counts, finding = fuzz(session, recorded, options.seconds, seed, options.findings,
+                               options.unknown_share)
         still = finding is None and echoes_exact(session, ['after %d' % index
                                                            for index in range(5)], 5)
         output = session.stop_board()
@@ -228,7 +242,7 @@ def main():
         hits = coverage(program, work)
         for title, _ in PARSERS:
             print('  %-45s %d' % (title, hits[title]))
-    return 0 if finding is None and still else 1
+    return 1 if finding else 0 if still else 3
 
 
 if __name__ == '__main__':
