@@ -2,8 +2,10 @@
 """The RTPS fuzzer (bench/fuzz/rtps_fuzz.py), run for 30 s against the hardened board of
 mros2-posix' echoreply_string on MROS2_ROOT, built with sanitizers and gcov: no sanitizer
 report, and the mutated datagrams reach the parsers (each of them ran), not only the length
-checks before them. The board should go on echoing afterwards; it does not yet (a finding
-not isolated: docs/mros2.md), which the second test holds as a strict expected failure."""
+checks before them. The board should go on echoing afterwards; it does not yet: its reader
+thread spins for ever in embeddedRTPS' SPDPAgent::processProxyData once a new participant
+does not fit its table (docs/mros2.md), which the second test holds as a strict expected
+failure."""
 
 import os
 import re
@@ -45,7 +47,7 @@ def test_30_seconds_of_rtps_fuzzing_reach_the_parsers_without_a_report(fuzzed):
         assert match and int(match.group(1)) > 0, (parser, fuzzed.stdout[-3000:])
 
 
-@pytest.mark.xfail(strict=True, reason='after the fuzzing the board no longer echoes a new '
-                                       'rclpy node: a finding not yet isolated')
+@pytest.mark.xfail(strict=True, reason='embeddedRTPS spins for ever in SPDPAgent::'
+                                       'processProxyData when its participant table is full')
 def test_the_board_echoes_after_the_fuzzing(fuzzed):
     assert fuzzed.returncode == 0 and NO_FINDING in fuzzed.stdout
