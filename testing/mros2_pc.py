@@ -90,10 +90,9 @@ def _wait(condition, what):
 class Session:
     """A program on a BoardNetwork's board side and peers on its ROS side."""
 
-    def __init__(self, program, work_dir, environment=None):
+    def __init__(self, program, work_dir):
         self.program = program
         self.work_dir = work_dir
-        self.environment = environment
         self.log_path = os.path.join(work_dir, 'board.log')
         self.network = BoardNetwork(program.board_address, program.domain_id)
         self._board = None
@@ -106,8 +105,7 @@ class Session:
     def start_board(self):
         self._log = open(self.log_path, 'w')
         self._board = subprocess.Popen(self.network.board_command(self.program.command),
-                                       stdout=self._log, stderr=subprocess.STDOUT,
-                                       env=self.environment)
+                                       stdout=self._log, stderr=subprocess.STDOUT)
 
     def output(self):
         with open(self.log_path, errors='replace') as stream:

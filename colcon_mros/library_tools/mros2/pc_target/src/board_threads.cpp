@@ -21,6 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/mman.h>
+#include <time.h>
 #include <ucontext.h>
 #include <unistd.h>
 
@@ -56,11 +57,6 @@ BoardThread* threads[kMaxThreads];
 int thread_count;
 pthread_mutex_t threads_lock = PTHREAD_MUTEX_INITIALIZER;
 __thread BoardThread* this_thread;
-
-void stop(const char* what) {
-  fprintf(stderr, "mros2 PC target: %s\n", what);
-  exit(kOverflowStatus);
-}
 
 #if defined(__arm__)
 
@@ -241,6 +237,19 @@ void* start_thread(const char* name, ThreadBody body, void* argument, size_t sta
 }
 
 void* current_thread() { return this_thread; }
+
+void sleep_milliseconds(uint32_t milliseconds) {
+  struct timespec delay;
+  delay.tv_sec = milliseconds / 1000;
+  delay.tv_nsec = (long)(milliseconds % 1000) * 1000000;
+  while (nanosleep(&delay, &delay) != 0) {
+  }
+}
+
+void stop(const char* what) {
+  fprintf(stderr, "mros2 PC target: %s\n", what);
+  exit(kOverflowStatus);
+}
 
 void exit_thread() {
 #if defined(__arm__)

@@ -5,6 +5,7 @@
 #define MROS2_PC_BOARD_THREADS_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 namespace mros2_pc {
 
@@ -22,6 +23,13 @@ void* current_thread();
 
 // Ends the calling board thread, as returning from its body does.
 [[noreturn]] void exit_thread();
+
+// Sleeps the calling thread, the board's RTOS tick being a millisecond.
+void sleep_milliseconds(uint32_t milliseconds);
+
+// Stops the program with one line, where the PC cannot stand in for the board
+// (exit status 70, EX_SOFTWARE).
+[[noreturn]] void stop(const char* what);
 
 }  // namespace mros2_pc
 

@@ -32,14 +32,6 @@ uint32_t milliseconds_since_start() {
   return (uint32_t)((now.tv_sec - start.tv_sec) * 1000 + (now.tv_nsec - start.tv_nsec) / 1000000);
 }
 
-void sleep_milliseconds(uint32_t milliseconds) {
-  struct timespec delay;
-  delay.tv_sec = milliseconds / 1000;
-  delay.tv_nsec = (long)(milliseconds % 1000) * 1000000;
-  while (nanosleep(&delay, &delay) != 0) {
-  }
-}
-
 // A queue keeps its sizes; the calls that put into one are not here,
 // because mros2 makes none.
 struct MessageQueue {
@@ -84,7 +76,7 @@ osStatus_t osThreadTerminate(osThreadId_t thread_id) {
 }
 
 osStatus_t osDelay(uint32_t ticks) {
-  sleep_milliseconds(ticks);  // configTICK_RATE_HZ 1000: a tick is a millisecond
+  mros2_pc::sleep_milliseconds(ticks);  // configTICK_RATE_HZ 1000: a tick is a millisecond
   return osOK;
 }
 
@@ -97,7 +89,7 @@ osStatus_t osMessageQueueGet(osMessageQueueId_t mq_id, void*, uint8_t*, uint32_t
   if (mq_id == NULL) return osErrorParameter;
   if (timeout == 0) return osErrorResource;
   do {
-    sleep_milliseconds(timeout == osWaitForever ? 1000 : timeout);
+    mros2_pc::sleep_milliseconds(timeout == osWaitForever ? 1000 : timeout);
   } while (timeout == osWaitForever);
   return osErrorTimeout;
 }

@@ -56,15 +56,10 @@ int wake_pipe[2] = {-1, -1};
 int membership_socket = -1;
 unsigned long cut_datagrams;
 
-void stop(const char* what) {
-  fprintf(stderr, "mros2 PC target: %s\n", what);
-  exit(70);
-}
-
 // Makes the tcpip thread take a new set of sockets.
 void wake_tcpip_thread() {
   if (wake_pipe[1] >= 0 && write(wake_pipe[1], "", 1) < 0 && errno != EAGAIN) {
-    stop("cannot wake the tcpip thread");
+    mros2_pc::stop("cannot wake the tcpip thread");
   }
 }
 
@@ -184,7 +179,9 @@ void MX_LWIP_Init(void) {
 #ifdef MROS2_PC_SETS_RTPS_ADDRESS
   memcpy(rtps::Config::IP_ADDRESS.data(), &board_netif.ip_addr.addr, 4);
 #endif
-  if (pipe2(wake_pipe, O_NONBLOCK | O_CLOEXEC) != 0) stop("cannot make the tcpip thread's pipe");
+  if (pipe2(wake_pipe, O_NONBLOCK | O_CLOEXEC) != 0) {
+    mros2_pc::stop("cannot make the tcpip thread's pipe");
+  }
   mros2_pc::start_thread("tcpip_thread", tcpip_thread, NULL, MROS2_PC_TCPIP_STACK_SIZE);
 }
 

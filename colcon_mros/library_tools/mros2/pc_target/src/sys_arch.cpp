@@ -111,13 +111,7 @@ sys_thread_t sys_thread_new(const char* name, lwip_thread_fn thread, void* arg, 
   return mros2_pc::start_thread(name, thread, arg, (size_t)stacksize);
 }
 
-void sys_msleep(u32_t ms) {
-  struct timespec delay;
-  delay.tv_sec = ms / 1000;
-  delay.tv_nsec = (long)(ms % 1000) * 1000000;
-  while (nanosleep(&delay, &delay) != 0) {
-  }
-}
+void sys_msleep(u32_t ms) { mros2_pc::sleep_milliseconds(ms); }
 
 u32_t sys_now(void) { return now_milliseconds(); }
 
