@@ -36,22 +36,54 @@ def build(app_dir, build_dir, mros2_root, rtps_config, **options):
                                       mros2_root=mros2_root, build_dir=build_dir, **options))
 
 
-def peer_environment(log_dir):
-    """rclpy's environment: the wheels' Fast DDS with its defaults, logs in log_dir."""
+# A Fast DDS profile whose UDP transport sends no datagram over max_message bytes: a
+# larger sample goes out as DATA_FRAG.
+FAST_DDS_PROFILE = """<?xml version="1.0" encoding="UTF-8"?>
+<dds xmlns="http://www.eprosima.com">
+  <profiles>
+    <transport_descriptors>
+      <transport_descriptor>
+        <transport_id>udp_within_the_board_limit</transport_id>
+        <type>UDPv4</type>
+        <maxMessageSize>%d</maxMessageSize>
+      </transport_descriptor>
+    </transport_descriptors>
+    <participant profile_name="within_the_board_limit" is_default_profile="true">
+      <rtps>
+        <userTransports>
+          <transport_id>udp_within_the_board_limit</transport_id>
+        </userTransports>
+        <useBuiltinTransports>false</useBuiltinTransports>
+      </rtps>
+    </participant>
+  </profiles>
+</dds>
+"""
+
+
+def peer_environment(log_dir, max_message=None):
+    """rclpy's environment: the wheels' Fast DDS with its defaults, logs in log_dir; with
+    max_message, a profile (FAST_DDS_PROFILE) that fragments what is larger."""
     env = {key: value for key, value in os.environ.items()
            if not key.startswith(('ROS_', 'RMW_', 'FASTRTPS_', 'FASTDDS_', 'AMENT_'))}
     env.update(RMW_IMPLEMENTATION='rmw_fastrtps_cpp', ROS_LOG_DIR=log_dir)
+    if max_message:
+        profile = os.path.join(log_dir, 'fast_dds_max_message_%d.xml' % max_message)
+        with open(profile, 'w') as stream:
+            stream.write(FAST_DDS_PROFILE % max_message)
+        # Fast DDS 3 reads the first, 2.x the second.
+        env.update(FASTDDS_DEFAULT_PROFILES_FILE=profile, FASTRTPS_DEFAULT_PROFILES_FILE=profile)
     return env
 
 
 class Peer:
     """testing/mros2_pc_peer.py running on the ROS side."""
 
-    def __init__(self, command, job, log_dir):
+    def __init__(self, command, job, log_dir, max_message=None):
         self._stderr = open(os.path.join(log_dir, 'peer-%d.err' % time.monotonic_ns()), 'w+')
         self._process = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
                                          stderr=self._stderr, text=True,
-                                         env=peer_environment(log_dir))
+                                         env=peer_environment(log_dir, max_message))
         self._process.stdin.write(json.dumps(job))
         self._process.stdin.close()
 
@@ -123,10 +155,11 @@ class Session:
         self.status = self._board.wait(timeout=EVENT_CAP)
         return self.status
 
-    def peer(self, job):
-        """A Peer with job on the ROS side, once its endpoints exist."""
+    def peer(self, job, max_message=None):
+        """A Peer with job on the ROS side, once its endpoints exist (max_message: see
+        peer_environment)."""
         peer = Peer(self.network.ros_command([os.path.join(WHEELS_VENV, 'bin', 'python'),
-                                              PEER_SCRIPT]), job, self.work_dir)
+                                              PEER_SCRIPT]), job, self.work_dir, max_message)
         peer.wait_ready()
         return peer
 

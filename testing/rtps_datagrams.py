@@ -19,6 +19,7 @@ import struct
 import sys
 
 RTPS_PORTS = range(7400, 7700)
+ETH_P_ALL, ETH_P_IP = 0x0003, 0x0800
 HEADER_SIZE = 20
 # Submessage ids (RTPS 2.x 9.4.5.1.1).
 PAD, ACKNACK, HEARTBEAT, GAP, INFO_TS, INFO_SRC, INFO_DST, NACK_FRAG, HEARTBEAT_FRAG, DATA, \
@@ -35,7 +36,9 @@ def capture(interface, out_path):
     """Records RTPS datagrams crossing interface (see the module) until SIGTERM."""
     stopped = []
     signal.signal(signal.SIGTERM, lambda *_: stopped.append(True))
-    sniffer = socket.socket(socket.AF_PACKET, socket.SOCK_DGRAM, socket.htons(0x0800))
+    # ETH_P_ALL: a socket of one protocol (ETH_P_IP) gets only what comes in, not what the
+    # ROS side sends.
+    sniffer = socket.socket(socket.AF_PACKET, socket.SOCK_DGRAM, socket.htons(ETH_P_ALL))
     sniffer.bind((interface, 0))
     sniffer.settimeout(0.2)
     with open(out_path, 'w') as out:
@@ -45,7 +48,7 @@ def capture(interface, out_path):
                 packet, address = sniffer.recvfrom(65535)
             except socket.timeout:
                 continue
-            if len(packet) < 28 or packet[9] != 17:  # UDP over IPv4
+            if address[1] != ETH_P_IP or len(packet) < 28 or packet[9] != 17:  # UDP, IPv4
                 continue
             header_length = (packet[0] & 0x0f) * 4
             source_port, port, length = struct.unpack_from('!HHH', packet, header_length)
