@@ -19,7 +19,8 @@ import re
 from colcon_mros.core.settings import GivenSetting, misfit_line, read_settings
 from colcon_mros.errors import GenmrosError, GenmrosProblems
 from colcon_mros.mros2.endpoints import PUBLISH, SUBSCRIBE, count, messages, topics_known
-from colcon_mros.mros2.rules import CONFIG_HEADER, SETTINGS, largest_datagram, requirements
+from colcon_mros.mros2.rules import (CONFIG_HEADER, DISCOVERY_ANNOUNCEMENT, SETTINGS,
+                                     largest_datagram, requirements)
 
 # mros2's public header, where its Publisher class is declared.
 MROS2_HEADER = os.path.join('include', 'mros2.h')
@@ -92,6 +93,12 @@ class Fit:
                 self.notes.append('no receive limit given (--receive-limit): the largest '
                                   'samples not checked')
             return
+        if limit.value < DISCOVERY_ANNOUNCEMENT:
+            self.warnings.append(
+                "%s: %s %d is below %d bytes, a ROS 2 node's SPDP announcement as Fast DDS 3 "
+                'sends it (measured; it grows with the host and user names): the board '
+                'discovers no such node' % (limit.where(), limit.name, limit.value,
+                                            DISCOVERY_ANNOUNCEMENT))
         for message in subscribed:
             datagram = largest_datagram(message)
             if datagram is None:

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """libFuzzer over the checked copyFromBuf of every mros2 message type and
-service half of test_ws_ros2 and of ROS 2's test interface files, for 30 s
+service half of test_ws_ros2 and of ROS 2's test interface files, for 12 s
 (bench/fuzz/fuzz_mros2.py runs it as long as asked),
 seeded with Fast-CDR's bytes.
 
@@ -25,7 +25,7 @@ from testing.ros_paths import ros2_package_dir
 
 pytestmark = pytest.mark.slow
 
-FUZZ_SECONDS = 30
+FUZZ_SECONDS = 12
 # Where the fuzzed definitions are: test_ws_ros2's packages and Debian's
 # ros2-test-interface-files.
 DEFINITION_DIRS = glob.glob(os.path.join(REPO, 'test_ws_ros2', 'src', '*')) + [

@@ -42,4 +42,3 @@ def test_30_seconds_of_rtps_fuzzing_reach_the_parsers_and_the_board_echoes_after
     for parser in PARSERS:
         match = re.search(r'^  %s +(\d+)$' % re.escape(parser), fuzzed.stdout, re.M)
         assert match and int(match.group(1)) > 0, (parser, fuzzed.stdout[-3000:])
-
