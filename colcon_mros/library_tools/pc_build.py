@@ -9,6 +9,7 @@ import os
 import shutil
 import tempfile
 
+from colcon_mros.core.output import write_files
 from colcon_mros.errors import GenmrosError
 from colcon_mros.library_tools.patch_series import apply_patches
 
@@ -17,6 +18,8 @@ ARM_COMPILER = 'arm-linux-gnueabihf-g++'
 ARM_RUNNER = 'qemu-arm'
 # What --sanitize adds to every compile and the link (native target only).
 SANITIZER_FLAGS = '-fsanitize=address,undefined -fno-omit-frame-pointer'
+# The file in a build directory naming the flags its objects were compiled with.
+FLAGS_STAMP = 'compile-flags'
 
 
 def check_tools(target, sanitize):
@@ -34,6 +37,15 @@ def check_tools(target, sanitize):
                            % ARM_RUNNER)
     if shutil.which('make') is None:
         raise GenmrosError('make not found: install make')
+
+
+def flags_stamp(build_dir, flags):
+    """build_dir's FLAGS_STAMP, holding flags ({make variable: value}), rewritten only when
+    they differ from the last build's. The objects depend on it, so that a build with other
+    flags (a target, --sanitize, -D) compiles them again: make compares times, not flags."""
+    write_files(build_dir, {FLAGS_STAMP: ''.join('%s=%s\n' % item
+                                                 for item in sorted(flags.items()))})
+    return os.path.join(build_dir, FLAGS_STAMP)
 
 
 def runner(target):

@@ -26,8 +26,8 @@ from colcon_mros.core.output import write_files
 from colcon_mros.core.settings import read_settings
 from colcon_mros.errors import GenmrosError
 from colcon_mros.library_tools.mros2.patches import check_root, mros2_patches
-from colcon_mros.library_tools.pc_build import (SANITIZER_FLAGS, check_tools, patched_copy,
-                                                runner)
+from colcon_mros.library_tools.pc_build import (SANITIZER_FLAGS, check_tools, flags_stamp,
+                                                patched_copy, runner)
 
 TARGET_DIR = os.path.dirname(os.path.abspath(__file__))
 MAKEFILE = os.path.join(TARGET_DIR, 'mros2_pc.mk')
@@ -368,6 +368,9 @@ def build(request):
         'STAND_IN_FLAGS': '-DMROS2_PC_SETS_RTPS_ADDRESS' if config.sets_address else '',
         'APP_FLAGS': ' '.join('-D' + define for define in request.app_defines),
     }
+    variables['FLAGS_STAMP'] = flags_stamp(build_dir, {
+        name: variables[name] for name in ('CONFIG_DIR', 'TARGET', 'SANITIZER_FLAGS',
+                                           'STAND_IN_FLAGS', 'APP_FLAGS', 'MROS2_INCLUDE_DIRS')})
     words = {'root': user_root + (' (patched copy)' if root != user_root else ''),
              'name': name, 'program': program}
     _run_steps(request, variables, words, app_dir)

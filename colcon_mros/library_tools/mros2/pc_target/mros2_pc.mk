@@ -17,6 +17,8 @@
 #   SANITIZER_FLAGS  added to every compile and the link (--sanitize, and
 #                 the flags a bench adds, such as --coverage)
 #   STAND_IN_FLAGS the stand-ins' own defines; APP_FLAGS the app's (-D)
+#   FLAGS_STAMP    a file genmros rewrites when the flags change: every
+#                  object depends on it
 #
 # Goals, one step each: library (mros2 and the stand-ins), app, program
 # (the link).
@@ -73,7 +75,7 @@ $(BUILD)/$(PROGRAM): $(LIBRARY_OBJS) $(STAND_IN_OBJS) $(APP_OBJS)
 
 # compile_rule(group, source, the group's flags, extra flags)
 define compile_rule
-$(call object,$(1),$(2)): $(2) | $(OBJ_DIR)
+$(call object,$(1),$(2)): $(2) $(FLAGS_STAMP) | $(OBJ_DIR)
 	$$(if $$(filter %.c,$(2)),$$(CC) $$(CFLAGS),$$(CXX) $$(CXXFLAGS)) $(4) -c $(2) -o $$@
 $(call object,$(1),$(2)): FLAGS_OF_GROUP := $(3)
 endef

@@ -18,7 +18,8 @@ import sys
 from colcon_mros.core.defaults import DEFAULT_DEFINITION_TEXT, DEFAULT_STORAGE
 from colcon_mros.errors import GenmrosError
 from colcon_mros.integrations.installed_files import MAKE_FRAGMENT, installed_file
-from colcon_mros.library_tools.pc_build import SANITIZER_FLAGS, check_tools, patched_copy, runner
+from colcon_mros.library_tools.pc_build import (SANITIZER_FLAGS, check_tools, flags_stamp,
+                                                patched_copy, runner)
 from colcon_mros.library_tools.mros_v1.pc_target.asp_cfg import read_config, write_kernel_config
 from colcon_mros.mros_v1.app import App, find_app
 
@@ -115,6 +116,10 @@ def build(request):
             os.path.dirname(os.path.dirname(os.path.dirname(TARGET_DIR))), sys.executable),
         'GENMROS_MK': installed_file(MAKE_FRAGMENT),
     }
+    variables['FLAGS_STAMP'] = flags_stamp(build_dir, {
+        name: variables[name] for name in ('MROS_ROOT', 'APP_CXXFLAGS', 'BOARD_C_OPTIMIZATION',
+                                           'BOARD_CXX_OPTIMIZATION', 'TARGET', 'SANITIZER_FLAGS',
+                                           'FIT_CHECK_FLAGS')})
     command = ['make', '--no-print-directory', '-f', MAKEFILE, '-j%d' % request.jobs] + \
         ([] if request.verbose else ['-s']) + ['%s=%s' %
                                                item for item in sorted(variables.items())]

@@ -17,6 +17,8 @@
 #                 qemu-arm); native: this PC
 #   BUILD         the output directory
 #   SANITIZER_FLAGS  added to every compile and the link (genmros --sanitize)
+#   FLAGS_STAMP   a file genmros rewrites when the flags change: every object
+#                 depends on it
 #   FIT_CHECK_FLAGS  -DMROS_SKIP_FIT_CHECK with genmros --no-fit-check, so that
 #                 ros.cpp builds even where mros_v1_fit_check.h finds a misfit
 #   MROS_MSG_TYPES, MROS_MSG_PATHS, MROS_MSG_DEFINITION_TEXT, MROS_MSG_FLAGS,
@@ -103,10 +105,10 @@ $(BUILD)/$(APP_NAME): $(LIBRARY_OBJS) $(APP_ONLY_OBJS) $(HOST_LIBC_WRAP)
 $(HOST_LIBC_WRAP): $(OBJ_DIR)/host_libc.o
 	$(NM) --defined-only $< | sed -n 's/^.* T __wrap_\(.*\)$$/--wrap=\1/p' > $@
 
-$(OBJ_DIR)/%.o: %.c | $(OBJ_DIR)
+$(OBJ_DIR)/%.o: %.c $(FLAGS_STAMP) | $(OBJ_DIR)
 	$(CC) $(CFLAGS) -c $< -o $@
 
-$(OBJ_DIR)/%.o: %.cpp | $(OBJ_DIR)
+$(OBJ_DIR)/%.o: %.cpp $(FLAGS_STAMP) | $(OBJ_DIR)
 	$(CXX) $(CXXFLAGS) -c $< -o $@
 
 # The lwIP stand-in's host calls are lambdas.
