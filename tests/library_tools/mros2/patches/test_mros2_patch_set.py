@@ -51,14 +51,17 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
     assert [line.split(':')[0] for line in before.stdout.splitlines()] == [
         'not applied   one-writer-per-publisher', 'not applied   checked-receive',
         'not applied   publish-keeps-a-copy', 'not applied   accept-fast-dds-3-discovery',
-        'not applied   checked-acknack', 'not applied   full-participant-table-refuses']
+        'not applied   checked-acknack', 'not applied   full-participant-table-refuses',
+        'not applied   large-acknack-counts']
     applied = run_genmros('mros2-harden', str(checkout))
     assert applied.stdout == ('genmros: applied one-writer-per-publisher, checked-receive, '
                               'publish-keeps-a-copy, accept-fast-dds-3-discovery, '
-                              'checked-acknack, full-participant-table-refuses\n')
+                              'checked-acknack, full-participant-table-refuses, '
+                              'large-acknack-counts\n')
     changed = {'include': ['mros2.h'], 'src': ['mros2.cpp'],
                'embeddedRTPS': ['include/rtps/discovery/SEDPAgent.h',
                                 'include/rtps/discovery/SPDPAgent.h',
+                                'include/rtps/entities/StatefulWriter.tpp',
                                 'src/discovery/ParticipantProxyData.cpp',
                                 'src/discovery/SPDPAgent.cpp',
                                 'src/messages/MessageTypes.cpp']}

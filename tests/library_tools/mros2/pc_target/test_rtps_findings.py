@@ -14,7 +14,12 @@ participants of fresh GUID prefixes (genmros-sp 0 1 to 8), each with a lease of 
 than mros2-posix' table holds (SPDP_MAX_NUMBER_FOUND_PARTICIPANTS, 5). As it is, the reader
 thread spins for ever and the board takes nothing more; hardened, the participants it could
 not add are refused, the others leave when their leases end, and the echo's node finds a
-place."""
+place.
+
+tests/fixtures/rtps_findings/acknack_count.txt (large-acknack-counts): that announcement
+from one more participant (genmros-ack 1), then two ACKNACKs of it to the board's SEDP
+publications writer, of counts 0x7fffffff and 0xffffffff: as it is, the writer's unused text
+of the two counts does not fit its 20 characters and the reader thread spins for ever."""
 
 import os
 import subprocess
@@ -30,6 +35,7 @@ FUZZER = os.path.join(REPO, 'bench', 'fuzz', 'rtps_fuzz.py')
 FINDINGS = os.path.join(REPO, 'tests', 'fixtures', 'rtps_findings')
 # What the board does with each finding, as it is (with accept-fast-dds-3-discovery alone).
 AS_IT_IS = {'acknack.txt': "the board reports: ['AddressSanitizer']",
+            'acknack_count.txt': 'the board reports nothing and no longer echoes',
             'participant_table.txt': 'the board reports nothing and no longer echoes'}
 
 
