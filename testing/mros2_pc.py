@@ -92,6 +92,9 @@ class Peer:
               'the rclpy peer to start')
         assert self._process.poll() is None, self._errors()[-3000:]
 
+    def running(self):
+        return self._process.poll() is None
+
     def _errors(self):
         self._stderr.seek(0)
         return self._stderr.read()

@@ -52,18 +52,19 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
         'not applied   one-writer-per-publisher', 'not applied   checked-receive',
         'not applied   publish-keeps-a-copy', 'not applied   accept-fast-dds-3-discovery',
         'not applied   checked-acknack', 'not applied   full-participant-table-refuses',
-        'not applied   large-acknack-counts']
+        'not applied   large-acknack-counts', 'not applied   bounded-submessage-lengths']
     applied = run_genmros('mros2-harden', str(checkout))
     assert applied.stdout == ('genmros: applied one-writer-per-publisher, checked-receive, '
                               'publish-keeps-a-copy, accept-fast-dds-3-discovery, '
                               'checked-acknack, full-participant-table-refuses, '
-                              'large-acknack-counts\n')
+                              'large-acknack-counts, bounded-submessage-lengths\n')
     changed = {'include': ['mros2.h'], 'src': ['mros2.cpp'],
                'embeddedRTPS': ['include/rtps/discovery/SEDPAgent.h',
                                 'include/rtps/discovery/SPDPAgent.h',
                                 'include/rtps/entities/StatefulWriter.tpp',
                                 'src/discovery/ParticipantProxyData.cpp',
                                 'src/discovery/SPDPAgent.cpp',
+                                'src/messages/MessageReceiver.cpp',
                                 'src/messages/MessageTypes.cpp']}
     for part in LIBRARY_DIRS:
         assert _differing(os.path.join(MROS2_ROOT, part), str(checkout / part)) == changed[part]

@@ -19,7 +19,11 @@ place.
 tests/fixtures/rtps_findings/acknack_count.txt (large-acknack-counts): that announcement
 from one more participant (genmros-ack 1), then two ACKNACKs of it to the board's SEDP
 publications writer, of counts 0x7fffffff and 0xffffffff: as it is, the writer's unused text
-of the two counts does not fit its 20 characters and the reader thread spins for ever."""
+of the two counts does not fit its 20 characters and the reader thread spins for ever.
+
+tests/fixtures/rtps_findings/submessage_length.txt (bounded-submessage-lengths): one datagram
+of a header and a GAP whose length, 0xfffc, brings embeddedRTPS' 16-bit position back to
+itself: as it is, the reader thread reads that submessage for ever."""
 
 import os
 import subprocess
@@ -36,7 +40,8 @@ FINDINGS = os.path.join(REPO, 'tests', 'fixtures', 'rtps_findings')
 # What the board does with each finding, as it is (with accept-fast-dds-3-discovery alone).
 AS_IT_IS = {'acknack.txt': "the board reports: ['AddressSanitizer']",
             'acknack_count.txt': 'the board reports nothing and no longer echoes',
-            'participant_table.txt': 'the board reports nothing and no longer echoes'}
+            'participant_table.txt': 'the board reports nothing and no longer echoes',
+            'submessage_length.txt': 'the board reports nothing and no longer echoes'}
 
 
 @pytest.mark.parametrize('hardened', [False, True], ids=['as-it-is', 'hardened'])
