@@ -23,7 +23,12 @@ of the two counts does not fit its 20 characters and the reader thread spins for
 
 tests/fixtures/rtps_findings/submessage_length.txt (bounded-submessage-lengths): one datagram
 of a header and a GAP whose length, 0xfffc, brings embeddedRTPS' 16-bit position back to
-itself: as it is, the reader thread reads that submessage for ever."""
+itself: as it is, the reader thread reads that submessage for ever.
+
+tests/fixtures/rtps_findings/acknack_base.txt (acknack-within-the-history): the announcement
+from one more participant (genmros-sn 0 1), then an ACKNACK of it to the SEDP publications
+writer whose set starts at sequence number (-2, 0): as it is, the reader thread steps
+through the 2^32 and more numbers up to the writer's newest, for hours."""
 
 import os
 import subprocess
@@ -39,6 +44,7 @@ FUZZER = os.path.join(REPO, 'bench', 'fuzz', 'rtps_fuzz.py')
 FINDINGS = os.path.join(REPO, 'tests', 'fixtures', 'rtps_findings')
 # What the board does with each finding, as it is (with accept-fast-dds-3-discovery alone).
 AS_IT_IS = {'acknack.txt': "the board reports: ['AddressSanitizer']",
+            'acknack_base.txt': 'the board reports nothing and no longer echoes',
             'acknack_count.txt': 'the board reports nothing and no longer echoes',
             'participant_table.txt': 'the board reports nothing and no longer echoes',
             'submessage_length.txt': 'the board reports nothing and no longer echoes'}
