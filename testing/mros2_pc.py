@@ -88,8 +88,8 @@ class Peer:
         self._process.stdin.close()
 
     def wait_ready(self):
-        _wait(lambda: 'peer ready' in self._errors() or self._process.poll() is not None,
-              'the rclpy peer to start')
+        wait_for(lambda: 'peer ready' in self._errors() or self._process.poll() is not None,
+                 'the rclpy peer to start')
         assert self._process.poll() is None, self._errors()[-3000:]
 
     def running(self):
@@ -114,7 +114,7 @@ class Peer:
         return report
 
 
-def _wait(condition, what):
+def wait_for(condition, what):
     deadline = time.monotonic() + EVENT_CAP
     while not condition():
         if time.monotonic() > deadline:
@@ -147,8 +147,8 @@ class Session:
             return stream.read()
 
     def wait_for_output(self, text):
-        _wait(lambda: text in self.output() or self._board.poll() is not None,
-              "'%s' in the board's output" % text)
+        wait_for(lambda: text in self.output() or self._board.poll() is not None,
+                 "'%s' in the board's output" % text)
         return text in self.output()
 
     def stopped(self):

@@ -49,6 +49,12 @@ BATCH = 500
 # pauses after each 20, so that most reach the parsers instead of being dropped.
 PACE = 20
 PAUSE_SECONDS = 0.005
+# The SPDP port of domain 0, where the board announces itself once a second
+# (SPDP_RESEND_PERIOD_MS); it checks its participants' leases every third announcement
+# (SPDP_CYCLECOUNT_HEARTBEAT 2): 5 announcements from the replay on hold a check after it,
+# in mros2-posix' config.
+SPDP_PORT = 7400
+LIVELINESS_CHECK_ANNOUNCEMENTS = 5
 # SPDP_MAX_REMOTE_LEASE_DURATION of mros2-posix' config.
 MAX_REMOTE_LEASE_SECONDS = 180
 # gcov, and its dump linked in: the board's stop calls it (a weak reference alone would not
@@ -93,13 +99,27 @@ def echoes_exact(session, texts, want, max_message=None, timeout=mros2_pc.EVENT_
     return len(received) >= want and set(received) <= set(samples)
 
 
-def record(session, work_dir):
-    """The datagrams of an exchange with rclpy, as JSON objects (testing/rtps_datagrams)."""
-    path = os.path.join(work_dir, 'recorded.jsonl')
+def start_capture(session, path):
+    """testing/rtps_datagrams' capture on the ROS side, writing to path, once it listens."""
     capture = subprocess.Popen(session.network.ros_command(
         [sys.executable, '-m', 'testing.rtps_datagrams', 'capture', 'mros2-ros', path]),
         stderr=subprocess.PIPE, text=True, env=dict(os.environ, PYTHONPATH=REPO))
     assert capture.stderr.readline().strip() == 'capturing'
+    return capture
+
+
+def wait_for_announcements(session, path, count):
+    """Until the board has sent count SPDP announcements into the capture at path."""
+    def announced():
+        return sum(1 for entry in rtps_datagrams.read_capture(path)
+                   if not entry['to_board'] and entry['port'] == SPDP_PORT) >= count
+    mros2_pc.wait_for(lambda: announced() or session.stopped(), 'the board to announce itself')
+
+
+def record(session, work_dir):
+    """The datagrams of an exchange with rclpy, as JSON objects (testing/rtps_datagrams)."""
+    path = os.path.join(work_dir, 'recorded.jsonl')
+    capture = start_capture(session, path)
     # Strings within mros2's 100-byte buffer: echoreply_string's echo of a longer one reads
     # the callback's message after it is freed (mros2 v0.5.4 sends it later, from the
     # writer thread, through a reference), a finding of its own (docs/mros2.md).
@@ -158,8 +178,7 @@ def fuzz(session, recorded, seconds, seed, findings_dir, unknown_share):
                 time.sleep(PAUSE_SECONDS)
         output = session.output()
         if reports(output) or session.stopped():
-            if reports(output):
-                session.wait_for_exit()  # the sanitizer ends the board once its report is out
+            session.stop_board()  # AddressSanitizer ends it; UndefinedBehaviorSanitizer not
             finding = os.path.join(findings_dir, 'finding-%d-%d.jsonl'
                                    % (seed, sum(counts.values())))
             os.makedirs(findings_dir, exist_ok=True)
@@ -228,6 +247,8 @@ def main():
         session.wait_for_output('ready to pub/sub message')
         recorded = record(session, work)
         if options.replay:
+            announcements = os.path.join(work, 'replay.jsonl')
+            capture = start_capture(session, announcements)
             sender = Sender(session)
             with open(options.replay) as stream:
                 for line in stream:
@@ -236,6 +257,11 @@ def main():
             print('replayed: %s' % sender.close())
             # An echo after them: the board's reader has been through what it kept.
             echoing = not session.stopped() and echoes_exact(session, ['after replay'], 1)
+            # And the liveliness check of the participants it added, which runs on the SPDP
+            # writer thread every SPDP_CYCLECOUNT_HEARTBEAT + 1 announcements.
+            wait_for_announcements(session, announcements, LIVELINESS_CHECK_ANNOUNCEMENTS)
+            capture.terminate()
+            capture.wait()
             found = reports(session.output())
             print('the board %s' % ('reports: %s' % found if found else
                                     'reports nothing and echoes' if echoing else

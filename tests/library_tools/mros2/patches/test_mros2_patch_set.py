@@ -53,15 +53,16 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
         'not applied   publish-keeps-a-copy', 'not applied   accept-fast-dds-3-discovery',
         'not applied   checked-acknack', 'not applied   full-participant-table-refuses',
         'not applied   large-acknack-counts', 'not applied   bounded-submessage-lengths',
-        'not applied   acknack-within-the-history']
+        'not applied   acknack-within-the-history', 'not applied   lease-in-milliseconds']
     applied = run_genmros('mros2-harden', str(checkout))
     assert applied.stdout == ('genmros: applied one-writer-per-publisher, checked-receive, '
                               'publish-keeps-a-copy, accept-fast-dds-3-discovery, '
                               'checked-acknack, full-participant-table-refuses, '
                               'large-acknack-counts, bounded-submessage-lengths, '
-                              'acknack-within-the-history\n')
+                              'acknack-within-the-history, lease-in-milliseconds\n')
     changed = {'include': ['mros2.h'], 'src': ['mros2.cpp'],
-               'embeddedRTPS': ['include/rtps/discovery/SEDPAgent.h',
+               'embeddedRTPS': ['include/rtps/discovery/ParticipantProxyData.h',
+                                'include/rtps/discovery/SEDPAgent.h',
                                 'include/rtps/discovery/SPDPAgent.h',
                                 'include/rtps/entities/StatefulWriter.tpp',
                                 'src/discovery/ParticipantProxyData.cpp',

@@ -28,7 +28,11 @@ itself: as it is, the reader thread reads that submessage for ever.
 tests/fixtures/rtps_findings/acknack_base.txt (acknack-within-the-history): the announcement
 from one more participant (genmros-sn 0 1), then an ACKNACK of it to the SEDP publications
 writer whose set starts at sequence number (-2, 0): as it is, the reader thread steps
-through the 2^32 and more numbers up to the writer's newest, for hours."""
+through the 2^32 and more numbers up to the writer's newest, for hours.
+
+tests/fixtures/rtps_findings/lease.txt (lease-in-milliseconds): the announcement from one
+more participant (genmros-ls 0 1) with a lease of 11927572 s, as the fuzzer sent it: as it
+is, the SPDP writer thread's liveliness check overflows int turning it into milliseconds."""
 
 import os
 import subprocess
@@ -46,6 +50,7 @@ FINDINGS = os.path.join(REPO, 'tests', 'fixtures', 'rtps_findings')
 AS_IT_IS = {'acknack.txt': "the board reports: ['AddressSanitizer']",
             'acknack_base.txt': 'the board reports nothing and no longer echoes',
             'acknack_count.txt': 'the board reports nothing and no longer echoes',
+            'lease.txt': "the board reports: ['runtime error:']",
             'participant_table.txt': 'the board reports nothing and no longer echoes',
             'submessage_length.txt': 'the board reports nothing and no longer echoes'}
 
