@@ -145,9 +145,15 @@ class Sender:
             [sys.executable, '-m', 'testing.rtps_datagrams', 'send',
              session.program.board_address]), stdin=subprocess.PIPE, stdout=subprocess.PIPE,
             text=True, env=dict(os.environ, PYTHONPATH=REPO))
+        self.sent = 0
 
     def send(self, port, data):
+        """Sends one datagram, pausing after each PACE."""
         self.process.stdin.write('%d %s\n' % (port, data.hex()))
+        self.sent += 1
+        if self.sent % PACE == 0:
+            self.process.stdin.flush()
+            time.sleep(PAUSE_SECONDS)
 
     def close(self):
         self.process.stdin.close()
@@ -167,18 +173,18 @@ def fuzz(session, recorded, seconds, seed, findings_dir, unknown_share):
     sender = Sender(session)
     finding = None
     while time.monotonic() < deadline and finding is None:
-        for index in range(BATCH):
+        for _ in range(BATCH):
             port, data = mutator.random.choice(corpus)
             name, mutated = mutator.mutate(data, mutator.random.random() < unknown_share)
             sender.send(port, mutated)
             sent.append((port, mutated))
             counts[name] += 1
-            if index % PACE == PACE - 1:
-                sender.process.stdin.flush()
-                time.sleep(PAUSE_SECONDS)
         output = session.output()
         if reports(output) or session.stopped():
-            session.stop_board()  # AddressSanitizer ends it; UndefinedBehaviorSanitizer not
+            if 'AddressSanitizer' in reports(output):
+                session.wait_for_exit()  # it ends the board once its report is out
+            else:
+                session.stop_board()  # UndefinedBehaviorSanitizer goes on after its report
             finding = os.path.join(findings_dir, 'finding-%d-%d.jsonl'
                                    % (seed, sum(counts.values())))
             os.makedirs(findings_dir, exist_ok=True)

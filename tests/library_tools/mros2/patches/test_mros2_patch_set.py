@@ -53,13 +53,15 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
         'not applied   publish-keeps-a-copy', 'not applied   accept-fast-dds-3-discovery',
         'not applied   checked-acknack', 'not applied   full-participant-table-refuses',
         'not applied   large-acknack-counts', 'not applied   bounded-submessage-lengths',
-        'not applied   acknack-within-the-history', 'not applied   lease-in-milliseconds']
+        'not applied   acknack-within-the-history', 'not applied   lease-in-milliseconds',
+        'not applied   data-holds-its-fields']
     applied = run_genmros('mros2-harden', str(checkout))
     assert applied.stdout == ('genmros: applied one-writer-per-publisher, checked-receive, '
                               'publish-keeps-a-copy, accept-fast-dds-3-discovery, '
                               'checked-acknack, full-participant-table-refuses, '
                               'large-acknack-counts, bounded-submessage-lengths, '
-                              'acknack-within-the-history, lease-in-milliseconds\n')
+                              'acknack-within-the-history, lease-in-milliseconds, '
+                              'data-holds-its-fields\n')
     changed = {'include': ['mros2.h'], 'src': ['mros2.cpp'],
                'embeddedRTPS': ['include/rtps/discovery/ParticipantProxyData.h',
                                 'include/rtps/discovery/SEDPAgent.h',

@@ -32,7 +32,11 @@ through the 2^32 and more numbers up to the writer's newest, for hours.
 
 tests/fixtures/rtps_findings/lease.txt (lease-in-milliseconds): the announcement from one
 more participant (genmros-ls 0 1) with a lease of 11927572 s, as the fuzzer sent it: as it
-is, the SPDP writer thread's liveliness check overflows int turning it into milliseconds."""
+is, the SPDP writer thread's liveliness check overflows int turning it into milliseconds.
+
+tests/fixtures/rtps_findings/data_fields.txt (data-holds-its-fields): one datagram of a
+header and a DATA of length 0 at its end: as it is, the reader reads DATA's 20 bytes of
+fields past the datagram."""
 
 import os
 import subprocess
@@ -50,6 +54,7 @@ FINDINGS = os.path.join(REPO, 'tests', 'fixtures', 'rtps_findings')
 AS_IT_IS = {'acknack.txt': "the board reports: ['AddressSanitizer']",
             'acknack_base.txt': 'the board reports nothing and no longer echoes',
             'acknack_count.txt': 'the board reports nothing and no longer echoes',
+            'data_fields.txt': "the board reports: ['AddressSanitizer']",
             'lease.txt': "the board reports: ['runtime error:']",
             'participant_table.txt': 'the board reports nothing and no longer echoes',
             'submessage_length.txt': 'the board reports nothing and no longer echoes'}
