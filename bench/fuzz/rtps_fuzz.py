@@ -179,9 +179,9 @@ def fuzz(session, recorded, seconds, seed, findings_dir, unknown_share):
             sender.send(port, mutated)
             sent.append((port, mutated))
             counts[name] += 1
-        output = session.output()
-        if reports(output) or session.stopped():
-            if 'AddressSanitizer' in reports(output):
+        found = reports(session.output())
+        if found or session.stopped():
+            if 'AddressSanitizer' in found:
                 session.wait_for_exit()  # it ends the board once its report is out
             else:
                 session.stop_board()  # UndefinedBehaviorSanitizer goes on after its report
