@@ -80,6 +80,27 @@ class Submessage:
             endian + 'H', len(self.body) if length is None else length) + bytes(self.body)
 
 
+def rtps_header(guid_prefix):
+    """An RTPS 2.3 message header, eProsima's vendor id (1.15), from guid_prefix (12 bytes)."""
+    return b'RTPS\x02\x03\x01\x0f' + bytes(guid_prefix)
+
+
+def data(reader_id, writer_id, sn, payload):
+    """A little-endian DATA (flags E and D) of payload, from writer_id (4 bytes) to
+    reader_id."""
+    return Submessage(DATA, 0x05, struct.pack('<HH4s4siI', 0, 16, reader_id, writer_id,
+                                              sn >> 32, sn & 0xffffffff) + payload)
+
+
+def data_frag(reader_id, writer_id, sn, first_fragment, fragment_size, sample_size, payload,
+              fragments=1):
+    """A little-endian DATA_FRAG carrying payload as fragments first_fragment to
+    first_fragment + fragments - 1 (numbered from 1) of a sample of sample_size bytes."""
+    return Submessage(DATA_FRAG, 0x01, struct.pack(
+        '<HH4s4siIIHHI', 0, 28, reader_id, writer_id, sn >> 32, sn & 0xffffffff,
+        first_fragment, fragments, fragment_size, sample_size) + payload)
+
+
 def parse(datagram):
     """(header, [Submessage]) of an RTPS datagram, or None."""
     if len(datagram) < HEADER_SIZE or datagram[:4] != b'RTPS':

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The stand-in's definitions: the CMSIS-RTOS2 calls of mros2's init on
 // std::thread, lwIP's init (declared as the PC target declares them), and
-// where the rtps stand-in keeps what was sent and the readers made.
+// where the rtps stand-in keeps what was sent, the readers made and the
+// fragment counts.
 #include <chrono>
 #include <thread>
 
@@ -27,6 +28,8 @@ osStatus_t osMessageQueueGet(osMessageQueueId_t, void*, uint8_t*, uint32_t) { re
 void MX_LWIP_Init(void) {}
 
 namespace rtps {
+FragmentCounts MessageReceiver::fragmentCounts;
+
 std::vector<Sent>& sent_samples() {
   static std::vector<Sent> sent;
   return sent;

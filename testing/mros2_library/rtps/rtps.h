@@ -106,6 +106,16 @@ class Reader {
   void* callee = nullptr;
 };
 
+// The patch data-frag-for-best-effort-readers' counts, which mros2's
+// Subscriber shows.
+struct FragmentCounts {
+  uint32_t tooLarge, poolFull, inconsistent, abandoned, unmatched;
+};
+class MessageReceiver {
+ public:
+  static FragmentCounts fragmentCounts;
+};
+
 class Participant {
  public:
   bool registerOnNewPublisherMatchedCallback(void (*)(void*), void*) { return true; }

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// A stand-in of embeddedRTPS' Reader and ReaderCacheChange as its receiver
+// uses them (the names and signatures are embeddedRTPS'): a reader of a
+// given reliability, matched with the writers it is given, that prints each
+// sample it gets as "reader ID writer ID sn N HEX".
+#ifndef RTPS_READER_H
+#define RTPS_READER_H
+
+#include <stdio.h>
+
+#include <vector>
+
+#include "rtps/common/types.h"
+
+namespace rtps {
+
+struct SubmessageHeartbeat;
+
+class ReaderCacheChange {
+ public:
+  const ChangeKind_t kind;
+  const DataSize_t size;
+  const Guid_t writerGuid;
+  const SequenceNumber_t sn;
+
+  ReaderCacheChange(ChangeKind_t kind, Guid_t& writerGuid, SequenceNumber_t sn,
+                    const uint8_t* data, DataSize_t size)
+      : kind(kind), size(size), writerGuid(writerGuid), sn(sn), data_(data) {}
+  const uint8_t* getData() const { return data_; }
+
+ private:
+  const uint8_t* data_;
+};
+
+struct ReaderAttributes {
+  Guid_t endpointGuid;
+  ReliabilityKind_t reliabilityKind;
+};
+
+class Reader {
+ public:
+  ReaderAttributes m_attributes;
+
+  Reader(const Guid_t& guid, ReliabilityKind_t reliability, const std::vector<Guid_t>& writers)
+      : m_attributes{guid, reliability}, writers_(writers) {}
+
+  void newChange(const ReaderCacheChange& change) {
+    printf("reader %02x writer %02x sn %u ", m_attributes.endpointGuid.entityId.entityKey[2],
+           change.writerGuid.entityId.entityKey[2], static_cast<unsigned>(change.sn.low));
+    for (DataSize_t i = 0; i < change.size; ++i) printf("%02x", change.getData()[i]);
+    printf("\n");
+  }
+  bool onNewHeartbeat(const SubmessageHeartbeat&, const GuidPrefix_t&) { return true; }
+  bool knowWriterId(const Guid_t& guid) const {
+    for (size_t i = 0; i < writers_.size(); ++i)
+      if (writers_[i] == guid) return true;
+    return false;
+  }
+
+ private:
+  std::vector<Guid_t> writers_;
+};
+
+}  // namespace rtps
+
+#endif  // RTPS_READER_H
