@@ -374,7 +374,17 @@ def _add_mros2_board(parser, required):
                              'against the largest sample of each subscribed type')
     parser.add_argument('--mros2-root', metavar='DIR',
                         help="the firmware's mros2 checkout: whether its Publisher has a writer "
-                             'of its own')
+                             'of its own and whether it takes samples in fragments')
+    _add_peer_max_message(parser)
+
+
+def _add_peer_max_message(parser):
+    from colcon_mros.mros2.rules import PEER_MAX_MESSAGE
+    parser.add_argument('--peer-max-message', metavar='BYTES', type=int,
+                        default=PEER_MAX_MESSAGE,
+                        help="the largest datagram the ROS side sends: its transport's "
+                             'maxMessageSize (default %d, Fast DDS\' UDP default); a larger '
+                             'sample comes in fragments of up to that' % PEER_MAX_MESSAGE)
 
 
 def _add_mros2_storage(parser):
@@ -448,6 +458,7 @@ def _add_mros2_pc(subparsers):
                              % DEFAULT_RECEIVE_LIMIT)
     parser.add_argument('--mros2-root', metavar='DIR',
                         help='the mros2 checkout, with its embeddedRTPS (default: MROS2_ROOT)')
+    _add_peer_max_message(parser)
     parser.add_argument('--lwipopts', metavar='FILE',
                         help="the port's lwipopts.h: the tcpip thread's stack size "
                              '(TCPIP_THREAD_STACKSIZE; default 1024 bytes)')
@@ -523,7 +534,8 @@ def _generate(options):
 
 def _mros2_board(options):
     from colcon_mros.export.mros2_export import Board
-    return Board(options.rtps_config, options.receive_limit, options.mros2_root)
+    return Board(options.rtps_config, options.receive_limit, options.mros2_root,
+                 options.peer_max_message)
 
 
 def _definition_places(options):
@@ -707,7 +719,8 @@ def _mros2_pc(options):
     program = build(Mros2PcBuild(
         app_dir=options.app_dir, rtps_config=options.rtps_config,
         mros2_root=options.mros2_root, receive_limit=options.receive_limit,
-        publish=options.publish, subscribe=options.subscribe, workspaces=workspaces,
+        peer_max_message=options.peer_max_message, publish=options.publish,
+        subscribe=options.subscribe, workspaces=workspaces,
         prefixes=prefixes, storage=options.storage, option_files=options.option_files,
         target=options.target, sanitize=options.sanitize, hardened=options.hardened,
         patches=tuple(options.patches), build_dir=options.build_dir,

@@ -23,7 +23,8 @@ from colcon_mros.core.storage import storage_for
 from colcon_mros.errors import GenmrosError, close_match
 from colcon_mros.mros2 import render
 from colcon_mros.mros2.endpoints import parse_endpoints
-from colcon_mros.mros2.fit import Fit, PublisherWriter, receive_limit
+from colcon_mros.mros2.fit import Fit, Mros2Checkout, receive_limit
+from colcon_mros.mros2.rules import PEER_MAX_MESSAGE
 from colcon_mros.ros2.interfaces import all_packages, where_packages_come_from
 from colcon_mros.ros2.model import ModelBuilder
 
@@ -93,12 +94,15 @@ def _within(path, directory):
 class Board:
     """What the fit check reads of the board: its rtps/config.h (None: no
     check), the receive limit as given (--receive-limit: bytes or
-    FILE:NAME) and the user's mros2 checkout (or None)."""
+    FILE:NAME), the user's mros2 checkout (or None), and the largest
+    datagram the ROS side sends (--peer-max-message)."""
 
-    def __init__(self, rtps_config=None, receive_limit_text=None, mros2_root=None):
+    def __init__(self, rtps_config=None, receive_limit_text=None, mros2_root=None,
+                 peer_max_message=PEER_MAX_MESSAGE):
         self.rtps_config = rtps_config
         self.receive_limit_text = receive_limit_text
         self.mros2_root = mros2_root
+        self.peer_max_message = peer_max_message
 
     def fit(self, endpoints, notes=()):
         """The Fit of endpoints to this board, with notes on their names."""
@@ -108,7 +112,8 @@ class Board:
             'include/rtps/config.h, or its own)')
         return Fit(endpoints, settings,
                    receive_limit(self.receive_limit_text),
-                   PublisherWriter(self.mros2_root) if self.mros2_root else None, notes)
+                   Mros2Checkout(self.mros2_root) if self.mros2_root else None, notes,
+                   self.peer_max_message)
 
 
 def firmware_fit(board, workspaces=(), prefixes=None, publish=(), subscribe=(), storage='heap',
@@ -141,7 +146,7 @@ def export_firmware(output_dir, workspaces=(), prefixes=None, package_names=(), 
     files = render.support_headers()
     files.update(render_types(contained, services))
     if endpoints:
-        files.update(render.templates_header(endpoints))
+        files.update(render.templates_header(endpoints, fit.board_requirements if fit else ()))
     changed, removed = write_tree(
         output_dir, files, drop=lambda relative: is_generated(os.path.join(output_dir, relative)))
     return Mros2Export([m for m in contained if m.kind == 'msg'], services, changed, removed,

@@ -6,8 +6,11 @@ and a type each, or a type alone (then the topic rules are skipped, and the
 check says so). The settings are the board's ``rtps/config.h``
 (:func:`colcon_mros.core.settings.read_settings`), the receive limit of its
 network stack (a setting read from the port's headers, or a number given),
-and, where the user's mros2 checkout is known, whether its ``Publisher``
-has a writer of its own. Each :mod:`.rules` requirement that a setting
+the largest datagram the ROS side sends (``--peer-max-message``: its
+transport's setting, which nothing on the board can read), and, where the
+user's mros2 checkout is known, whether its ``Publisher`` has a writer of
+its own and whether it takes samples in fragments (the patch
+data-frag-for-best-effort-readers). Each :mod:`.rules` requirement that a setting
 does not meet is one line naming the setting, its file and line, the value
 it needs and the value it has; a need only the target's compiler can count
 is left to templates.hpp's static_asserts, rendered from the same rules.
@@ -19,26 +22,41 @@ import re
 from colcon_mros.core.settings import GivenSetting, misfit_line, read_settings
 from colcon_mros.errors import GenmrosError, GenmrosProblems
 from colcon_mros.mros2.endpoints import PUBLISH, SUBSCRIBE, count, messages, topics_known
-from colcon_mros.mros2.rules import (CONFIG_HEADER, DISCOVERY_ANNOUNCEMENT, SETTINGS,
-                                     largest_datagram, requirements)
+from colcon_mros.mros2.rules import (CONFIG_HEADER, DATA_FRAG_PATCH, DISCOVERY_ANNOUNCEMENT,
+                                     ENCAPSULATION, FRAGMENT_BUFFER, FRAGMENT_DEFAULTS,
+                                     PEER_MAX_MESSAGE, SETTINGS, TYPENAME_MAX,
+                                     fragment_buffer_requirements, largest_datagram,
+                                     requirements)
 
 # mros2's public header, where its Publisher class is declared.
 MROS2_HEADER = os.path.join('include', 'mros2.h')
+# embeddedRTPS' receiver, whose header declares the fragment buffers where the patch is in.
+RECEIVER_HEADER = os.path.join('embeddedRTPS', 'include', 'rtps', 'messages',
+                               'MessageReceiver.h')
 _PUBLISHER_CLASS = re.compile(r'^\s*class\s+Publisher\s*(?:\{|$)')
 _WRITER_MEMBER = re.compile(r'\brtps::Writer\s*\*\s*\w+\s*(?:=[^;]*)?;')
+_FRAGMENT_BUFFER = re.compile(r'\b%s\b' % FRAGMENT_BUFFER)
+_ADD_PATCH = ' (genmros mros2-harden)'
 
 
-class PublisherWriter:
-    """Whether the user's mros2 gives each Publisher a writer of its own
-    (has_writer), read from its include/mros2.h, and where that class is."""
+def _lines(path):
+    try:
+        with open(path, encoding='utf-8', errors='replace') as stream:
+            return stream.read().splitlines()
+    except OSError as error:
+        raise GenmrosError('cannot read the mros2 checkout: %s' % error.strerror, path)
+
+
+class Mros2Checkout:
+    """What the fit check reads of the user's mros2: whether it gives each Publisher a
+    writer of its own (has_writer; the class is at path, line) and whether its
+    embeddedRTPS takes samples in fragments (takes_data_frag)."""
 
     def __init__(self, mros2_root):
         self.path = os.path.join(mros2_root, MROS2_HEADER)
-        try:
-            with open(self.path, encoding='utf-8', errors='replace') as stream:
-                lines = stream.read().splitlines()
-        except OSError as error:
-            raise GenmrosError('cannot read the mros2 checkout: %s' % error.strerror, self.path)
+        lines = _lines(self.path)
+        self.takes_data_frag = any(_FRAGMENT_BUFFER.search(line)
+                                   for line in _lines(os.path.join(mros2_root, RECEIVER_HEADER)))
         starts = [number for number, line in enumerate(lines) if _PUBLISHER_CLASS.match(line)]
         if not starts:
             raise GenmrosError('declares no class Publisher; is this an mros2 checkout?',
@@ -55,13 +73,15 @@ class PublisherWriter:
 class Fit:
     """Endpoints against settings ({name: Setting} of the board's
     rtps/config.h); receive_limit: a Setting of the largest datagram the
-    board's network stack takes, or None; publisher_writer: a
-    PublisherWriter, or None where the mros2 checkout is not known.
-    misfits and warnings are the lines; notes say what was not checked,
-    after name_notes (what the app must do with the topic names)."""
+    board's network stack takes, or None; checkout: an Mros2Checkout, or
+    None where the mros2 checkout is not known; peer_max_message: the
+    largest datagram the ROS side sends. misfits and warnings are the
+    lines; notes say what was not checked, after name_notes (what the app
+    must do with the topic names); board_requirements are the rules that
+    hold for this board only, for templates.hpp."""
 
-    def __init__(self, endpoints, settings, receive_limit=None, publisher_writer=None,
-                 name_notes=()):
+    def __init__(self, endpoints, settings, receive_limit=None, checkout=None,
+                 name_notes=(), peer_max_message=PEER_MAX_MESSAGE):
         self.endpoints = endpoints
         self.settings = settings
         self.misfits = []
@@ -71,58 +91,113 @@ class Fit:
             self.notes.append('topics not given for every endpoint (--publish/--subscribe '
                               'TOPIC:TYPE): topic names not checked, one endpoint counted per '
                               'type')
-        for requirement in requirements(endpoints):
+        self.peer = GivenSetting("the ROS side's largest message", peer_max_message,
+                                 '--peer-max-message %d' % peer_max_message)
+        takes_data_frag = checkout is not None and checkout.takes_data_frag
+        self.board_requirements = fragment_buffer_requirements(
+            endpoints, peer_max_message) if takes_data_frag else []
+        for requirement in requirements(endpoints) + self.board_requirements:
             if requirement.needed is None:  # templates.hpp's static_assert counts it
                 continue
             setting = self._setting(requirement.setting)
             if setting.value < requirement.needed:
                 self.misfits.append(misfit_line(setting, requirement.subject, requirement.what,
                                                 requirement.needed))
-        self._check_receive_limit(messages(endpoints, SUBSCRIBE), receive_limit)
-        self._check_publishers(count(endpoints, PUBLISH), publisher_writer)
+        subscribed = messages(endpoints, SUBSCRIBE)
+        self._check_receive_limit(subscribed, receive_limit, takes_data_frag)
+        if subscribed and checkout is None:
+            self.notes.append('whether this mros2 takes samples in fragments (the mros2 patch %s) '
+                              'is not known here (--mros2-root): checked as without it'
+                              % DATA_FRAG_PATCH)
+        self._check_publishers(count(endpoints, PUBLISH), checkout)
 
     def _setting(self, name):
+        if name not in self.settings and name in FRAGMENT_DEFAULTS:
+            return GivenSetting(name, FRAGMENT_DEFAULTS[name], '%s, which sets no %s (%s: %d)' % (
+                self._setting(TYPENAME_MAX).path, name, DATA_FRAG_PATCH,
+                FRAGMENT_DEFAULTS[name]))
         if name not in self.settings:
             raise GenmrosError('the board settings given define no %s (give the rtps/config.h '
                                'the firmware compiles with)' % name)
         return self.settings[name]
 
-    def _check_receive_limit(self, subscribed, limit):
+    def _check_receive_limit(self, subscribed, limit, takes_data_frag):
+        """Each subscribed sample in the datagrams it comes in: one, or (with the patch, over
+        the peer's largest message) fragments of up to that."""
+        peer = self.peer.value
         if limit is None:
             if subscribed:
                 self.notes.append('no receive limit given (--receive-limit): the largest '
                                   'samples not checked')
-            return
-        if limit.value < DISCOVERY_ANNOUNCEMENT:
+            if not takes_data_frag:
+                return
+        elif limit.value < DISCOVERY_ANNOUNCEMENT:
             self.warnings.append(
                 "%s: %s %d is below %d bytes, a ROS 2 node's SPDP announcement as Fast DDS 3 "
                 'sends it (measured; it grows with the host and user names): the board '
                 'discovers no such node' % (limit.where(), limit.name, limit.value,
                                             DISCOVERY_ANNOUNCEMENT))
+        if takes_data_frag:
+            way_out = ("; or have the ROS side send it in fragments of at most that: its "
+                       "transport's maxMessageSize and --peer-max-message (docs/mros2.md)")
+        else:
+            way_out = '; or apply the mros2 patch %s%s to take it in fragments' % (
+                DATA_FRAG_PATCH, _ADD_PATCH)
+        in_fragments = []
         for message in subscribed:
             datagram = largest_datagram(message)
             if datagram is None:
-                self.warnings.append(
-                    '%s: %s: a sample has no largest size (unbounded): one larger than %s %d '
-                    'does not arrive; bounded storage gives the exact need'
-                    % (limit.where(), message.full_name, limit.name, limit.value))
-            elif datagram > limit.value:
+                self.warnings.append(self._unbounded(message, limit, takes_data_frag))
+            elif datagram > peer and takes_data_frag:
+                in_fragments.append(message.full_name)
+            elif limit is not None and datagram > limit.value:
                 self.misfits.append(misfit_line(
                     limit, message.full_name, 'a sample of up to %d bytes in one datagram, RTPS '
-                    'around it' % message.max_size, datagram))
+                    'around it' % message.max_size, datagram) + way_out)
+            elif datagram > peer:
+                self.misfits.append(misfit_line(
+                    self.peer, message.full_name, 'a sample of up to %d bytes in one datagram, '
+                    'RTPS around it' % message.max_size, datagram) +
+                    '; the ROS side sends a larger one in fragments, which this mros2 skips: '
+                    "raise its transport's maxMessageSize, or apply the mros2 patch %s%s"
+                    % (DATA_FRAG_PATCH, _ADD_PATCH))
+        if in_fragments and limit is not None and peer > limit.value:
+            self.misfits.append(misfit_line(
+                limit, 'the ROS side', 'its largest message (--peer-max-message %d), in which '
+                'it sends %s in fragments,' % (peer, ', '.join(in_fragments)), peer) +
+                "; or give the ROS side's transport a maxMessageSize of at most %d and "
+                '--peer-max-message to match (docs/mros2.md)' % limit.value)
 
-    def _check_publishers(self, count, publisher_writer):
+    def _unbounded(self, message, limit, takes_data_frag):
+        """The warning for a subscribed message with no largest sample."""
+        head = '%s: a sample has no largest size (unbounded): ' % message.full_name
+        tail = '; bounded storage gives the exact need'
+        if takes_data_frag:
+            buffer = self._setting(FRAGMENT_BUFFER)
+            lost = ''
+            if limit is not None and self.peer.value > limit.value:
+                lost = 'one of %d to %d bytes in one datagram is cut (%s %d), ' % (
+                    limit.value + 1, self.peer.value, limit.name, limit.value)
+            return '%s: %s%sone larger than %s %d less its encapsulation (%d) is refused and ' \
+                'counted (mros2::Subscriber::refused_fragmented_samples)%s' % (
+                    buffer.where(), head, lost, FRAGMENT_BUFFER, buffer.value, ENCAPSULATION,
+                    tail)
+        return '%s: %sone larger than %s %d does not arrive%s; or apply the mros2 patch %s%s ' \
+            'to take it in fragments' % (limit.where(), head, limit.name, limit.value, tail,
+                                         DATA_FRAG_PATCH, _ADD_PATCH)
+
+    def _check_publishers(self, count, checkout):
         if count < 2:
             return
-        if publisher_writer is None:
+        if checkout is None:
             self.notes.append('%d publishers: whether this mros2 gives each its own writer is '
                               'not known here (--mros2-root)' % count)
-        elif not publisher_writer.has_writer:
+        elif not checkout.has_writer:
             self.misfits.append(
                 "%s:%d: the firmware: its %d publishers need a Publisher with a writer of its "
                 "own; this mros2 sends every message through the last one created "
                 "(mros2::pub_ptr): apply genmros' mros2 patch set (genmros mros2-harden)"
-                % (publisher_writer.path, publisher_writer.line, count))
+                % (checkout.path, checkout.line, count))
 
     def refuse(self):
         """Raise the misfits as one error line each."""

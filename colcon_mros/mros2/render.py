@@ -48,14 +48,16 @@ def service_header(service):
         traits_text=_render('type_name.hpp.em', messages=[view.request, view.response]))}
 
 
-def templates_header(endpoints):
+def templates_header(endpoints, board_requirements=()):
     """mros2's templates.hpp: the explicit instantiations of its publish and
     subscribe calls for the message types a firmware's endpoints use, and
-    the rules' static_asserts on the board's rtps::Config."""
+    the rules' static_asserts on the board's rtps::Config, with
+    board_requirements (those of the fit check's board: its mros2 and the
+    ROS side)."""
     publish = [CppMessageName(m) for m in messages(endpoints, PUBLISH)]
     subscribe = [CppMessageName(m) for m in messages(endpoints, SUBSCRIBE)]
     return {TEMPLATES_HEADER: _render(
         'templates.hpp.em', headers=sorted({name.header for name in publish + subscribe}),
-        requirements=requirements(endpoints),
+        requirements=requirements(endpoints) + list(board_requirements),
         stack_margin_macro=READER_STACK_MARGIN_MACRO, stack_margin=READER_STACK_MARGIN,
         publish=publish, subscribe=subscribe)}

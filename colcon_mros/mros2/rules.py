@@ -47,6 +47,18 @@ DATAGRAM_OVERHEAD = 20 + 16 + 12 + 24 + 4
 # Fast DDS 3 (544 to 572 bytes: it carries the host's name, the user's and the process id):
 # a board whose network stack takes less discovers no such node.
 DISCOVERY_ANNOUNCEMENT = 572
+# The largest datagram the ROS side sends unless told otherwise: Fast DDS' UDP transport's
+# maxMessageSize default. A larger sample goes out as DATA_FRAG submessages, each in a
+# datagram of at most this.
+PEER_MAX_MESSAGE = 65500
+# The mros2 patch that takes DATA_FRAG (library_tools/mros2/patches), the settings it adds
+# to rtps::Config and its defaults where the board's config sets neither: no buffer.
+DATA_FRAG_PATCH = 'data-frag-for-best-effort-readers'
+FRAGMENT_BUFFER = 'FRAGMENT_BUFFER_SIZE'
+FRAGMENT_BUFFERS = 'FRAGMENT_BUFFERS'
+FRAGMENT_DEFAULTS = {FRAGMENT_BUFFER: 0, FRAGMENT_BUFFERS: 1}
+# What a DATA_FRAG's sampleSize counts besides the CDR image: the encapsulation header.
+ENCAPSULATION = 4
 # The reader thread's stack below the message: embeddedRTPS' receive path
 # (the thread pool's loop, the domain, the participant, the message
 # receiver, the reader) and mros2's callback frame besides its T msg. A
@@ -132,3 +144,27 @@ def largest_datagram(message):
     if message.max_size is None:
         return None
     return DATAGRAM_OVERHEAD + message.max_size + (-message.max_size % 4)
+
+
+def largest_serialized_sample(message):
+    """A DATA_FRAG's largest sampleSize for message: the encapsulation and the image
+    padded to 4."""
+    return ENCAPSULATION + message.max_size + (-message.max_size % 4)
+
+
+def fragmented(endpoints, peer_max_message):
+    """The subscribed bounded messages whose largest sample the ROS side sends in fragments:
+    its datagram would be over peer_max_message."""
+    return [message for message in messages(endpoints, SUBSCRIBE)
+            if message.max_size is not None and largest_datagram(message) > peer_max_message]
+
+
+def fragment_buffer_requirements(endpoints, peer_max_message):
+    """With the patch DATA_FRAG_PATCH: each message the ROS side fragments, put together in
+    a buffer of FRAGMENT_BUFFER_SIZE bytes."""
+    return [Requirement(
+        FRAGMENT_BUFFER, message.full_name,
+        'a sample of up to %d bytes and its encapsulation, put together from the fragments '
+        'the ROS side sends (over --peer-max-message %d)' % (message.max_size, peer_max_message),
+        largest_serialized_sample(message))
+        for message in fragmented(endpoints, peer_max_message)]

@@ -11,6 +11,7 @@ small values so that each rule has a misfit.
 import os
 
 from colcon_mros.export.mros2_export import Board, firmware_fit
+from colcon_mros.mros2.render import templates_header
 
 from conftest import run_genmros
 from testing.ros_paths import prefix_arguments, ros2_prefixes
@@ -48,7 +49,14 @@ namespace mros2 {
   };
 }
 '''
+# embeddedRTPS' receiver header as it is, and with the patch data-frag-for-best-effort-readers
+# (the lines the fit check looks for).
+RECEIVER_AS_IT_IS = 'namespace rtps {\nclass MessageReceiver {\n};\n}\n'
+RECEIVER_PATCHED = ('namespace rtps {\nnamespace FragmentDefaults {\n'
+                    'const DataSize_t FRAGMENT_BUFFER_SIZE = 0;\n}\n}\n')
 TIF = 'test_interface_files/msg/'
+WAY_OUT = ('; or apply the mros2 patch data-frag-for-best-effort-readers (genmros mros2-harden) '
+           'to take it in fragments')
 
 
 def _write(path, text):
@@ -57,12 +65,16 @@ def _write(path, text):
     return str(path)
 
 
-def _fit(tmp_path, publish, subscribe, config=CONFIG, limit=None, publisher=None):
+def _fit(tmp_path, publish, subscribe, config=CONFIG, limit=None, publisher=None,
+         receiver=RECEIVER_AS_IT_IS, peer_max_message=65500):
     mros2_root = None
     if publisher is not None:
         _write(tmp_path / 'mros2' / 'include' / 'mros2.h', publisher)
+        _write(tmp_path / 'mros2' / 'embeddedRTPS' / 'include' / 'rtps' / 'messages' /
+               'MessageReceiver.h', receiver)
         mros2_root = str(tmp_path / 'mros2')
-    board = Board(_write(tmp_path / 'rtps' / 'config.h', config), limit, mros2_root)
+    board = Board(_write(tmp_path / 'rtps' / 'config.h', config), limit, mros2_root,
+                  peer_max_message)
     return firmware_fit(board, prefixes=ros2_prefixes(), publish=publish, subscribe=subscribe)
 
 
@@ -95,7 +107,7 @@ def test_each_rule_names_the_setting_its_line_and_the_value_it_needs(tmp_path):
         "participant's SPDP one needs NUM_STATELESS_READERS >= 3 (it is 2)" % config,
         # 48 bytes of BasicTypes, RTPS' 76 around them.
         '--receive-limit 100: test_interface_files/msg/BasicTypes: a sample of up to 48 bytes '
-        'in one datagram, RTPS around it needs the receive limit >= 124 (it is 100)',
+        'in one datagram, RTPS around it needs the receive limit >= 124 (it is 100)' + WAY_OUT,
         "%s:3: the firmware: its 2 publishers need a Publisher with a writer of its own; this "
         "mros2 sends every message through the last one created (mros2::pub_ptr): apply "
         "genmros' mros2 patch set (genmros mros2-harden)" % header,
@@ -106,7 +118,7 @@ def test_each_rule_names_the_setting_its_line_and_the_value_it_needs(tmp_path):
         'names): the board discovers no such node',
         '--receive-limit 100: test_interface_files/msg/UnboundedSequences: a sample has no '
         'largest size (unbounded): one larger than the receive limit 100 does not arrive; '
-        'bounded storage gives the exact need']
+        'bounded storage gives the exact need' + WAY_OUT]
     assert fit.notes == []
 
 
@@ -128,6 +140,9 @@ def test_types_alone_skip_the_topic_rules_and_say_what_was_not_checked(tmp_path)
         'topics not given for every endpoint (--publish/--subscribe TOPIC:TYPE): topic names not '
         'checked, one endpoint counted per type',
         'no receive limit given (--receive-limit): the largest samples not checked',
+        'whether this mros2 takes samples in fragments (the mros2 patch '
+        'data-frag-for-best-effort-readers) is not known here (--mros2-root): checked as '
+        'without it',
         '2 publishers: whether this mros2 gives each its own writer is not known here '
         '(--mros2-root)']
 
@@ -139,7 +154,7 @@ def test_the_receive_limit_is_read_from_the_ports_setting(tmp_path):
                config=CONFIG.replace('= 40;', '= 64;'), limit=options + ':RECEIVE_BUFFER_SIZE')
     assert fit.misfits == [
         '%s:2: test_interface_files/msg/BasicTypes: a sample of up to 48 bytes in one datagram, '
-        'RTPS around it needs RECEIVE_BUFFER_SIZE >= 124 (it is 64)' % options]
+        'RTPS around it needs RECEIVE_BUFFER_SIZE >= 124 (it is 64)' % options + WAY_OUT]
 
 
 def test_genmros_mros2_fit_and_mros2_export_refuse_a_misfit(tmp_path):
@@ -171,3 +186,80 @@ def test_a_missing_rtps_config_says_which_file_and_what_to_give(tmp_path):
         "genmros: error: %s: cannot read the board's rtps/config.h (--rtps-config, "
         'RTPS_CONFIG): No such file or directory; give the rtps/config.h the firmware compiles '
         "with (the mros2 port's include/rtps/config.h, or its own)\n" % missing)
+
+
+# BoundedPlainSequences: up to 732 bytes (808 in one datagram, 736 as a DATA_FRAG's sample).
+LARGE, SMALL, UNBOUNDED = (TIF + name
+                           for name in ('BoundedPlainSequences', 'BasicTypes', 'Strings'))
+ROOMY_WRITERS = PUBLISHER_WITHOUT_WRITER.replace(
+    'std::string topic_name;', 'std::string topic_name;\n    rtps::Writer* writer;')
+
+
+def _fragment_fit(tmp_path, limit, peer_max_message, receiver, buffer=None):
+    config = _roomy().replace('= 64;', '= 80;')
+    if buffer is not None:
+        config = config.replace('}  // namespace Config',
+                                'const uint16_t FRAGMENT_BUFFER_SIZE = %d;\n'
+                                '}  // namespace Config' % buffer)
+    return _fit(tmp_path, [], ['large:' + LARGE, 'small:' + SMALL, 'text:' + UNBOUNDED],
+                config=config, limit=limit, publisher=ROOMY_WRITERS, receiver=receiver,
+                peer_max_message=peer_max_message)
+
+
+def test_with_the_patch_fragmented_samples_need_the_buffer(tmp_path):
+    config = str(tmp_path / 'rtps' / 'config.h')
+    default = ('%s, which sets no FRAGMENT_BUFFER_SIZE (data-frag-for-best-effort-readers: 0)'
+               % config)
+    fit = _fragment_fit(tmp_path, '1472', 600, RECEIVER_PATCHED)
+    assert fit.misfits == [
+        '%s: %s: a sample of up to 732 bytes and its encapsulation, put together from the '
+        'fragments the ROS side sends (over --peer-max-message 600) needs FRAGMENT_BUFFER_SIZE '
+        '>= 736 (it is 0)' % (default, LARGE)]
+    assert fit.warnings == [
+        '%s: %s: a sample has no largest size (unbounded): one larger than FRAGMENT_BUFFER_SIZE '
+        '0 less its encapsulation (4) is refused and counted '
+        '(mros2::Subscriber::refused_fragmented_samples); bounded storage gives the exact need'
+        % (default, UNBOUNDED)]
+    fit = _fragment_fit(tmp_path, '1472', 600, RECEIVER_PATCHED, buffer=736)
+    assert fit.misfits == [] and fit.notes == []
+    assert fit.warnings[0].startswith(
+        '%s:14: %s: a sample has no largest size (unbounded): one larger than '
+        'FRAGMENT_BUFFER_SIZE 736 less' % (config, UNBOUNDED))
+    templates = templates_header(fit.endpoints, fit.board_requirements)['templates.hpp']
+    assert ('static_assert(736 <= rtps::Config::FRAGMENT_BUFFER_SIZE,\n              "%s: a '
+            'sample of up to 732 bytes and its encapsulation, put together from the fragments '
+            'the ROS side sends (over --peer-max-message 600) needs '
+            'rtps::Config::FRAGMENT_BUFFER_SIZE >= 736 (rtps/config.h)");' % LARGE) in templates
+
+
+def test_with_the_patch_the_peers_message_must_fit_the_receive_limit(tmp_path):
+    fit = _fragment_fit(tmp_path, '600', 700, RECEIVER_PATCHED, buffer=736)
+    assert fit.misfits == [
+        "--receive-limit 600: the ROS side: its largest message (--peer-max-message 700), in "
+        'which it sends %s in fragments, needs the receive limit >= 700 (it is 600); or give the '
+        "ROS side's transport a maxMessageSize of at most 600 and --peer-max-message to match "
+        '(docs/mros2.md)' % LARGE]
+    assert fit.warnings[-1] == (
+        '%s:14: %s: a sample has no largest size (unbounded): one of 601 to 700 bytes in one '
+        'datagram is cut (the receive limit 600), one larger than FRAGMENT_BUFFER_SIZE 736 less '
+        'its encapsulation (4) is refused and counted '
+        '(mros2::Subscriber::refused_fragmented_samples); bounded storage gives the exact need'
+        % (tmp_path / 'rtps' / 'config.h', UNBOUNDED))
+    # sent whole by the ROS side (65500), over the limit
+    fit = _fragment_fit(tmp_path, '600', 65500, RECEIVER_PATCHED, buffer=736)
+    assert fit.misfits == [
+        '--receive-limit 600: %s: a sample of up to 732 bytes in one datagram, RTPS around it '
+        'needs the receive limit >= 808 (it is 600); or have the ROS side send it in fragments '
+        "of at most that: its transport's maxMessageSize and --peer-max-message (docs/mros2.md)"
+        % LARGE]
+
+
+def test_without_the_patch_a_sample_the_peer_fragments_is_a_misfit(tmp_path):
+    fit = _fragment_fit(tmp_path, '1472', 600, RECEIVER_AS_IT_IS)
+    assert fit.misfits == [
+        "--peer-max-message 600: %s: a sample of up to 732 bytes in one datagram, RTPS around "
+        "it needs the ROS side's largest message >= 808 (it is 600); the ROS side sends a "
+        "larger one in fragments, which this mros2 skips: raise its transport's "
+        'maxMessageSize, or apply the mros2 patch data-frag-for-best-effort-readers (genmros '
+        'mros2-harden)' % LARGE]
+    assert fit.board_requirements == []

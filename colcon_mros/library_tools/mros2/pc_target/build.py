@@ -28,6 +28,7 @@ from colcon_mros.errors import GenmrosError
 from colcon_mros.library_tools.mros2.patches import check_root, mros2_patches
 from colcon_mros.library_tools.pc_build import (SANITIZER_FLAGS, check_tools, flags_stamp,
                                                 patched_copy, runner)
+from colcon_mros.mros2.rules import PEER_MAX_MESSAGE
 
 TARGET_DIR = os.path.dirname(os.path.abspath(__file__))
 MAKEFILE = os.path.join(TARGET_DIR, 'mros2_pc.mk')
@@ -73,6 +74,7 @@ class Mros2PcBuild:
     rtps_config: str
     mros2_root: str = None  # default: MROS2_ROOT
     receive_limit: str = DEFAULT_RECEIVE_LIMIT
+    peer_max_message: int = PEER_MAX_MESSAGE  # the ROS side's largest datagram
     publish: tuple = ()  # default: the app's own create_publisher calls
     subscribe: tuple = ()
     workspaces: tuple = ()
@@ -336,7 +338,8 @@ def build(request):
                           ['subscribe %s' % e for e in subscribe]), flush=True)
     config = BoardConfig(request.rtps_config, root)
     limit = receive_limit(request.receive_limit)
-    board = Board(config.path, request.receive_limit, root) if request.fit_check else None
+    board = Board(config.path, request.receive_limit, root,
+                  request.peer_max_message) if request.fit_check else None
     export_firmware(os.path.join(build_dir, 'include'), request.workspaces, request.prefixes,
                     (), (), publish, subscribe, request.storage, request.option_files, board)
     if config.change:
