@@ -39,9 +39,12 @@ def main():
         node.create_subscription(message_class(entry['type']), entry['topic'],
                                  lambda raw, topic=entry['topic']: received[topic].append(
                                      bytes(raw).hex()), qos, raw=True)
-    outgoing = [(node.create_publisher(message_class(entry['type']), entry['topic'], qos),
-                 bytes.fromhex(sample))
-                for entry in job['publish'] for sample in entry['samples']]
+    # One publisher (one writer) per topic, as a node has.
+    publishers = [node.create_publisher(message_class(entry['type']), entry['topic'], qos)
+                  for entry in job['publish']]
+    outgoing = [(publisher, bytes.fromhex(sample))
+                for publisher, entry in zip(publishers, job['publish'])
+                for sample in entry['samples']]
     print('peer ready', file=sys.stderr, flush=True)
     deadline = time.monotonic() + job['timeout']
     sent = 0

@@ -25,7 +25,7 @@ from colcon_mros.mros2.endpoints import PUBLISH, SUBSCRIBE, count, messages, top
 from colcon_mros.mros2.rules import (CONFIG_HEADER, DATA_FRAG_PATCH, DISCOVERY_ANNOUNCEMENT,
                                      ENCAPSULATION, FRAGMENT_BUFFER, FRAGMENT_DEFAULTS,
                                      PEER_MAX_MESSAGE, SETTINGS, TYPENAME_MAX,
-                                     fragment_buffer_requirements, largest_datagram,
+                                     data_frag_requirements, largest_datagram,
                                      requirements)
 
 # mros2's public header, where its Publisher class is declared.
@@ -94,7 +94,7 @@ class Fit:
         self.peer = GivenSetting("the ROS side's largest message", peer_max_message,
                                  '--peer-max-message %d' % peer_max_message)
         takes_data_frag = checkout is not None and checkout.takes_data_frag
-        self.board_requirements = fragment_buffer_requirements(
+        self.board_requirements = data_frag_requirements(
             endpoints, peer_max_message) if takes_data_frag else []
         for requirement in requirements(endpoints) + self.board_requirements:
             if requirement.needed is None:  # templates.hpp's static_assert counts it

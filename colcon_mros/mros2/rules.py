@@ -59,6 +59,12 @@ FRAGMENT_BUFFERS = 'FRAGMENT_BUFFERS'
 FRAGMENT_DEFAULTS = {FRAGMENT_BUFFER: 0, FRAGMENT_BUFFERS: 1}
 # What a DATA_FRAG's sampleSize counts besides the CDR image: the encapsulation header.
 ENCAPSULATION = 4
+# What of the ROS side's largest message is not fragment: Fast DDS 3 (rclpy, the ROS 2
+# wheels) sent fragments of 1296 bytes under a maxMessageSize of 1472, 3920 under 4096.
+FRAGMENT_OVERHEAD = 176
+# The reader thread's queue of received datagrams: the fragments of a sample that arrive
+# while the thread is busy (in a callback, say) wait there, and those over it are dropped.
+READER_QUEUE = 'THREAD_POOL_WORKLOAD_QUEUE_LENGTH'
 # The reader thread's stack below the message: embeddedRTPS' receive path
 # (the thread pool's loop, the domain, the participant, the message
 # receiver, the reader) and mros2's callback frame besides its T msg. A
@@ -159,12 +165,22 @@ def fragmented(endpoints, peer_max_message):
             if message.max_size is not None and largest_datagram(message) > peer_max_message]
 
 
-def fragment_buffer_requirements(endpoints, peer_max_message):
+def data_frag_requirements(endpoints, peer_max_message):
     """With the patch DATA_FRAG_PATCH: each message the ROS side fragments, put together in
-    a buffer of FRAGMENT_BUFFER_SIZE bytes."""
-    return [Requirement(
-        FRAGMENT_BUFFER, message.full_name,
-        'a sample of up to %d bytes and its encapsulation, put together from the fragments '
-        'the ROS side sends (over --peer-max-message %d)' % (message.max_size, peer_max_message),
-        largest_serialized_sample(message))
-        for message in fragmented(endpoints, peer_max_message)]
+    a buffer of FRAGMENT_BUFFER_SIZE bytes, its fragments queued for the reader thread."""
+    fragment = peer_max_message - FRAGMENT_OVERHEAD
+    found = []
+    for message in fragmented(endpoints, peer_max_message):
+        sample = largest_serialized_sample(message)
+        found.append(Requirement(
+            FRAGMENT_BUFFER, message.full_name,
+            'a sample of up to %d bytes and its encapsulation, put together from the fragments '
+            'the ROS side sends (over --peer-max-message %d)' % (message.max_size,
+                                                                 peer_max_message), sample))
+        found.append(Requirement(
+            READER_QUEUE, message.full_name,
+            "the fragments of a sample of up to %d bytes (%d bytes each: --peer-max-message %d "
+            "less %d), queued while the reader thread is busy" % (
+                message.max_size, fragment, peer_max_message, FRAGMENT_OVERHEAD),
+            -(-sample // fragment)))
+    return found

@@ -195,8 +195,10 @@ ROOMY_WRITERS = PUBLISHER_WITHOUT_WRITER.replace(
     'std::string topic_name;', 'std::string topic_name;\n    rtps::Writer* writer;')
 
 
-def _fragment_fit(tmp_path, limit, peer_max_message, receiver, buffer=None):
-    config = _roomy().replace('= 64;', '= 80;')
+def _fragment_fit(tmp_path, limit, peer_max_message, receiver, buffer=None, queue=20):
+    config = _roomy().replace('= 64;', '= 80;').replace(
+        '}  // namespace Config',
+        'const int THREAD_POOL_WORKLOAD_QUEUE_LENGTH = %d;\n}  // namespace Config' % queue)
     if buffer is not None:
         config = config.replace('}  // namespace Config',
                                 'const uint16_t FRAGMENT_BUFFER_SIZE = %d;\n'
@@ -210,11 +212,15 @@ def test_with_the_patch_fragmented_samples_need_the_buffer(tmp_path):
     config = str(tmp_path / 'rtps' / 'config.h')
     default = ('%s, which sets no FRAGMENT_BUFFER_SIZE (data-frag-for-best-effort-readers: 0)'
                % config)
-    fit = _fragment_fit(tmp_path, '1472', 600, RECEIVER_PATCHED)
+    fit = _fragment_fit(tmp_path, '1472', 600, RECEIVER_PATCHED, queue=1)
     assert fit.misfits == [
         '%s: %s: a sample of up to 732 bytes and its encapsulation, put together from the '
         'fragments the ROS side sends (over --peer-max-message 600) needs FRAGMENT_BUFFER_SIZE '
-        '>= 736 (it is 0)' % (default, LARGE)]
+        '>= 736 (it is 0)' % (default, LARGE),
+        # 736 bytes in fragments of 424
+        '%s:14: %s: the fragments of a sample of up to 732 bytes (424 bytes each: '
+        '--peer-max-message 600 less 176), queued while the reader thread is busy needs '
+        'THREAD_POOL_WORKLOAD_QUEUE_LENGTH >= 2 (it is 1)' % (config, LARGE)]
     assert fit.warnings == [
         '%s: %s: a sample has no largest size (unbounded): one larger than FRAGMENT_BUFFER_SIZE '
         '0 less its encapsulation (4) is refused and counted '
@@ -223,7 +229,7 @@ def test_with_the_patch_fragmented_samples_need_the_buffer(tmp_path):
     fit = _fragment_fit(tmp_path, '1472', 600, RECEIVER_PATCHED, buffer=736)
     assert fit.misfits == [] and fit.notes == []
     assert fit.warnings[0].startswith(
-        '%s:14: %s: a sample has no largest size (unbounded): one larger than '
+        '%s:15: %s: a sample has no largest size (unbounded): one larger than '
         'FRAGMENT_BUFFER_SIZE 736 less' % (config, UNBOUNDED))
     templates = templates_header(fit.endpoints, fit.board_requirements)['templates.hpp']
     assert ('static_assert(736 <= rtps::Config::FRAGMENT_BUFFER_SIZE,\n              "%s: a '
@@ -240,7 +246,7 @@ def test_with_the_patch_the_peers_message_must_fit_the_receive_limit(tmp_path):
         "ROS side's transport a maxMessageSize of at most 600 and --peer-max-message to match "
         '(docs/mros2.md)' % LARGE]
     assert fit.warnings[-1] == (
-        '%s:14: %s: a sample has no largest size (unbounded): one of 601 to 700 bytes in one '
+        '%s:15: %s: a sample has no largest size (unbounded): one of 601 to 700 bytes in one '
         'datagram is cut (the receive limit 600), one larger than FRAGMENT_BUFFER_SIZE 736 less '
         'its encapsulation (4) is refused and counted '
         '(mros2::Subscriber::refused_fragmented_samples); bounded storage gives the exact need'
