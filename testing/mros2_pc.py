@@ -46,6 +46,7 @@ FAST_DDS_PROFILE = """<?xml version="1.0" encoding="UTF-8"?>
         <transport_id>udp_within_the_board_limit</transport_id>
         <type>UDPv4</type>
         <maxMessageSize>%d</maxMessageSize>
+        <receiveBufferSize>4194304</receiveBufferSize>
       </transport_descriptor>
     </transport_descriptors>
     <participant profile_name="within_the_board_limit" is_default_profile="true">

@@ -42,20 +42,25 @@ def pytest_collection_modifyitems(config, items):
                 item.add_marker(skip)
 
 
-@pytest.fixture(autouse=True)
-def empy_takes_the_tests_stdout():
+def let_empy_take_stdout():
     """empy 3 wraps sys.stdout in a proxy when its first interpreter starts,
     and refuses to start another once sys.stdout has been replaced since.
     pytest's capture replaces it for every test; a genmros process, colcon's
     and rosidl's never do (tests/core/test_render.py runs two of them). So
-    each test lets its first interpreter wrap the stdout pytest gave it."""
+    the next interpreter may wrap the stdout pytest gives now (a fixture of
+    a wider scope, which runs before the test's own, calls this too)."""
     try:
         import em
     except ImportError:  # a test of a Python without ROS
-        yield
         return
     if not hasattr(sys.stdout, '_testProxy'):
         em.Interpreter._wasProxyInstalled = False
+
+
+@pytest.fixture(autouse=True)
+def empy_takes_the_tests_stdout():
+    """Each test lets its first empy interpreter wrap its stdout."""
+    let_empy_take_stdout()
     yield
 
 

@@ -23,11 +23,13 @@ import time
 import pytest
 
 from conftest import REPO
+from mros2_pc_boards import config_of, posix_root_or_skip, ros2_typestore
 from testing import mros2_pc
 from testing.mros2_posix import wire_bytes
 from user_checkouts import MROS2_ROOT
 
 pytestmark = [pytest.mark.needs_mros2, pytest.mark.slow]
+
 
 DISCOVERY = ('accept-fast-dds-3-discovery',)
 FIXTURE_APPS = os.path.join(REPO, 'tests', 'fixtures', 'mros2_pc_apps')
@@ -37,20 +39,12 @@ SANITIZER_REPORTS = ('AddressSanitizer', 'LeakSanitizer', 'runtime error:')
 
 @pytest.fixture(scope='module')
 def posix_root():
-    root = os.environ.get('MROS2_POSIX_ROOT')
-    if not root or not os.path.isfile(os.path.join(root, 'workspace', 'echoreply_string',
-                                                   'app.cpp')):
-        pytest.skip('needs mros2-posix (its workspace/ example apps and include/rtps/config.h):'
-                    ' set MROS2_POSIX_ROOT (docs/testing.md)')
-    if not os.path.isfile(os.path.join(mros2_pc.WHEELS_VENV, 'bin', 'python')):
-        pytest.skip('no %s (rclpy): run scripts/setup.sh --tests' % mros2_pc.WHEELS_VENV)
-    return root
+    return posix_root_or_skip()
 
 
 @pytest.fixture(scope='module')
 def typestore():
-    from rosbags.typesys import Stores, get_typestore
-    return get_typestore(Stores.ROS2_HUMBLE)
+    return ros2_typestore()
 
 
 @pytest.fixture(scope='module')
@@ -63,10 +57,6 @@ def apps(posix_root, tmp_path_factory):
     shutil.copytree(os.path.join(FIXTURE_APPS, 'two_publishers'),
                     os.path.join(directory, 'two_publishers'))
     return directory
-
-
-def config_of(posix_root):
-    return os.path.join(posix_root, 'include', 'rtps', 'config.h')
 
 
 def strings(typestore, texts):

@@ -1,0 +1,168 @@
+"""Large samples into a hardened mros2 board on the PC target (genmros mros2-pc, native):
+rclpy nodes whose Fast DDS profile (testing/mros2_pc.FAST_DDS_PROFILE) keeps every
+datagram within the board's receive limit, 1472 (an Ethernet frame) and 4096 (mros2-posix'
+lwIP), send Images and strings larger than that in fragments, which the patch
+data-frag-for-best-effort-readers puts together. The app is
+tests/fixtures/mros2_pc_apps/fragment_echo; the board's config is mros2-posix' with
+FRAGMENT_BUFFER_SIZE 65000 and THREAD_POOL_WORKLOAD_QUEUE_LENGTH 64 (a sample of 65000
+bytes is 51 fragments of 1296 bytes under 1472). Discovery runs under the same profile:
+SPDP and SEDP reach the board's reliable readers whole (no echo comes back otherwise)."""
+
+import os
+import re
+import subprocess
+
+import numpy
+import pytest
+
+from colcon_mros.mros2.rules import FRAGMENT_OVERHEAD
+from conftest import let_empy_take_stdout
+from testing import mros2_pc
+from testing.mros2_posix import wire_bytes
+from user_checkouts import MROS2_ROOT
+
+from mros2_pc_boards import config_of, posix_root_or_skip, ros2_typestore
+
+pytestmark = [pytest.mark.needs_mros2, pytest.mark.slow]
+
+
+APP = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
+    os.path.abspath(__file__))))), 'fixtures', 'mros2_pc_apps', 'fragment_echo')
+BUFFER = 65000
+STRING, IMAGE = 'std_msgs/msg/String', 'sensor_msgs/msg/Image'
+# The board's port for user data (embeddedRTPS: participant 0 of domain 0).
+USER_PORT = 7411
+LIMITS = [1472, 4096]
+
+
+@pytest.fixture(scope='module')
+def posix_root():
+    return posix_root_or_skip()
+
+
+@pytest.fixture(scope='module')
+def typestore():
+    return ros2_typestore()
+
+
+@pytest.fixture(scope='module', params=LIMITS, ids=['limit-%d' % limit for limit in LIMITS])
+def board(request, posix_root, tmp_path_factory):
+    """(program, receive limit): fragment_echo built hardened for that limit."""
+    let_empy_take_stdout()  # the module's second build runs in another test's capture
+    limit = request.param
+    work = tmp_path_factory.mktemp('large_samples_%d' % limit)
+    with open(config_of(posix_root)) as stream:
+        config = stream.read()
+    config = config.replace('THREAD_POOL_WORKLOAD_QUEUE_LENGTH = 20',
+                            'THREAD_POOL_WORKLOAD_QUEUE_LENGTH = 64')
+    config, added = re.subn(r'\}\s*//\s*namespace Config',
+                            'const DataSize_t FRAGMENT_BUFFER_SIZE = %d;\n} // namespace Config'
+                            % BUFFER, config)
+    assert added == 1 and 'QUEUE_LENGTH = 64' in config
+    (work / 'rtps').mkdir()
+    (work / 'rtps' / 'config.h').write_text(config)
+    program = mros2_pc.build(APP, str(work / 'build'), MROS2_ROOT, str(work / 'rtps' / 'config.h'),
+                             hardened=True, target='native', receive_limit=str(limit),
+                             peer_max_message=limit)
+    return program, limit
+
+
+def _strings(typestore, lengths):
+    """One String of each length, each its own letters."""
+    message = typestore.types[STRING]
+    return [wire_bytes(typestore, message(data=chr(ord('a') + index % 26) * length), STRING)
+            for index, length in enumerate(lengths)]
+
+
+def _images(typestore, count, size):
+    types = typestore.types
+    images = []
+    for index in range(count):
+        data = numpy.arange(index, index + size, dtype=numpy.uint32).astype(numpy.uint8)
+        image = types[IMAGE](
+            header=types['std_msgs/msg/Header'](
+                stamp=types['builtin_interfaces/msg/Time'](sec=index, nanosec=0),
+                frame_id='camera'),
+            height=size // 320, width=320, encoding='mono8', is_bigendian=0, step=320, data=data)
+        images.append(wire_bytes(typestore, image, IMAGE))
+    return images
+
+
+def _exchange(program, limit, tmp_path, job, drop_every=None):
+    """Runs the board and a peer with job under the profile; (peer's report, board's
+    output). drop_every: the board's network drops every so many datagrams to its user-data
+    port, the first included."""
+    job.update(period=0.25, timeout=mros2_pc.EVENT_CAP)
+    with mros2_pc.Session(program, str(tmp_path)) as session:
+        if drop_every:
+            rules = ('table ip genmros_drop {\n chain incoming {\n  type filter hook input '
+                     'priority 0;\n  udp dport %d numgen inc mod %d 0 drop\n }\n}\n'
+                     % (USER_PORT, drop_every))
+            subprocess.run(session.network.board_command(['nft', '-f', '-']), input=rules,
+                           text=True, check=True)
+        session.start_board()
+        assert session.wait_for_output('app ready')
+        report = session.peer(job, max_message=limit).result()
+        return report, session.stop_board()
+
+
+def _refused(output):
+    """The board's last counts: {reason: count}, or {} if it printed none."""
+    lines = re.findall(r'refused: too large (\d+), pool full (\d+), inconsistent (\d+), '
+                       r'abandoned (\d+), unmatched (\d+); dropped (\d+)', output)
+    return dict(zip(('too_large', 'pool_full', 'inconsistent', 'abandoned', 'unmatched',
+                     'dropped'), map(int, lines[-1]))) if lines else {}
+
+
+def test_images_of_64_kb_and_strings_of_20_kb_come_back_byte_for_byte(
+        board, typestore, tmp_path):
+    program, limit = board
+    images = _images(typestore, 20, 64000)
+    texts = _strings(typestore, [20000] * 20)
+    assert max(map(len, images)) <= BUFFER
+    job = {'publish': [{'topic': 'image', 'type': IMAGE, 'samples': [i.hex() for i in images]},
+                       {'topic': 'text', 'type': STRING, 'samples': [t.hex() for t in texts]}],
+           'subscribe': [{'topic': 'image_back', 'type': IMAGE},
+                         {'topic': 'text_back', 'type': STRING}],
+           'want': {'image_back': 20, 'text_back': 20}}
+    report, output = _exchange(program, limit, tmp_path, job)
+    for topic, sent in (('image_back', images), ('text_back', texts)):
+        echoes = report['received'][topic]
+        assert [echo for echo in echoes if echo not in sent] == []
+        assert len(set(echoes)) == 20, '%s: %d of 20 came back' % (topic, len(set(echoes)))
+    assert 'image: 64000 bytes' in output and 'text: 20000 characters' in output
+
+
+def test_a_sample_at_the_buffers_size_is_taken_one_larger_refused_and_counted(
+        board, typestore, tmp_path):
+    """64991 characters make a sample of 65000 bytes; 64992, 65001 bytes, which Fast DDS pads
+    to 65004 (the next size a String's sample can have)."""
+    program, limit = board
+    at_size, over = _strings(typestore, [64991, 64992])
+    assert (len(at_size), len(over)) == (BUFFER, BUFFER + 4)
+    job = {'publish': [{'topic': 'text', 'type': STRING,
+                        'samples': [at_size.hex(), over.hex()]}],
+           'subscribe': [{'topic': 'text_back', 'type': STRING}], 'want': {'text_back': 2}}
+    report, output = _exchange(program, limit, tmp_path, job)
+    assert set(report['received']['text_back']) == {at_size}
+    assert 'text: 64991 characters' in output and 'text: 64992' not in output
+    refused = _refused(output)
+    assert refused['too_large'] >= 1, output[-2000:]
+    assert refused['pool_full'] == refused['inconsistent'] == refused['dropped'] == 0
+
+
+def test_a_lost_fragment_drops_its_sample_and_the_next_comes_whole(
+        board, typestore, tmp_path):
+    """The board's network drops the first of every two samples' fragments: every other
+    sample loses one, is abandoned when the next begins, and that next one comes whole."""
+    program, limit = board
+    texts = _strings(typestore, [20000] * 8)
+    fragments = -(-len(texts[0]) // (limit - FRAGMENT_OVERHEAD))
+    job = {'publish': [{'topic': 'text', 'type': STRING, 'samples': [t.hex() for t in texts]}],
+           'subscribe': [{'topic': 'text_back', 'type': STRING}], 'want': {'text_back': 4}}
+    report, output = _exchange(program, limit, tmp_path, job, drop_every=2 * fragments)
+    # The peer publishes them in turn: those in odd places lose a fragment.
+    assert set(report['received']['text_back']) == set(texts[1::2])
+    refused = _refused(output)
+    assert refused['abandoned'] >= 3, output[-2000:]
+    assert refused['inconsistent'] == refused['pool_full'] == 0
