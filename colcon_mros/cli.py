@@ -35,7 +35,8 @@ prefixes (--prefix PREFIX); without --prefix, from the ROS environment.
 SUBCOMMAND_GROUPS = (
     ('mROS v1 (ROS 1)', ('export', 'mros-v1-fit', 'mros-v1-pc', 'mros-v1-harden',
                          'prune-export')),
-    ('mros2 (ROS 2)', ('mros2-export', 'mros2-fit', 'mros2-pc', 'mros2-harden')),
+    ('mros2 (ROS 2)', ('mros2-export', 'mros2-fit', 'mros2-pc', 'mros2-harden',
+                       'mros2-peer-profile')),
     ('paths for builds', ('cmake-dir', 'make-fragment', 'catkin-prefix')),
 )
 
@@ -501,9 +502,31 @@ def _add_mros2_pc(subparsers):
     parser.set_defaults(run=_mros2_pc)
 
 
+def _add_mros2_peer_profile(subparsers):
+    from colcon_mros.mros2.rules import PEER_RECEIVE_BUFFER
+    parser = subparsers.add_parser(
+        'mros2-peer-profile', help="the Fast DDS profile of ROS 2 nodes that talk to a board",
+        description="mros2 (ROS 2): write the Fast DDS profile that keeps a ROS 2 node's "
+                    "datagrams within an mros2 board's receive limit: a larger sample goes "
+                    'out in fragments, which mros2 takes with the patch '
+                    'data-frag-for-best-effort-readers. Give it to the nodes with '
+                    'FASTDDS_DEFAULT_PROFILES_FILE (Fast DDS 3) or '
+                    'FASTRTPS_DEFAULT_PROFILES_FILE (Fast DDS 2), and the same number to the '
+                    'fit check (--peer-max-message).')
+    parser.add_argument('--max-message', metavar='BYTES', type=int, required=True,
+                        help="the largest datagram the nodes send: the board's receive limit")
+    parser.add_argument('--receive-buffer', metavar='BYTES', type=int,
+                        default=PEER_RECEIVE_BUFFER,
+                        help="the nodes' socket receive buffer (default %d: a board's large "
+                             'sample comes in fragments of 64 bytes)' % PEER_RECEIVE_BUFFER)
+    parser.add_argument('-o', dest='output', metavar='FILE',
+                        help='the profile to write (default: standard output)')
+    parser.set_defaults(run=_mros2_peer_profile)
+
+
 SUBCOMMANDS = (_add_generate, _add_export, _add_printers, _add_export_dir_commands,
                _add_mros_v1_pc, _add_mros_v1_fit, _add_mros_v1_harden, _add_mros2_export,
-               _add_mros2_fit, _add_mros2_pc, _add_mros2_harden)
+               _add_mros2_fit, _add_mros2_pc, _add_mros2_harden, _add_mros2_peer_profile)
 
 
 def build_parser():
@@ -576,6 +599,24 @@ def _mros2_fit(options):
                        options.publish, options.subscribe, options.storage, options.option_files)
     sys.stdout.write(fit.report())
     return 1 if fit.misfits else 0
+
+
+def _mros2_peer_profile(options):
+    from colcon_mros.core.output import write_files
+    from colcon_mros.mros2.render import peer_profile
+    from colcon_mros.mros2.rules import DISCOVERY_ANNOUNCEMENT
+    if options.max_message < DISCOVERY_ANNOUNCEMENT:
+        raise GenmrosError("--max-message %d: below %d bytes, a ROS 2 node's SPDP announcement "
+                           'as Fast DDS 3 sends it: the board would discover no such node'
+                           % (options.max_message, DISCOVERY_ANNOUNCEMENT))
+    profile = peer_profile(options.max_message, options.receive_buffer)
+    if options.output is None:
+        sys.stdout.write(profile)
+        return 0
+    directory, name = os.path.split(os.path.abspath(options.output))
+    write_files(directory, {name: profile})
+    print('genmros: wrote %s' % options.output)
+    return 0
 
 
 def _export(options):

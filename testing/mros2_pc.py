@@ -19,6 +19,8 @@ import time
 from colcon_mros.library_tools.mros2.pc_target.build import Mros2PcBuild
 from colcon_mros.library_tools.mros2.pc_target.build import build as build_program
 from colcon_mros.library_tools.mros2.pc_target.network import BoardNetwork
+from colcon_mros.mros2.render import peer_profile
+from colcon_mros.mros2.rules import PEER_RECEIVE_BUFFER
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 WHEELS_VENV = os.path.join(REPO, 'build', 'ros2-wheels')
@@ -36,42 +38,17 @@ def build(app_dir, build_dir, mros2_root, rtps_config, **options):
                                       mros2_root=mros2_root, build_dir=build_dir, **options))
 
 
-# A Fast DDS profile whose UDP transport sends no datagram over max_message bytes: a
-# larger sample goes out as DATA_FRAG.
-FAST_DDS_PROFILE = """<?xml version="1.0" encoding="UTF-8"?>
-<dds xmlns="http://www.eprosima.com">
-  <profiles>
-    <transport_descriptors>
-      <transport_descriptor>
-        <transport_id>udp_within_the_board_limit</transport_id>
-        <type>UDPv4</type>
-        <maxMessageSize>%d</maxMessageSize>
-        <receiveBufferSize>4194304</receiveBufferSize>
-      </transport_descriptor>
-    </transport_descriptors>
-    <participant profile_name="within_the_board_limit" is_default_profile="true">
-      <rtps>
-        <userTransports>
-          <transport_id>udp_within_the_board_limit</transport_id>
-        </userTransports>
-        <useBuiltinTransports>false</useBuiltinTransports>
-      </rtps>
-    </participant>
-  </profiles>
-</dds>
-"""
-
-
 def peer_environment(log_dir, max_message=None):
     """rclpy's environment: the wheels' Fast DDS with its defaults, logs in log_dir; with
-    max_message, a profile (FAST_DDS_PROFILE) that fragments what is larger."""
+    max_message, genmros' profile (genmros mros2-peer-profile), which fragments what is
+    larger."""
     env = {key: value for key, value in os.environ.items()
            if not key.startswith(('ROS_', 'RMW_', 'FASTRTPS_', 'FASTDDS_', 'AMENT_'))}
     env.update(RMW_IMPLEMENTATION='rmw_fastrtps_cpp', ROS_LOG_DIR=log_dir)
     if max_message:
         profile = os.path.join(log_dir, 'fast_dds_max_message_%d.xml' % max_message)
         with open(profile, 'w') as stream:
-            stream.write(FAST_DDS_PROFILE % max_message)
+            stream.write(peer_profile(max_message, PEER_RECEIVE_BUFFER))
         # Fast DDS 3 reads the first, 2.x the second.
         env.update(FASTDDS_DEFAULT_PROFILES_FILE=profile, FASTRTPS_DEFAULT_PROFILES_FILE=profile)
     return env

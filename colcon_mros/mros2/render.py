@@ -2,8 +2,9 @@
 """Render mros2 headers from the ROS 2 type model: ``{relative path: text}``.
 
 One header per message (``pkg/msg/type_name.hpp``) and per service
-(``pkg/srv/name.hpp``, both halves), the static support headers, and a
-firmware's ``templates.hpp``. Nothing is written here.
+(``pkg/srv/name.hpp``, both halves), the static support headers, a
+firmware's ``templates.hpp``, and the Fast DDS profile of the ROS nodes
+that talk to a board. Nothing is written here.
 """
 
 import os
@@ -61,3 +62,10 @@ def templates_header(endpoints, board_requirements=()):
         requirements=requirements(endpoints) + list(board_requirements),
         stack_margin_macro=READER_STACK_MARGIN_MACRO, stack_margin=READER_STACK_MARGIN,
         publish=publish, subscribe=subscribe)}
+
+
+def peer_profile(max_message, receive_buffer):
+    """The Fast DDS profile (XML) of a ROS 2 node whose datagrams stay within max_message
+    bytes, the board's receive limit, and whose sockets take receive_buffer bytes."""
+    return _render('fast_dds_profile.xml.em', max_message=max_message,
+                   receive_buffer=receive_buffer)

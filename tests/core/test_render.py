@@ -259,6 +259,7 @@ def _real_renders(tmp_path, monkeypatch):
                                     if k == 'msg'][:3], ['topic:%s/msg/Strings' % package],
                                    builder.message)
     mros2_render.templates_header(endpoints)
+    mros2_render.peer_profile(1472, 4194304)
     return renders
 
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The patch data-frag-for-best-effort-readers, unit-tested: embeddedRTPS' real
 MessageReceiver of a copy of MROS2_ROOT, as it is, with the patch alone and with the whole
 series (through the series' driver), fed hand-built datagrams by the receiver check of

@@ -1,5 +1,6 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Large samples into a hardened mros2 board on the PC target (genmros mros2-pc, native):
-rclpy nodes whose Fast DDS profile (testing/mros2_pc.FAST_DDS_PROFILE) keeps every
+rclpy nodes whose Fast DDS profile (genmros mros2-peer-profile) keeps every
 datagram within the board's receive limit, 1472 (an Ethernet frame) and 4096 (mros2-posix'
 lwIP), send Images and strings larger than that in fragments, which the patch
 data-frag-for-best-effort-readers puts together. The app is
