@@ -243,6 +243,72 @@ class Mutator:
             whole[position] = self.random.getrandbits(8)
         return bytes(whole)
 
+    def fragment_sequence(self, datagram):
+        """Datagrams of DATA_FRAGs cut from new samples, on the way of datagram's first
+        DATA_FRAG (its writer, reader and the submessages before it): sample and fragment
+        sizes (at and over a board's buffer, fragments of 1 byte), fragments per
+        submessage, repeated and overlapping fragments (other bytes, other starts), sizes
+        that disagree, out of order, and a second sample (a newer or older one of the same
+        writer, or another writer's) interleaved. [] if datagram has no DATA_FRAG."""
+        header, subs = parse(datagram)
+        first = next((index for index, sub in enumerate(subs)
+                      if sub.kind == DATA_FRAG and len(sub.body) >= 32), None)
+        if first is None:
+            return []
+        reader, writer = bytes(subs[first].body[4:8]), bytes(subs[first].body[8:12])
+        sn, = struct.unpack_from('<I', subs[first].body, 16)
+        fragments = self._fragments(reader, writer, sn)
+        if self.random.random() < 0.5:
+            other = writer if self.random.random() < 0.5 else bytes(
+                [0, 0, self.random.randrange(256), self.random.choice([2, 3, 7])])
+            second = self._fragments(reader, other, sn + self.random.choice([-1, 1, 2]))
+            merged = []
+            while fragments or second:  # interleaved, each in its own order
+                source = fragments if not second or (fragments and self.random.random() < 0.5) \
+                    else second
+                merged.append(source.pop(0))
+            fragments = merged
+        datagrams = []
+        while fragments:
+            count = self.random.choice([1, 1, 1, 2, 3])
+            batch, fragments = fragments[:count], fragments[count:]
+            datagrams.append(bytes(header) + b''.join(s.encode() for s in subs[:first] + batch))
+        return datagrams
+
+    def _fragments(self, reader, writer, sn):
+        """The DATA_FRAG submessages of one sample (at most 60), mutated."""
+        size = self.random.choice([self.random.randrange(1, 9000), self.random.randrange(1, 200),
+                                   8192, 8193, 65000, 65536, 0, self._number()])
+        fragment_size = self.random.choice([self.random.randrange(1, 1500), 1, 63, 64, 1224,
+                                            0, 0xffff])
+        count = -(-size // fragment_size) if fragment_size else 1
+        sample = bytes([0, 1, 0, 0]) + bytes(self.random.getrandbits(8) for _ in range(
+            min(size, 60 * max(fragment_size, 1), 70000)))
+        numbers = list(range(1, min(count, 60) + 1))
+        if self.random.random() < 0.5:
+            self.random.shuffle(numbers)
+        found = []
+        for number in numbers:
+            # a datagram's worth at most (a larger fragment size gives fragments cut short)
+            start = (number - 1) * fragment_size
+            payload = sample[start:start + min(fragment_size, 1400)]
+            choice = self.random.random()
+            if choice < 0.1:  # a repeat, the same bytes
+                found.append(data_frag(reader, writer, sn, number, fragment_size, size, payload))
+            elif choice < 0.15:  # the same place, other bytes
+                found.append(data_frag(reader, writer, sn, number, fragment_size, size,
+                                       bytes(len(payload))))
+            elif choice < 0.2:  # another start, a number out of range, or two at once
+                found.append(data_frag(reader, writer, sn, self._number(), fragment_size, size,
+                                       payload, self.random.choice([1, 2, 0, 0xffff])))
+            elif choice < 0.25:  # sizes that disagree
+                found.append(data_frag(reader, writer, sn, number, self._number() & 0xffff,
+                                       self._number(), payload))
+            elif choice < 0.3:  # cut short
+                payload = payload[:self.random.randrange(len(payload) + 1)]
+            found.append(data_frag(reader, writer, sn, number, fragment_size, size, payload))
+        return found
+
     MUTATIONS = ('submessage_length', 'submessage_count', 'submessage_kind', 'parameter_list',
                  'sequence_numbers', 'encapsulation', 'truncated', 'bytes_flipped')
 

@@ -17,7 +17,11 @@ Then it sends the board those datagrams mutated (testing/rtps_datagrams.Mutator:
 lengths, counts and kinds, parameter lists, names longer than the config's fields, locators,
 sequence and fragment numbers, encapsulation headers, truncation, flipped bytes), from the
 rclpy participant the board has discovered and, one datagram in four (--unknown-share), from
-one it has not.
+one it has not; and, one pick in ten, new samples in DATA_FRAGs from the rclpy writer the
+board has matched (Mutator.fragment_sequence: sizes, fragments per submessage, repeats,
+overlaps, out of order, interleaved with another sample or writer) for the patch
+data-frag-for-best-effort-readers, whose buffers the hardened build's config sets
+(FRAGMENT_BUFFER_SIZE 8192, FRAGMENT_BUFFERS 2, added to mros2-posix').
 Every 500 datagrams it checks that the board runs and its output holds no sanitizer report;
 a finding saves the last 500 datagrams sent (--findings DIR, JSON lines "port hex") and
 stops. At the end the board must still echo an rclpy node's strings byte for byte.
@@ -32,6 +36,7 @@ import collections
 import json
 import os
 import random
+import re
 import shutil
 import subprocess
 import sys
@@ -61,6 +66,11 @@ MAX_REMOTE_LEASE_SECONDS = 180
 # take it from libgcov).
 COVERAGE_FLAGS = ('--coverage', '-Wl,--undefined=__gcov_dump')
 SANITIZER_REPORTS = ('AddressSanitizer', 'LeakSanitizer', 'runtime error:', 'Segmentation fault')
+# The share of picks that send a sample in DATA_FRAGs, and the fragment buffers the hardened
+# board's config gets for them: small enough that samples over them come.
+FRAGMENT_SHARE = 0.1
+FRAGMENT_SETTINGS = ('const DataSize_t FRAGMENT_BUFFER_SIZE = 8192;\n'
+                     'const uint8_t FRAGMENT_BUFFERS = 2;\n')
 # The functions the fuzzer must reach, as gcov names them (demangled, prefix matched).
 PARSERS = (('MessageReceiver: DATA', 'rtps::MessageReceiver::processDataSubmessage'),
            ('MessageReceiver: HEARTBEAT', 'rtps::MessageReceiver::processHeartbeatSubmessage'),
@@ -70,6 +80,8 @@ PARSERS = (('MessageReceiver: DATA', 'rtps::MessageReceiver::processDataSubmessa
            ('TopicData::readFromUcdrBuffer', 'rtps::TopicData::readFromUcdrBuffer'),
            ('SEDP: publications', 'rtps::SEDPAgent::onNewPublisher'),
            ('SEDP: subscriptions', 'rtps::SEDPAgent::onNewSubscriber'),
+           ('MessageReceiver: DATA_FRAG', 'rtps::MessageReceiver::processDataFragSubmessage'),
+           ('MessageReceiver: fragments taken', 'rtps::MessageReceiver::takeFragments'),
            ("mros2's callback", 'void mros2::Subscriber::callback_handler'))
 
 
@@ -123,7 +135,7 @@ def record(session, work_dir):
     # Strings within mros2's 100-byte buffer: echoreply_string's echo of a longer one reads
     # the callback's message after it is freed (mros2 v0.5.4 sends it later, from the
     # writer thread, through a reference), a finding of its own (docs/mros2.md).
-    # The long one (in fragments) is not taken: embeddedRTPS skips DATA_FRAG.
+    # The long one (in fragments) is taken only with data-frag-for-best-effort-readers.
     texts = ['record %d %s' % (index, 'x' * (8 * index)) for index in range(11)]
     exact = echoes_exact(session, ['fragments ' + 'f' * 3000] + texts, 11, RECORDING_MAX_MESSAGE)
     capture.terminate()
@@ -165,6 +177,9 @@ def fuzz(session, recorded, seconds, seed, findings_dir, unknown_share):
     mutator = rtps_datagrams.Mutator(seed)
     corpus = [(entry['port'], bytes.fromhex(entry['data'])) for entry in recorded
               if rtps_datagrams.parse(bytes.fromhex(entry['data']))]
+    # What rclpy sent the board in fragments: where new samples in fragments go.
+    fragmented = [(port, data) for (port, data), entry in zip(corpus, recorded)
+                  if entry['to_board'] and 'DATA_FRAG' in rtps_datagrams.kinds(data)]
     counts = collections.Counter()
     kinds = collections.Counter(kind for _, data in corpus for kind in rtps_datagrams.kinds(data))
     print('recorded: %d datagrams; submessages: %s' % (len(corpus), dict(kinds)), flush=True)
@@ -173,12 +188,19 @@ def fuzz(session, recorded, seconds, seed, findings_dir, unknown_share):
     sender = Sender(session)
     finding = None
     while time.monotonic() < deadline and finding is None:
-        for _ in range(BATCH):
-            port, data = mutator.random.choice(corpus)
-            name, mutated = mutator.mutate(data, mutator.random.random() < unknown_share)
-            sender.send(port, mutated)
-            sent.append((port, mutated))
-            counts[name] += 1
+        batch_end = sum(counts.values()) + BATCH
+        while sum(counts.values()) < batch_end:
+            if fragmented and mutator.random.random() < FRAGMENT_SHARE:
+                port, data = mutator.random.choice(fragmented)
+                batch = [('fragment_sequence', datagram)
+                         for datagram in mutator.fragment_sequence(data)]
+            else:
+                port, data = mutator.random.choice(corpus)
+                batch = [mutator.mutate(data, mutator.random.random() < unknown_share)]
+            for name, mutated in batch:
+                sender.send(port, mutated)
+                sent.append((port, mutated))
+                counts[name] += 1
         found = reports(session.output())
         if found or session.stopped():
             if 'AddressSanitizer' in found:
@@ -213,6 +235,24 @@ def coverage(program, build_dir):
     return counts
 
 
+def board_config(work, as_it_is):
+    """mros2-posix' rtps/config.h, hardened with FRAGMENT_SETTINGS added (a copy in work)."""
+    config = os.path.join(os.environ['MROS2_POSIX_ROOT'], 'include', 'rtps', 'config.h')
+    if as_it_is:
+        return config
+    with open(config) as stream:
+        text, added = re.subn(r'\}\s*//\s*namespace Config', FRAGMENT_SETTINGS +
+                              '} // namespace Config', stream.read())
+    if added != 1:
+        raise SystemExit('%s: no "} // namespace Config" to add the fragment buffers before'
+                         % config)
+    os.makedirs(os.path.join(work, 'rtps'), exist_ok=True)
+    copy = os.path.join(work, 'rtps', 'config.h')
+    with open(copy, 'w') as stream:
+        stream.write(text)
+    return copy
+
+
 def build(options, work):
     app = os.path.join(work, 'echoreply_string')
     if not os.path.isdir(app):
@@ -221,9 +261,7 @@ def build(options, work):
     patches = {'patches': ('accept-fast-dds-3-discovery',)} if options.as_it_is else \
         {'hardened': True}
     return mros2_pc.build(app, os.path.join(work, 'build'), os.environ['MROS2_ROOT'],
-                          os.path.join(os.environ['MROS2_POSIX_ROOT'], 'include', 'rtps',
-                                       'config.h'),
-                          target='native', sanitize=True,
+                          board_config(work, options.as_it_is), target='native', sanitize=True,
                           extra_flags=COVERAGE_FLAGS if options.coverage else (), **patches)
 
 
