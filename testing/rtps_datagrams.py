@@ -145,6 +145,9 @@ class Mutator:
 
     def __init__(self, seed):
         self.random = random.Random(seed)
+        # The sequence number of fragment_sequence's next sample: each newer than the last,
+        # so that a board does not take them for late fragments of one it has.
+        self.fragment_sn = 1 << 20
 
     def _number(self):
         return self.random.choice([0, 1, 2, 3, 4, 0x7f, 0x80, 0xff, 0x100, 0x7fff, 0xffff,
@@ -245,7 +248,8 @@ class Mutator:
 
     def fragment_sequence(self, datagram):
         """Datagrams of DATA_FRAGs cut from new samples, on the way of datagram's first
-        DATA_FRAG (its writer, reader and the submessages before it): sample and fragment
+        DATA_FRAG (its writer, reader and the submessages before it; newer sequence
+        numbers): sample and fragment
         sizes (at and over a board's buffer, fragments of 1 byte), fragments per
         submessage, repeated and overlapping fragments (other bytes, other starts), sizes
         that disagree, out of order, and a second sample (a newer or older one of the same
@@ -256,7 +260,8 @@ class Mutator:
         if first is None:
             return []
         reader, writer = bytes(subs[first].body[4:8]), bytes(subs[first].body[8:12])
-        sn, = struct.unpack_from('<I', subs[first].body, 16)
+        self.fragment_sn += 3
+        sn = self.fragment_sn
         fragments = self._fragments(reader, writer, sn)
         if self.random.random() < 0.5:
             other = writer if self.random.random() < 0.5 else bytes(

@@ -17,11 +17,11 @@ Then it sends the board those datagrams mutated (testing/rtps_datagrams.Mutator:
 lengths, counts and kinds, parameter lists, names longer than the config's fields, locators,
 sequence and fragment numbers, encapsulation headers, truncation, flipped bytes), from the
 rclpy participant the board has discovered and, one datagram in four (--unknown-share), from
-one it has not; and, one pick in ten, new samples in DATA_FRAGs from the rclpy writer the
-board has matched (Mutator.fragment_sequence: sizes, fragments per submessage, repeats,
-overlaps, out of order, interleaved with another sample or writer) for the patch
-data-frag-for-best-effort-readers, whose buffers the hardened build's config sets
-(FRAGMENT_BUFFER_SIZE 8192, FRAGMENT_BUFFERS 2, added to mros2-posix').
+one it has not; and, one pick in fifty, new samples in DATA_FRAGs in the name of an rclpy
+writer the board has matched for the run (Mutator.fragment_sequence: sizes, fragments per
+submessage, repeats, overlaps, out of order, interleaved with another sample or writer)
+for the patch data-frag-for-best-effort-readers, whose buffers the hardened build's config
+sets (FRAGMENT_BUFFER_SIZE 8192, FRAGMENT_BUFFERS 2, added to mros2-posix').
 Every 500 datagrams it checks that the board runs and its output holds no sanitizer report;
 a finding saves the last 500 datagrams sent (--findings DIR, JSON lines "port hex") and
 stops. At the end the board must still echo an rclpy node's strings byte for byte.
@@ -68,7 +68,7 @@ COVERAGE_FLAGS = ('--coverage', '-Wl,--undefined=__gcov_dump')
 SANITIZER_REPORTS = ('AddressSanitizer', 'LeakSanitizer', 'runtime error:', 'Segmentation fault')
 # The share of picks that send a sample in DATA_FRAGs, and the fragment buffers the hardened
 # board's config gets for them: small enough that samples over them come.
-FRAGMENT_SHARE = 0.1
+FRAGMENT_SHARE = 0.02
 FRAGMENT_SETTINGS = ('const DataSize_t FRAGMENT_BUFFER_SIZE = 8192;\n'
                      'const uint8_t FRAGMENT_BUFFERS = 2;\n')
 # The functions the fuzzer must reach, as gcov names them (demangled, prefix matched).
@@ -145,6 +145,25 @@ def record(session, work_dir):
     return rtps_datagrams.read_capture(path)
 
 
+def live_writer(session, work_dir, seconds):
+    """An rclpy node that publishes a long string to the board once a second, in DATA_FRAGs,
+    for seconds (the writer the board has matched while the fuzzer sends new samples in its
+    name), and the datagrams of its first fragmented sample: (peer, datagrams)."""
+    path = os.path.join(work_dir, 'live_writer.jsonl')
+    capture = start_capture(session, path)
+    _, job = echo_job(['fragments ' + 'f' * 3000], 0, timeout=seconds)
+    job.update(want={}, period=1.0)
+    peer = session.peer(job, RECORDING_MAX_MESSAGE)
+
+    def fragments():
+        return [entry for entry in rtps_datagrams.read_capture(path) if entry['to_board'] and
+                'DATA_FRAG' in rtps_datagrams.kinds(bytes.fromhex(entry['data']))]
+    mros2_pc.wait_for(lambda: fragments() or session.stopped(), 'rclpy to send fragments')
+    capture.terminate()
+    capture.wait()
+    return peer, [(entry['port'], bytes.fromhex(entry['data'])) for entry in fragments()]
+
+
 def reports(output):
     return [word for word in SANITIZER_REPORTS if word in output]
 
@@ -177,9 +196,10 @@ def fuzz(session, recorded, seconds, seed, findings_dir, unknown_share):
     mutator = rtps_datagrams.Mutator(seed)
     corpus = [(entry['port'], bytes.fromhex(entry['data'])) for entry in recorded
               if rtps_datagrams.parse(bytes.fromhex(entry['data']))]
-    # What rclpy sent the board in fragments: where new samples in fragments go.
-    fragmented = [(port, data) for (port, data), entry in zip(corpus, recorded)
-                  if entry['to_board'] and 'DATA_FRAG' in rtps_datagrams.kinds(data)]
+    # New samples in fragments go the way of a writer the board has matched for the whole
+    # run (the recording's node is gone: its writer is no longer matched).
+    writer, fragmented = live_writer(session, os.path.dirname(session.log_path),
+                                     seconds + mros2_pc.EVENT_CAP)
     counts = collections.Counter()
     kinds = collections.Counter(kind for _, data in corpus for kind in rtps_datagrams.kinds(data))
     print('recorded: %d datagrams; submessages: %s' % (len(corpus), dict(kinds)), flush=True)
@@ -213,6 +233,8 @@ def fuzz(session, recorded, seconds, seed, findings_dir, unknown_share):
             with open(finding, 'w') as stream:
                 stream.writelines('%d %s\n' % (port, data.hex()) for port, data in sent)
     print('sender: %s' % sender.close(), flush=True)
+    if writer.running():
+        writer.result(stop=True)
     return counts, finding
 
 
