@@ -7,7 +7,7 @@
 //                00 00 04 03
 //   00 00 02 04  reliable, matched with 00 00 03 03
 // Each line of stdin is a datagram in hex, given to processMessage; a reader
-// prints each sample it gets (receiver/rtps/entities/Reader.h). At the end,
+// prints each sample it gets as "reader ID writer ID sn N HEX". At the end,
 // with CHECK_FRAGMENT_COUNTS, the check prints the refused samples' counts:
 // "counts TOO_LARGE POOL_FULL INCONSISTENT ABANDONED UNMATCHED".
 #include <stdio.h>
@@ -27,6 +27,14 @@ rtps::Guid_t guid(const rtps::GuidPrefix_t& prefix, uint8_t key, rtps::EntityKin
   return rtps::Guid_t{prefix, rtps::EntityId_t{{0, 0, key}, kind}};
 }
 
+// Prints a sample as "reader ID writer ID sn N HEX" (the last bytes of the entity ids).
+void print(const rtps::Reader& reader, const rtps::ReaderCacheChange& change) {
+  printf("reader %02x writer %02x sn %u ", reader.m_attributes.endpointGuid.entityId.entityKey[2],
+         change.writerGuid.entityId.entityKey[2], static_cast<unsigned>(change.sn.low));
+  for (rtps::DataSize_t i = 0; i < change.size; ++i) printf("%02x", change.getData()[i]);
+  printf("\n");
+}
+
 std::vector<uint8_t> bytes_of(const std::string& hex) {
   std::vector<uint8_t> bytes;
   for (size_t i = 0; i + 1 < hex.size(); i += 2)
@@ -42,9 +50,11 @@ int main() {
   participant.m_guidPrefix = {{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}};
   rtps::Reader best_effort(guid(participant.m_guidPrefix, 1, kReader),
                            rtps::ReliabilityKind_t::BEST_EFFORT,
-                           {guid(kRemote, 1, kWriter), guid(kRemote, 2, kWriter), guid(kRemote, 4, kWriter)});
+                           {guid(kRemote, 1, kWriter), guid(kRemote, 2, kWriter),
+                            guid(kRemote, 4, kWriter)},
+                           print);
   rtps::Reader reliable(guid(participant.m_guidPrefix, 2, kReader),
-                        rtps::ReliabilityKind_t::RELIABLE, {guid(kRemote, 3, kWriter)});
+                        rtps::ReliabilityKind_t::RELIABLE, {guid(kRemote, 3, kWriter)}, print);
   participant.readers = {&best_effort, &reliable};
   // The receiver holds its fragment buffers: static, as the participant is on a board.
   static rtps::MessageReceiver receiver(&participant);

@@ -1,12 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // A stand-in of embeddedRTPS' Reader and ReaderCacheChange as its receiver
 // uses them (the names and signatures are embeddedRTPS'): a reader of a
-// given reliability, matched with the writers it is given, that prints each
-// sample it gets as "reader ID writer ID sn N HEX".
+// given reliability, matched with the writers it is given, that hands each
+// sample it gets to the program's function.
 #ifndef RTPS_READER_H
 #define RTPS_READER_H
-
-#include <stdio.h>
 
 #include <vector>
 
@@ -41,15 +39,13 @@ class Reader {
  public:
   ReaderAttributes m_attributes;
 
-  Reader(const Guid_t& guid, ReliabilityKind_t reliability, const std::vector<Guid_t>& writers)
-      : m_attributes{guid, reliability}, writers_(writers) {}
+  typedef void (*Taker)(const Reader& reader, const ReaderCacheChange& change);
 
-  void newChange(const ReaderCacheChange& change) {
-    printf("reader %02x writer %02x sn %u ", m_attributes.endpointGuid.entityId.entityKey[2],
-           change.writerGuid.entityId.entityKey[2], static_cast<unsigned>(change.sn.low));
-    for (DataSize_t i = 0; i < change.size; ++i) printf("%02x", change.getData()[i]);
-    printf("\n");
-  }
+  Reader(const Guid_t& guid, ReliabilityKind_t reliability, const std::vector<Guid_t>& writers,
+         Taker take)
+      : m_attributes{guid, reliability}, writers_(writers), take_(take) {}
+
+  void newChange(const ReaderCacheChange& change) { take_(*this, change); }
   bool onNewHeartbeat(const SubmessageHeartbeat&, const GuidPrefix_t&) { return true; }
   bool knowWriterId(const Guid_t& guid) const {
     for (size_t i = 0; i < writers_.size(); ++i)
@@ -59,6 +55,7 @@ class Reader {
 
  private:
   std::vector<Guid_t> writers_;
+  Taker take_;
 };
 
 }  // namespace rtps
