@@ -2,8 +2,9 @@
 """The RTPS fuzzer (bench/fuzz/rtps_fuzz.py), run for 30 s against the hardened board of
 mros2-posix' echoreply_string on MROS2_ROOT, built with sanitizers and gcov: no sanitizer
 report, and the mutated datagrams reach the parsers (each of them ran), not only the length
-checks before them; and afterwards the board still echoes an rclpy node's strings byte
-for byte (once the fuzzed participants' leases have ended: embeddedRTPS keeps 5)."""
+checks before them, data-frag-for-best-effort-readers' DATA_FRAG ones included; and
+afterwards the board still echoes an rclpy node's strings byte for byte (once the fuzzed
+participants' leases have ended: embeddedRTPS keeps 5)."""
 
 import os
 import re
@@ -19,7 +20,8 @@ pytestmark = [pytest.mark.needs_mros2, pytest.mark.slow]
 FUZZER = os.path.join(REPO, 'bench', 'fuzz', 'rtps_fuzz.py')
 PARSERS = ('MessageReceiver: DATA', 'MessageReceiver: HEARTBEAT', 'MessageReceiver: ACKNACK',
            'ParticipantProxyData::readFromUcdrBuffer', 'TopicData::readFromUcdrBuffer',
-           'SEDP: publications', 'SEDP: subscriptions', "mros2's callback")
+           'SEDP: publications', 'SEDP: subscriptions', 'MessageReceiver: DATA_FRAG',
+           'MessageReceiver: fragments taken', "mros2's callback")
 NO_FINDING = 'no sanitizer report; the board went on echoing byte for byte afterwards'
 
 
