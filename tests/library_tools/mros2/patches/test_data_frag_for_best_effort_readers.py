@@ -3,7 +3,8 @@
 MessageReceiver of a copy of MROS2_ROOT, as it is, with the patch alone and with the whole
 series (through the series' driver), fed hand-built datagrams by the receiver check of
 testing/mros2_library (its readers and writers are listed there). The check's config gives
-two buffers of 1000 bytes; fragments are 100 bytes."""
+two buffers of 1000 bytes; fragments are 100 bytes. And templates.hpp's buffer rule,
+compiled against the patched header."""
 
 import os
 import shutil
@@ -13,8 +14,15 @@ import pytest
 
 from colcon_mros.library_tools.mros2.patches import LIBRARY_DIRS, mros2_patches
 from colcon_mros.library_tools.mros2.pc_target.build import TARGET_DIR
+from colcon_mros.core.storage import HeapStorage
 from colcon_mros.library_tools.patch_series import apply_patches
+from colcon_mros.mros2.endpoints import parse_endpoints
+from colcon_mros.mros2.render import templates_header
+from colcon_mros.mros2.rules import data_frag_requirements
+from colcon_mros.ros2.interfaces import all_packages
+from colcon_mros.ros2.model import ModelBuilder
 from conftest import REPO
+from testing.ros_paths import ros2_prefixes
 from testing.rtps_datagrams import data, data_frag, rtps_header
 from user_checkouts import MROS2_ROOT
 
@@ -30,11 +38,16 @@ FRAGMENT = 100
 BUFFER = 1000
 
 
-def _build(tmp_path, patches, buffers=True):
-    checkout = tmp_path / 'mros2'
+def _copy(checkout, patches):
+    """A copy of MROS2_ROOT's library at checkout, with the named patches."""
     for part in LIBRARY_DIRS:
         shutil.copytree(os.path.join(MROS2_ROOT, part), str(checkout / part))
     apply_patches(str(checkout), [patch for patch in mros2_patches() if patch.name in patches])
+    return checkout
+
+
+def _build(tmp_path, patches, buffers=True):
+    checkout = _copy(tmp_path / 'mros2', patches)
     program = str(tmp_path / 'receiver_check')
     sources = [str(checkout / 'embeddedRTPS' / 'src' / 'messages' / name)
                for name in ('MessageReceiver.cpp', 'MessageTypes.cpp')]
@@ -199,3 +212,41 @@ def test_as_it_is_fragments_are_skipped(tmp_path):
     samples, counts = _run(program, _fragment_then_data(sample), _fragment(sample, 2),
                            _fragment(sample, 3))
     assert samples == [('01', '01', 9, _sample(12))] and counts is None
+
+
+@pytest.fixture(scope='module')
+def patched_root(tmp_path_factory):
+    return _copy(tmp_path_factory.mktemp('patched_root'), [PATCH])
+
+
+@pytest.mark.parametrize('buffer, error', [(736, None), (732, True), (None, True)],
+                         ids=['enough', 'too-small', 'not-set'])
+def test_templates_hpp_holds_the_buffer_rule(tmp_path, patched_root, buffer, error):
+    """templates.hpp's static_assert on FRAGMENT_BUFFER_SIZE, for a type the ROS side sends
+    in fragments (BoundedPlainSequences: 736 bytes with its encapsulation, over a
+    --peer-max-message of 600), compiled against the patched receiver's header, whose
+    default the board's config may replace."""
+    endpoints, _ = parse_endpoints([], ['large:test_interface_files/msg/BoundedPlainSequences'],
+                                   ModelBuilder(all_packages((), ros2_prefixes()),
+                                                HeapStorage()).message)
+    rules = [rule for rule in data_frag_requirements(endpoints, 600)
+             if rule.setting == 'FRAGMENT_BUFFER_SIZE']
+    text = templates_header(endpoints, rules)['templates.hpp']
+    start = text.index('static_assert(736 <= rtps::Config::FRAGMENT_BUFFER_SIZE')
+    source = tmp_path / 'rule.cpp'
+    source.write_text('#include "rtps/messages/MessageReceiver.h"\n' +
+                      text[start:text.index(';', start) + 1] + '\n')
+    command = ['g++', '-std=gnu++14', '-fsyntax-only', '-I', os.path.join(STAND_IN, 'receiver'),
+               '-I', os.path.join(TARGET_DIR, 'include'),
+               '-I', str(patched_root / 'embeddedRTPS' / 'include'), str(source)]
+    if buffer is not None:
+        command += ['-DRECEIVER_CHECK_BUFFER_SIZE=%d' % buffer, '-DRECEIVER_CHECK_BUFFERS=1']
+    result = subprocess.run(command, capture_output=True, text=True)
+    if error:
+        assert result.returncode != 0
+        assert ('test_interface_files/msg/BoundedPlainSequences: a sample of up to 732 bytes '
+                'and its encapsulation, put together from the fragments the ROS side sends '
+                '(over --peer-max-message 600) needs rtps::Config::FRAGMENT_BUFFER_SIZE >= 736 '
+                '(rtps/config.h)') in result.stderr
+    else:
+        assert result.returncode == 0, result.stderr
