@@ -604,11 +604,10 @@ def _mros2_fit(options):
 def _mros2_peer_profile(options):
     from colcon_mros.core.output import write_files
     from colcon_mros.mros2.render import peer_profile
-    from colcon_mros.mros2.rules import DISCOVERY_ANNOUNCEMENT
-    if options.max_message < DISCOVERY_ANNOUNCEMENT:
-        raise GenmrosError("--max-message %d: below %d bytes, a ROS 2 node's SPDP announcement "
-                           'as Fast DDS 3 sends it: the board would discover no such node'
-                           % (options.max_message, DISCOVERY_ANNOUNCEMENT))
+    from colcon_mros.mros2.rules import discovery_problem
+    problem = discovery_problem('--max-message', options.max_message)
+    if problem:
+        raise GenmrosError(problem)
     profile = peer_profile(options.max_message, options.receive_buffer)
     if options.output is None:
         sys.stdout.write(profile)

@@ -25,8 +25,8 @@ from colcon_mros.mros2.endpoints import PUBLISH, SUBSCRIBE, count, messages, top
 from colcon_mros.mros2.rules import (CONFIG_HEADER, DATA_FRAG_PATCH, DISCOVERY_ANNOUNCEMENT,
                                      ENCAPSULATION, FRAGMENT_BUFFER, FRAGMENT_DEFAULTS,
                                      PEER_MAX_MESSAGE, SETTINGS, TYPENAME_MAX,
-                                     data_frag_requirements, largest_datagram,
-                                     requirements)
+                                     data_frag_requirements, discovery_problem,
+                                     largest_datagram, requirements)
 
 # mros2's public header, where its Publisher class is declared.
 MROS2_HEADER = os.path.join('include', 'mros2.h')
@@ -91,6 +91,9 @@ class Fit:
             self.notes.append('topics not given for every endpoint (--publish/--subscribe '
                               'TOPIC:TYPE): topic names not checked, one endpoint counted per '
                               'type')
+        problem = discovery_problem('--peer-max-message', peer_max_message)
+        if problem:
+            raise GenmrosError(problem)
         self.peer = GivenSetting("the ROS side's largest message", peer_max_message,
                                  '--peer-max-message %d' % peer_max_message)
         takes_data_frag = checkout is not None and checkout.takes_data_frag

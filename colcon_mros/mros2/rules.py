@@ -157,6 +157,16 @@ def largest_datagram(message):
     return DATAGRAM_OVERHEAD + message.max_size + (-message.max_size % 4)
 
 
+def discovery_problem(option, largest_message):
+    """The error for a ROS side whose largest message (given as option) is below
+    DISCOVERY_ANNOUNCEMENT, or None."""
+    if largest_message >= DISCOVERY_ANNOUNCEMENT:
+        return None
+    return ("%s %d: below %d bytes, a ROS 2 node's SPDP announcement as Fast DDS 3 sends it: "
+            'the board would discover no such node'
+            % (option, largest_message, DISCOVERY_ANNOUNCEMENT))
+
+
 def largest_serialized_sample(message):
     """A DATA_FRAG's largest sampleSize for message: the encapsulation and the image
     padded to 4."""

@@ -10,6 +10,9 @@ small values so that each rule has a misfit.
 
 import os
 
+import pytest
+
+from colcon_mros.errors import GenmrosError
 from colcon_mros.export.mros2_export import Board, firmware_fit
 from colcon_mros.mros2.render import templates_header
 
@@ -258,6 +261,14 @@ def test_with_the_patch_the_peers_message_must_fit_the_receive_limit(tmp_path):
         'needs the receive limit >= 808 (it is 600); or have the ROS side send it in fragments '
         "of at most that: its transport's maxMessageSize and --peer-max-message (docs/mros2.md)"
         % LARGE]
+
+
+def test_a_peer_message_below_the_discovery_announcement_is_refused(tmp_path):
+    with pytest.raises(GenmrosError) as refused:
+        _fragment_fit(tmp_path, '1472', 500, RECEIVER_PATCHED)
+    assert str(refused.value) == (
+        "--peer-max-message 500: below 572 bytes, a ROS 2 node's SPDP announcement as Fast "
+        'DDS 3 sends it: the board would discover no such node')
 
 
 def test_without_the_patch_a_sample_the_peer_fragments_is_a_misfit(tmp_path):
