@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """What the mros2 PC-target tests share: the user's mros2-posix (MROS2_POSIX_ROOT: its
 example apps and its include/rtps/config.h, the board's config) and the ROS 2 type store
-the samples are serialized with, for the modules' fixtures."""
+the samples are serialized with: fixtures, which a test module takes as its own by
+assigning them (posix_root = mros2_pc_boards.posix_root)."""
 
 import os
 
@@ -10,7 +11,8 @@ import pytest
 from testing import mros2_pc
 
 
-def posix_root_or_skip():
+@pytest.fixture(scope='module')
+def posix_root():
     """MROS2_POSIX_ROOT; the test skips, saying why, without it or the wheels' rclpy."""
     root = os.environ.get('MROS2_POSIX_ROOT')
     if not root or not os.path.isfile(os.path.join(root, 'workspace', 'echoreply_string',
@@ -22,7 +24,8 @@ def posix_root_or_skip():
     return root
 
 
-def ros2_typestore():
+@pytest.fixture(scope='module')
+def typestore():
     from rosbags.typesys import Stores, get_typestore
     return get_typestore(Stores.ROS2_HUMBLE)
 

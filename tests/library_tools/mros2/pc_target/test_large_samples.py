@@ -22,7 +22,8 @@ from testing import mros2_pc
 from testing.mros2_posix import wire_bytes
 from user_checkouts import MROS2_ROOT
 
-from mros2_pc_boards import config_of, posix_root_or_skip, ros2_typestore
+import mros2_pc_boards
+from mros2_pc_boards import config_of
 
 pytestmark = [pytest.mark.needs_mros2, pytest.mark.slow]
 
@@ -35,15 +36,9 @@ STRING, IMAGE = 'std_msgs/msg/String', 'sensor_msgs/msg/Image'
 USER_PORT = 7411
 LIMITS = [1472, 4096]
 
-
-@pytest.fixture(scope='module')
-def posix_root():
-    return posix_root_or_skip()
-
-
-@pytest.fixture(scope='module')
-def typestore():
-    return ros2_typestore()
+# The fixtures, shared.
+posix_root = mros2_pc_boards.posix_root
+typestore = mros2_pc_boards.typestore
 
 
 @pytest.fixture(scope='module', params=LIMITS, ids=['limit-%d' % limit for limit in LIMITS])

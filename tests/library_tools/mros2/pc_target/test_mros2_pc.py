@@ -23,7 +23,8 @@ import time
 import pytest
 
 from conftest import REPO
-from mros2_pc_boards import config_of, posix_root_or_skip, ros2_typestore
+import mros2_pc_boards
+from mros2_pc_boards import config_of
 from testing import mros2_pc
 from testing.mros2_posix import wire_bytes
 from user_checkouts import MROS2_ROOT
@@ -36,15 +37,9 @@ FIXTURE_APPS = os.path.join(REPO, 'tests', 'fixtures', 'mros2_pc_apps')
 STRING = 'std_msgs/msg/String'
 SANITIZER_REPORTS = ('AddressSanitizer', 'LeakSanitizer', 'runtime error:')
 
-
-@pytest.fixture(scope='module')
-def posix_root():
-    return posix_root_or_skip()
-
-
-@pytest.fixture(scope='module')
-def typestore():
-    return ros2_typestore()
+# The fixtures, shared.
+posix_root = mros2_pc_boards.posix_root
+typestore = mros2_pc_boards.typestore
 
 
 @pytest.fixture(scope='module')
