@@ -156,8 +156,10 @@ def test_fragments_that_disagree_refuse_the_sample(patched, wrong):
 
 def test_an_abandoned_sample_gives_way_to_the_newer(patched):
     older, newer = _sample(250), _sample(250, seed=2)
+    # the older sample's fragments that come late are ignored, its first too (not counted)
     sent = [_fragment(older, 1), _fragment(older, 2), _fragment(newer, 1, sn=2),
-            _fragment(older, 3), _fragment(newer, 2, sn=2), _fragment(newer, 3, sn=2)]
+            _fragment(older, 3), _fragment(older, 1), _fragment(newer, 2, sn=2),
+            _fragment(newer, 3, sn=2)]
     samples, counts = _run(patched, *sent)
     assert samples == [('01', '01', 2, newer)]
     assert counts == _nothing_refused(abandoned=1)
