@@ -105,21 +105,21 @@ def main():
     os.makedirs(work, exist_ok=True)
     patched = checkout(work, True)
     timer = build(work, patched, 'timer', (SAMPLE, 1))
+    datagrams = {what: sample_datagrams(fragment) for what, fragment in CASES}
     script = ''.join('case %s\n' % what +
-                     ''.join(datagram.hex() + '\n' for datagram in sample_datagrams(fragment))
-                     for what, fragment in CASES)
+                     ''.join(datagram.hex() + '\n' for datagram in datagrams[what])
+                     for what, _ in CASES)
     lines = subprocess.run(timer, input=script, capture_output=True, text=True,
                            check=True).stdout.splitlines()
     print('| sample of %d bytes given as | datagrams | receive time, median (µs) | ratio | '
           'delivered |' % SAMPLE)
     print('|---|---:|---:|---:|---:|')
     base = None
-    for (what, fragment), line in zip(CASES, lines):
+    for (what, _), line in zip(CASES, lines):
         nanoseconds, delivered = (int(field) for field in line.rsplit(' ', 2)[1:])
         base = base or nanoseconds
         print('| %s | %d | %.2f | %.1f | %d |' % (
-            what, len(sample_datagrams(fragment)), nanoseconds / 1000, nanoseconds / base,
-            delivered))
+            what, len(datagrams[what]), nanoseconds / 1000, nanoseconds / base, delivered))
     print()
     print('| settings | sizeof(MessageReceiver), x86-64 | 32-bit ARM | the patch adds (ARM) |')
     print('|---|---:|---:|---:|')
