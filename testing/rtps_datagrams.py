@@ -249,11 +249,11 @@ class Mutator:
     def fragment_sequence(self, datagram):
         """Datagrams of DATA_FRAGs cut from new samples, on the way of datagram's first
         DATA_FRAG (its writer, reader and the submessages before it; newer sequence
-        numbers): sample and fragment
-        sizes (at and over a board's buffer, fragments of 1 byte), fragments per
-        submessage, repeated and overlapping fragments (other bytes, other starts), sizes
-        that disagree, out of order, and a second sample (a newer or older one of the same
-        writer, or another writer's) interleaved. [] if datagram has no DATA_FRAG."""
+        numbers): sample and fragment sizes (at and over a board's buffer, fragments of 1
+        byte), fragments per submessage, repeated and overlapping fragments (other bytes,
+        other starts), sizes that disagree, out of order, and a second sample (a newer or
+        older one of the same writer, or another writer's) interleaved. [] if datagram has
+        no DATA_FRAG."""
         header, subs = parse(datagram)
         first = next((index for index, sub in enumerate(subs)
                       if sub.kind == DATA_FRAG and len(sub.body) >= 32), None)
