@@ -1,13 +1,21 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""An rclpy node on the ROS side of a genmros mros2-pc board, for the tests, the main job
-and the bench (testing/mros2_pc.py runs it in the ROS 2 wheels' venv).
+"""The plain node: an rclpy node that does what an ordinary ROS 2 user's node does, on the
+ROS side of a genmros mros2-pc board (or of its control, testing/mros2_pc_control.py), for
+the tests, the main job and the bench (testing/mros2_pc.py runs it in the ROS 2 wheels' venv).
+
+It makes one publisher and one subscription per topic, best-effort as mros2's endpoints are,
+and waits through the graph API until every one of them sees the other side
+(``get_subscription_count()``, ``count_publishers()``); then waits ``settle`` seconds more;
+then publishes each sample once, ``period`` seconds apart (one sample of each topic in turn);
+then waits up to ``reply_wait`` seconds for what comes back, ending that wait early once each
+topic of ``expect`` has taken its count. Nothing is sent again: a sample lost is lost.
 
 stdin: JSON {"publish": [{"topic", "type" (pkg/msg/Type), "samples": [hex of serialized
-messages]}], "subscribe": [{"topic", "type"}], "want": {topic: samples},
-"period": seconds between publishes, "timeout": seconds}. Publishes the samples in turn,
-best-effort as mros2's endpoints are, until each topic of "want" has taken its samples,
-the time-out passes or SIGTERM comes. Writes "peer ready" to stderr once its endpoints
-exist. stdout: JSON {"received": {topic: [hex of each sample as it came]}, "sent": count}.
+messages]}], "subscribe": [{"topic", "type"}], "expect": {topic: count}, "period",
+"settle", "reply_wait", "match_wait": seconds}. Writes "peer ready" to stderr once its
+endpoints exist. stdout: JSON {"received": {topic: [hex of each sample as it came]},
+"sent": count, "matched": whether the graph showed every endpoint matched, "matched_after":
+seconds from the node's start until it did}. SIGTERM ends any wait, and it reports.
 """
 
 import importlib
@@ -26,41 +34,67 @@ def message_class(type_name):
     return getattr(importlib.import_module('%s.msg' % package), name)
 
 
+class PlainNode:
+    """The node and what it has received."""
+
+    def __init__(self, job, stopped):
+        self.job = job
+        self.stopped = stopped
+        self.node = rclpy.create_node('genmros_plain_node')
+        qos = QoSProfile(depth=100, reliability=ReliabilityPolicy.BEST_EFFORT)
+        self.received = {entry['topic']: [] for entry in job['subscribe']}
+        for entry in job['subscribe']:
+            self.node.create_subscription(
+                message_class(entry['type']), entry['topic'],
+                lambda raw, topic=entry['topic']: self.received[topic].append(bytes(raw).hex()),
+                qos, raw=True)
+        self.publishers = [self.node.create_publisher(message_class(entry['type']),
+                                                      entry['topic'], qos)
+                           for entry in job['publish']]
+
+    def spin_until(self, deadline, done=lambda: False):
+        """Spins until done() holds, the deadline (monotonic) passes or SIGTERM comes; says
+        whether done() held."""
+        while not self.stopped and time.monotonic() < deadline:
+            if done():
+                return True
+            rclpy.spin_once(self.node, timeout_sec=0.02)
+        return done()
+
+    def all_matched(self):
+        return all(publisher.get_subscription_count() > 0 for publisher in self.publishers) \
+            and all(self.node.count_publishers(topic) > 0 for topic in self.received)
+
+    def all_expected(self):
+        return all(len(self.received[topic]) >= count
+                   for topic, count in self.job['expect'].items())
+
+
 def main():
     job = json.load(sys.stdin)
+    started = time.monotonic()
     stopped = []
-    # rclpy's own handlers would shut its context down under the loop.
+    # rclpy's own handlers would shut its context down under the waits.
     rclpy.init(signal_handler_options=SignalHandlerOptions.NO)
     signal.signal(signal.SIGTERM, lambda *_: stopped.append(True))
-    node = rclpy.create_node('genmros_pc_peer')
-    qos = QoSProfile(depth=100, reliability=ReliabilityPolicy.BEST_EFFORT)
-    received = {entry['topic']: [] for entry in job['subscribe']}
-    for entry in job['subscribe']:
-        node.create_subscription(message_class(entry['type']), entry['topic'],
-                                 lambda raw, topic=entry['topic']: received[topic].append(
-                                     bytes(raw).hex()), qos, raw=True)
-    # One publisher (one writer) per topic, as a node has.
-    publishers = [node.create_publisher(message_class(entry['type']), entry['topic'], qos)
-                  for entry in job['publish']]
-    outgoing = [(publisher, bytes.fromhex(sample))
-                for publisher, entry in zip(publishers, job['publish'])
-                for sample in entry['samples']]
+    plain = PlainNode(job, stopped)
     print('peer ready', file=sys.stderr, flush=True)
-    deadline = time.monotonic() + job['timeout']
+    matched = plain.spin_until(time.monotonic() + job['match_wait'], plain.all_matched)
+    matched_after = time.monotonic() - started
     sent = 0
-    while not stopped and time.monotonic() < deadline:
-        if job['want'] and all(len(received[topic]) >= count
-                               for topic, count in job['want'].items()):
-            break
-        if outgoing:
-            publisher, sample = outgoing[sent % len(outgoing)]
-            publisher.publish(sample)
-            sent += 1
-        publish_at = time.monotonic() + job['period']
-        while not stopped and time.monotonic() < publish_at:
-            rclpy.spin_once(node, timeout_sec=0.02)
-    json.dump({'received': received, 'sent': sent}, sys.stdout)
-    node.destroy_node()
+    if matched:
+        plain.spin_until(time.monotonic() + job['settle'])
+        rounds = max((len(entry['samples']) for entry in job['publish']), default=0)
+        for index in range(rounds):
+            for publisher, entry in zip(plain.publishers, job['publish']):
+                if index < len(entry['samples']) and not stopped:
+                    publisher.publish(bytes.fromhex(entry['samples'][index]))
+                    sent += 1
+            plain.spin_until(time.monotonic() + job['period'])
+        plain.spin_until(time.monotonic() + job['reply_wait'], plain.all_expected)
+    json.dump({'received': plain.received, 'sent': sent, 'matched': matched,
+               'matched_after': matched_after}, sys.stdout)
+    plain.node.destroy_node()
     rclpy.shutdown()
 
 

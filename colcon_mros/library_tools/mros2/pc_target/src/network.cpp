@@ -7,8 +7,11 @@
 // of them and, holding the core lock, hands each datagram to its pcb's
 // receive callback in a pbuf, as lwIP's tcpip thread does. A datagram over
 // the board's receive limit (MROS2_PC_RECEIVE_LIMIT, genmros mros2-pc
-// --receive-limit) is cut to it, as mros2-posix' lwIP cuts it. Multicast
-// sent is not looped back to the board, as lwIP does by default.
+// --receive-limit) is cut to it, as mros2-posix' lwIP cuts it, and reported
+// by a host thread of its own (on the arm target the tcpip thread runs on the
+// board's stack size, which the C library's formatting would overflow and
+// blame on the board). Multicast sent is not looped back to the board, as
+// lwIP does by default.
 #include <arpa/inet.h>
 #include <errno.h>
 #include <fcntl.h>
@@ -55,6 +58,26 @@ std::vector<int> sockets_to_close;  // under the core lock
 int wake_pipe[2] = {-1, -1};
 int membership_socket = -1;
 unsigned long cut_datagrams;
+// The tcpip thread writes a CutDatagram here for the reporter to print.
+int report_pipe[2] = {-1, -1};
+
+struct CutDatagram {
+  ssize_t length;
+  struct sockaddr_in from;
+  unsigned long so_far;
+};
+
+void* report_cut_datagrams(void*) {
+  CutDatagram cut;
+  while (read(report_pipe[0], &cut, sizeof cut) == (ssize_t)sizeof cut) {
+    fprintf(stderr,
+            "mros2 PC target: a datagram of %zd bytes from %s:%u was cut to the board's "
+            "receive limit of %u bytes (%lu so far)\n",
+            cut.length, inet_ntoa(cut.from.sin_addr), ntohs(cut.from.sin_port),
+            (unsigned)MROS2_PC_RECEIVE_LIMIT, cut.so_far);
+  }
+  return NULL;
+}
 
 // Makes the tcpip thread take a new set of sockets.
 void wake_tcpip_thread() {
@@ -96,11 +119,11 @@ void receive_all(int socket) {
     if (length < 0) return;  // EAGAIN: all read
     if ((size_t)length > sizeof datagram) {
       if (cut_datagrams++ % 1000 == 0) {
-        fprintf(stderr,
-                "mros2 PC target: a datagram of %zd bytes from %s:%u was cut to the board's "
-                "receive limit of %u bytes (%lu so far)\n",
-                length, inet_ntoa(from.sin_addr), ntohs(from.sin_port),
-                (unsigned)MROS2_PC_RECEIVE_LIMIT, cut_datagrams);
+        CutDatagram cut = {length, from, cut_datagrams};
+        // A full pipe loses the report, never the board's time.
+        if (write(report_pipe[1], &cut, sizeof cut) < 0 && errno != EAGAIN) {
+          mros2_pc::stop("cannot report a cut datagram");
+        }
       }
       length = (ssize_t)sizeof datagram;
     }
@@ -179,8 +202,14 @@ void MX_LWIP_Init(void) {
 #ifdef MROS2_PC_SETS_RTPS_ADDRESS
   memcpy(rtps::Config::IP_ADDRESS.data(), &board_netif.ip_addr.addr, 4);
 #endif
-  if (pipe2(wake_pipe, O_NONBLOCK | O_CLOEXEC) != 0) {
-    mros2_pc::stop("cannot make the tcpip thread's pipe");
+  if (pipe2(wake_pipe, O_NONBLOCK | O_CLOEXEC) != 0 || pipe2(report_pipe, O_CLOEXEC) != 0 ||
+      fcntl(report_pipe[1], F_SETFL, O_NONBLOCK) != 0) {
+    mros2_pc::stop("cannot make the tcpip thread's pipes");
+  }
+  pthread_t reporter;
+  if (pthread_create(&reporter, NULL, report_cut_datagrams, NULL) != 0 ||
+      pthread_detach(reporter) != 0) {
+    mros2_pc::stop("cannot start the reporter of cut datagrams");
   }
   mros2_pc::start_thread("tcpip_thread", tcpip_thread, NULL, MROS2_PC_TCPIP_STACK_SIZE);
 }
