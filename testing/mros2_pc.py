@@ -4,10 +4,10 @@
 :func:`build` builds an app with the user's mros2 through genmros' own build
 (:mod:`colcon_mros.library_tools.mros2.pc_target.build`); a :class:`Session` holds the
 board's network (:class:`~colcon_mros.library_tools.mros2.pc_target.network.BoardNetwork`),
-runs the program on its board side with its output in a log, and rclpy peers
-(testing/mros2_pc_peer.py, in the ROS 2 wheels' venv) on its ROS side. Waits are for
-events (a line in the board's log, the peer's "peer ready"), each with a cap that only a
-broken run reaches.
+runs the program on its board side with its output in a log, and the plain node
+(testing/mros2_pc_peer.py, in the ROS 2 wheels' venv, with a :func:`plain_job`) on its ROS
+side. Waits are for events (a line in the board's log, the peer's "peer ready", the graph's
+matching), each with a cap that only a broken run reaches.
 """
 
 import json
@@ -28,6 +28,25 @@ PEER_SCRIPT = os.path.join(REPO, 'testing', 'mros2_pc_peer.py')
 # What a run waits for at most: discovery through embeddedRTPS' SEDP, whose heartbeat
 # comes every 4 s, under qemu on a busy 2-core machine.
 EVENT_CAP = 180
+# The plain node's procedure, what an ordinary ROS 2 node does: once the graph shows every
+# endpoint matched, it waits SETTLE seconds, publishes each sample once, PERIOD seconds
+# apart, then waits up to REPLY_WAIT seconds for the replies.
+SETTLE = 3.0
+PERIOD = 0.1
+REPLY_WAIT = 30.0
+
+
+def plain_job(publish=(), subscribe=(), expect=None, period=PERIOD, settle=SETTLE,
+              reply_wait=REPLY_WAIT, match_wait=EVENT_CAP):
+    """The plain node's job: publish, [(topic, type, [serialized samples])]; subscribe,
+    [(topic, type)]; expect, {topic: count} (its wait for replies ends once they came);
+    match_wait, its cap on the wait for matching."""
+    return {'publish': [{'topic': topic, 'type': type_name,
+                         'samples': [sample.hex() for sample in samples]}
+                        for topic, type_name, samples in publish],
+            'subscribe': [{'topic': topic, 'type': type_name} for topic, type_name in subscribe],
+            'expect': dict(expect or {}), 'period': period, 'settle': settle,
+            'reply_wait': reply_wait, 'match_wait': match_wait}
 
 
 def build(app_dir, build_dir, mros2_root, rtps_config, **options):
@@ -55,7 +74,7 @@ def peer_environment(log_dir, max_message=None):
 
 
 class Peer:
-    """testing/mros2_pc_peer.py running on the ROS side."""
+    """The plain node (testing/mros2_pc_peer.py) running on the ROS side."""
 
     def __init__(self, command, job, log_dir, max_message=None):
         self._stderr = open(os.path.join(log_dir, 'peer-%d.err' % time.monotonic_ns()), 'w+')
@@ -78,7 +97,8 @@ class Peer:
         return self._stderr.read()
 
     def result(self, stop=False):
-        """Its report once it is done (stop: end it now)."""
+        """Its report once it is done (stop: end it now): received, {topic: [samples]};
+        sent; matched, whether the graph showed every endpoint matched; matched_after."""
         if stop:
             self._process.send_signal(signal.SIGTERM)
         output = self._process.stdout.read()

@@ -55,19 +55,24 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
         'not applied   large-acknack-counts', 'not applied   bounded-submessage-lengths',
         'not applied   acknack-within-the-history', 'not applied   lease-in-milliseconds',
         'not applied   data-holds-its-fields',
-        'not applied   data-frag-for-best-effort-readers']
+        'not applied   data-frag-for-best-effort-readers',
+        'not applied   reader-catches-up-at-once']
     applied = run_genmros('mros2-harden', str(checkout))
     assert applied.stdout == ('genmros: applied one-writer-per-publisher, checked-receive, '
                               'publish-keeps-a-copy, accept-fast-dds-3-discovery, '
                               'checked-acknack, full-participant-table-refuses, '
                               'large-acknack-counts, bounded-submessage-lengths, '
                               'acknack-within-the-history, lease-in-milliseconds, '
-                              'data-holds-its-fields, data-frag-for-best-effort-readers\n')
+                              'data-holds-its-fields, data-frag-for-best-effort-readers, '
+                              'reader-catches-up-at-once\n')
     changed = {'include': ['mros2.h'], 'src': ['mros2.cpp'],
                'embeddedRTPS': ['include/rtps/discovery/ParticipantProxyData.h',
                                 'include/rtps/discovery/SEDPAgent.h',
                                 'include/rtps/discovery/SPDPAgent.h',
+                                'include/rtps/entities/StatefulReader.h',
+                                'include/rtps/entities/StatefulReader.tpp',
                                 'include/rtps/entities/StatefulWriter.tpp',
+                                'include/rtps/entities/WriterProxy.h',
                                 'include/rtps/messages/MessageReceiver.h',
                                 'src/discovery/ParticipantProxyData.cpp',
                                 'src/discovery/SPDPAgent.cpp',

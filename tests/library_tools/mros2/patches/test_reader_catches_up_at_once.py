@@ -1,0 +1,148 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""The patch reader-catches-up-at-once, unit-tested: embeddedRTPS' real StatefulReader of a
+copy of MROS2_ROOT, as it is and with the patch (alone, and with the whole series, through
+the series' driver), driven by the stateful reader check of testing/mros2_library against a
+writer simulated here as Fast DDS' SEDP writer behaves when a node starts (seen in a capture
+of genmros mros2-pc against an rclpy node): it announces its first samples with a heartbeat,
+sends its newer ones as they are made, answers each ACKNACK with the samples it asks for,
+and sends a heartbeat each period."""
+
+import os
+import shutil
+import subprocess
+
+import pytest
+
+from colcon_mros.library_tools.mros2.patches import LIBRARY_DIRS, mros2_patches
+from colcon_mros.library_tools.mros2.pc_target.build import TARGET_DIR
+from colcon_mros.library_tools.patch_series import apply_patches
+from conftest import REPO
+from user_checkouts import MROS2_ROOT
+
+pytestmark = [pytest.mark.needs_mros2]
+
+STAND_IN = os.path.join(REPO, 'testing', 'mros2_library')
+PATCH = 'reader-catches-up-at-once'
+# An rclpy node's publications: 13 endpoints, 2 of them made before the board matched.
+SAMPLES = 13
+ANNOUNCED = 2
+
+
+def _build(tmp_path, patches):
+    checkout = tmp_path / 'mros2'
+    for part in LIBRARY_DIRS:
+        shutil.copytree(os.path.join(MROS2_ROOT, part), str(checkout / part))
+    apply_patches(str(checkout), [patch for patch in mros2_patches() if patch.name in patches])
+    rtps = checkout / 'embeddedRTPS'
+    program = str(tmp_path / 'stateful_reader_check')
+    command = ['g++', '-std=gnu++14', '-g', '-fsanitize=address,undefined',
+               '-fno-sanitize-recover=all', '-I', os.path.join(STAND_IN, 'reader'),
+               '-I', os.path.join(TARGET_DIR, 'include'), '-I', str(rtps / 'include'),
+               '-I', str(rtps / 'thirdparty' / 'Micro-CDR' / 'include'),
+               str(rtps / 'src' / 'messages' / 'MessageTypes.cpp'),
+               str(rtps / 'src' / 'storages' / 'PBufWrapper.cpp'),
+               os.path.join(TARGET_DIR, 'src', 'pbuf.cpp'),
+               os.path.join(STAND_IN, 'stateful_reader_check.cpp'), '-o', program]
+    result = subprocess.run(command, capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr[-4000:]
+    return program
+
+
+@pytest.fixture(scope='module', params=['as-it-is', 'patch', 'series'])
+def reader(request, tmp_path_factory):
+    """(version, the check built on it)."""
+    patches = {'as-it-is': [], 'patch': [PATCH],
+               'series': [patch.name for patch in mros2_patches()]}[request.param]
+    return request.param, _build(tmp_path_factory.mktemp(request.param), patches)
+
+
+class Reader:
+    """The check running: steps in, what the reader did out."""
+
+    def __init__(self, program):
+        self.process = subprocess.Popen([program], stdin=subprocess.PIPE,
+                                        stdout=subprocess.PIPE, text=True)
+
+    def step(self, line):
+        """([sequence numbers taken], [[sequence numbers asked for] per ACKNACK])."""
+        self.process.stdin.write(line + '\n')
+        self.process.stdin.flush()
+        taken, asked = [], []
+        for output in iter(self.process.stdout.readline, 'done\n'):
+            kind, *numbers = output.split()
+            (taken.extend if kind == 'took' else asked.append)(list(map(int, numbers)))
+        return taken, asked
+
+    def close(self):
+        self.process.stdin.close()
+        assert self.process.wait(timeout=60) == 0
+
+
+def _node_start(program, heartbeat_periods=30):
+    """The simulated writer against the reader until it has taken every sample: (the heartbeat
+    periods that took, the samples in the order taken, the ACKNACKs' requests)."""
+    reader = Reader(program)
+    taken, requests = [], []
+    count = 1
+    pending = reader.step('heartbeat 1 %d %d' % (ANNOUNCED, count))[1]
+    for sn in range(ANNOUNCED + 1, SAMPLES + 1):  # made after the match: sent at once
+        got, asked = reader.step('data %d' % sn)
+        taken += got
+        pending += asked
+    periods = 0
+    while len(taken) < SAMPLES and periods < heartbeat_periods:
+        while pending:  # each ACKNACK answered with what it asks for
+            request = pending.pop(0)
+            requests.append(request)
+            for sn in request:
+                got, asked = reader.step('data %d' % sn)
+                taken += got
+                pending += asked
+        if len(taken) < SAMPLES:
+            periods += 1
+            count += 1
+            pending += reader.step('heartbeat 1 %d %d' % (SAMPLES, count))[1]
+    reader.close()
+    return periods, taken, requests
+
+
+def test_a_node_start_is_caught_up_with_before_the_next_heartbeat(reader):
+    version, program = reader
+    periods, taken, requests = _node_start(program)
+    assert taken == list(range(1, SAMPLES + 1))
+    if version == 'as-it-is':
+        # The defect: one sample asked for, and taken, per heartbeat period.
+        assert periods == SAMPLES - ANNOUNCED + 1
+        assert all(len(request) == 1 for request in requests)
+    else:
+        assert periods == 0
+        # Never more than 4 at a time: Fast DDS answers in one datagram.
+        assert requests == [[1, 2], [3, 4, 5, 6], [7, 8, 9, 10], [11, 12, 13]]
+
+
+def test_what_the_writer_no_longer_has_is_not_waited_for(reader):
+    version, program = reader
+    checked = Reader(program)
+    # The writer holds 5 to 8: samples 1 to 4 are gone.
+    taken, asked = checked.step('heartbeat 5 8 1')
+    assert asked == ([[1]] if version == 'as-it-is' else [[5, 6, 7, 8]])
+    assert checked.step('data 5') == (([], []) if version == 'as-it-is' else ([5], []))
+    # A heartbeat whose first is past its last and one: not a range; nothing is skipped.
+    taken, asked = checked.step('heartbeat 20 8 2')
+    assert asked == ([[1]] if version == 'as-it-is' else [[6, 7, 8]])
+    checked.close()
+
+
+def test_a_sample_after_a_gap_asks_once_for_what_is_missing(reader):
+    version, program = reader
+    checked = Reader(program)
+    assert checked.step('data 1') == ([1], [])
+    gap = [checked.step('data %d' % sn) for sn in (3, 4)]
+    if version == 'as-it-is':
+        assert gap == [([], []), ([], [])]
+    else:
+        # Sample 3 shows the writer has 2 and 3; 4 comes while that request is open.
+        assert gap == [([], [[2, 3]]), ([], [])]
+        assert checked.step('data 2') == ([2], [])
+        assert checked.step('data 3') == ([3], [[4]])
+    checked.close()
