@@ -92,6 +92,10 @@ class Peer:
     def running(self):
         return self._process.poll() is None
 
+    def matched(self):
+        """Whether the node has seen every endpoint matched."""
+        return 'peer matched' in self._errors()
+
     def _errors(self):
         self._stderr.seek(0)
         return self._stderr.read()
@@ -135,10 +139,18 @@ class Session:
         self.network.__enter__()
         return self
 
-    def start_board(self):
+    def start_board(self, command=None, job=None):
+        """Starts the program on the board side, or command in its place (the control, given
+        job as JSON on its stdin)."""
         self._log = open(self.log_path, 'w')
-        self._board = subprocess.Popen(self.network.board_command(self.program.command),
-                                       stdout=self._log, stderr=subprocess.STDOUT)
+        self._board = subprocess.Popen(
+            self.network.board_command(command or self.program.command),
+            stdin=subprocess.PIPE if job is not None else subprocess.DEVNULL, stdout=self._log,
+            stderr=subprocess.STDOUT, text=True,
+            env=peer_environment(self.work_dir) if command else None)
+        if job is not None:
+            self._board.stdin.write(json.dumps(job))
+            self._board.stdin.close()
 
     def output(self):
         with open(self.log_path, errors='replace') as stream:

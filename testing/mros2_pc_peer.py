@@ -13,9 +13,10 @@ topic of ``expect`` has taken its count. Nothing is sent again: a sample lost is
 stdin: JSON {"publish": [{"topic", "type" (pkg/msg/Type), "samples": [hex of serialized
 messages]}], "subscribe": [{"topic", "type"}], "expect": {topic: count}, "period",
 "settle", "reply_wait", "match_wait": seconds}. Writes "peer ready" to stderr once its
-endpoints exist. stdout: JSON {"received": {topic: [hex of each sample as it came]},
-"sent": count, "matched": whether the graph showed every endpoint matched, "matched_after":
-seconds from the node's start until it did}. SIGTERM ends any wait, and it reports.
+endpoints exist, and "peer matched" once the graph shows them matched. stdout: JSON
+{"received": {topic: [hex of each sample as it came]}, "sent": count, "matched": whether the
+graph showed every endpoint matched, "matched_after": seconds from the node's start until
+it did}. SIGTERM ends any wait, and it reports.
 """
 
 import importlib
@@ -81,6 +82,8 @@ def main():
     print('peer ready', file=sys.stderr, flush=True)
     matched = plain.spin_until(time.monotonic() + job['match_wait'], plain.all_matched)
     matched_after = time.monotonic() - started
+    if matched:
+        print('peer matched', file=sys.stderr, flush=True)
     sent = 0
     if matched:
         plain.spin_until(time.monotonic() + job['settle'])

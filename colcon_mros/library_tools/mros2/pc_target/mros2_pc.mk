@@ -29,7 +29,10 @@ ifeq ($(TARGET),arm)
 CROSS := arm-linux-gnueabihf-
 # Thumb-2 with a double-precision FPU and no unaligned access, as a
 # Cortex-M7 board runs it; static, so that qemu-arm needs no ARM libraries.
-CPU_FLAGS := -mthumb -mcpu=cortex-a7 -mfpu=vfpv4-d16 -mfloat-abi=hard -mno-unaligned-access
+# -Wno-psabi: GCC's note that passing a std::vector<double> changed in GCC
+# 7.1 is about linking with objects of older compilers, which none here is.
+CPU_FLAGS := -mthumb -mcpu=cortex-a7 -mfpu=vfpv4-d16 -mfloat-abi=hard -mno-unaligned-access \
+             -Wno-psabi
 LINK_FLAGS := -static
 else ifeq ($(TARGET),native)
 CROSS :=

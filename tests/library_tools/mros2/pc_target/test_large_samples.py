@@ -4,7 +4,7 @@ rclpy nodes whose Fast DDS profile (genmros mros2-peer-profile) keeps every
 datagram within the board's receive limit, 1472 (an Ethernet frame) and 4096 (mros2-posix'
 lwIP), send Images and strings larger than that in fragments, which the patch
 data-frag-for-best-effort-readers puts together. The app is
-tests/fixtures/mros2_pc_apps/fragment_echo; the board's config is mros2-posix' with
+testing/mros2_pc_apps/fragment_echo; the board's config is mros2-posix' with
 FRAGMENT_BUFFER_SIZE 65000 and THREAD_POOL_WORKLOAD_QUEUE_LENGTH 64 (a sample of 65000
 bytes is 51 fragments of 1296 bytes under 1472). Discovery runs under the same profile:
 SPDP and SEDP reach the board's reliable readers whole (no echo comes back otherwise)."""
@@ -18,7 +18,7 @@ import pytest
 
 from colcon_mros.mros2.rules import FRAGMENT_OVERHEAD
 from conftest import let_empy_take_stdout
-from testing import mros2_pc
+from testing import mros2_pc, mros2_soak
 from testing.mros2_posix import wire_bytes
 from user_checkouts import MROS2_ROOT
 
@@ -28,8 +28,7 @@ from mros2_pc_boards import config_of
 pytestmark = [pytest.mark.needs_mros2, pytest.mark.slow]
 
 
-APP = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
-    os.path.abspath(__file__))))), 'fixtures', 'mros2_pc_apps', 'fragment_echo')
+APP = os.path.join(mros2_soak.APPS, 'fragment_echo')
 BUFFER = 65000
 STRING, IMAGE = 'std_msgs/msg/String', 'sensor_msgs/msg/Image'
 # The board's port for user data (embeddedRTPS: participant 0 of domain 0).

@@ -244,8 +244,9 @@ def test_a_sample_over_the_receive_limit(apps, posix_root, tmp_path, typestore, 
 
 @pytest.mark.parametrize('uid', [None, 65534], ids=['as-root', 'as-nobody'])
 def test_the_command_runs_the_board_and_ros_commands_reach_it(posix_root, typestore, uid):
-    """genmros mros2-pc as a user runs it: the board on its network, a ROS 2 command on
-    the ROS side through `genmros mros2-pc ros --`, Ctrl-C, and the host as it was."""
+    """genmros mros2-pc as a user runs it (docs/mros2.md's example): the board on its
+    network, a ROS 2 command on the ROS side through `genmros mros2-pc ros --`, Ctrl-C, and
+    the host as it was."""
     if uid is not None and (os.geteuid() != 0 or shutil.which('setpriv') is None):
         pytest.skip('runs genmros as another uid: needs root and setpriv')
     before = mros2_pc.host_network()
@@ -264,7 +265,7 @@ def test_the_command_runs_the_board_and_ros_commands_reach_it(posix_root, typest
             board = subprocess.Popen(
                 genmros + [app, '--rtps-config', config_of(posix_root), '--mros2-root',
                            MROS2_ROOT, '--prefix', mros2_pc.WHEELS_VENV, '--target', 'native',
-                           '--patch', DISCOVERY[0], '-j2'],
+                           '--hardened', '-j2'],
                 stdout=log, stderr=subprocess.STDOUT, env=env)
         try:
             deadline = time.monotonic() + mros2_pc.EVENT_CAP
