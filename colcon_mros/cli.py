@@ -745,9 +745,7 @@ def _mros2_pc(options):
         if not options.command:
             raise GenmrosError('give the command to run on the ROS side: genmros mros2-pc ros '
                                '-- CMD')
-        command = network.ros_side_command(options.command)
-        sys.stdout.flush()
-        os.execvp(command[0], command)
+        return network.run_ros_side(options.command)
     if options.command:
         raise GenmrosError('unexpected %s after APP_DIR' % ' '.join(options.command))
     if not options.rtps_config:

@@ -77,8 +77,11 @@ class Peer:
     """The plain node (testing/mros2_pc_peer.py) running on the ROS side."""
 
     def __init__(self, command, job, log_dir, max_message=None):
-        self._stderr = open(os.path.join(log_dir, 'peer-%d.err' % time.monotonic_ns()), 'w+')
-        self._process = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+        # Files, not pipes: a report larger than a pipe holds would wait for its reader.
+        name = os.path.join(log_dir, 'peer-%d' % time.monotonic_ns())
+        self._stdout = open(name + '.out', 'w+')
+        self._stderr = open(name + '.err', 'w+')
+        self._process = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=self._stdout,
                                          stderr=self._stderr, text=True,
                                          env=peer_environment(log_dir, max_message))
         self._process.stdin.write(json.dumps(job))
@@ -105,12 +108,12 @@ class Peer:
         sent; matched, whether the graph showed every endpoint matched; matched_after."""
         if stop:
             self._process.send_signal(signal.SIGTERM)
-        output = self._process.stdout.read()
         status = self._process.wait(timeout=EVENT_CAP)
         if status != 0:
             raise AssertionError('the rclpy peer failed (%d): %s' % (status,
                                                                      self._errors()[-3000:]))
-        report = json.loads(output)
+        self._stdout.seek(0)
+        report = json.loads(self._stdout.read())
         report['received'] = {topic: [bytes.fromhex(sample) for sample in samples]
                               for topic, samples in report['received'].items()}
         return report
@@ -139,15 +142,15 @@ class Session:
         self.network.__enter__()
         return self
 
-    def start_board(self, command=None, job=None):
+    def start_board(self, command=None, job=None, max_message=None):
         """Starts the program on the board side, or command in its place (the control, given
-        job as JSON on its stdin)."""
+        job as JSON on its stdin, max_message as peer_environment takes it)."""
         self._log = open(self.log_path, 'w')
         self._board = subprocess.Popen(
             self.network.board_command(command or self.program.command),
             stdin=subprocess.PIPE if job is not None else subprocess.DEVNULL, stdout=self._log,
             stderr=subprocess.STDOUT, text=True,
-            env=peer_environment(self.work_dir) if command else None)
+            env=peer_environment(self.work_dir, max_message) if command else None)
         if job is not None:
             self._board.stdin.write(json.dumps(job))
             self._board.stdin.close()

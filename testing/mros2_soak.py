@@ -160,7 +160,7 @@ def run_start(program, case, typestore, work_dir, index, control=False):
         def start_board():
             if control:
                 session.start_board([os.path.join(mros2_pc.WHEELS_VENV, 'bin', 'python'),
-                                     CONTROL_SCRIPT], control_job)
+                                     CONTROL_SCRIPT], control_job, case.max_message)
             else:
                 session.start_board()
         if order == 'board first':
@@ -184,6 +184,15 @@ def run_start(program, case, typestore, work_dir, index, control=False):
             time.sleep(0.02)
         report = peer.result()
         output = session.stop_board()
+    if control:
+        # rclpy leaves the padding after a sample's last member as its buffer held it: the
+        # control's replies are held to the values, the board's to every byte.
+        types = {entry['topic']: entry['type'] for entry in job['subscribe']}
+        report['received'] = {topic: [typestore.deserialize_cdr(sample, types[topic])
+                                      for sample in samples]
+                              for topic, samples in report['received'].items()}
+        replies = {topic: [typestore.deserialize_cdr(sample, types[topic])
+                           for sample in samples] for topic, samples in replies.items()}
     arrived = sum(len(samples) for samples in report['received'].values())
     expected = sum(len(samples) for samples in replies.values())
     problems = ['%s: %d of %d came back%s' % (

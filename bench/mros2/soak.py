@@ -31,7 +31,7 @@ sys.path[:0] = [REPO, os.path.join(REPO, 'build', 'test-python')]  # testing/, r
 from colcon_mros.library_tools.mros2.patches import mros2_patches  # noqa: E402
 from testing import mros2_soak  # noqa: E402
 
-CONTROL_STARTS = 10
+CONTROL_STARTS = int(os.environ.get("SOAK_CONTROL_STARTS", 10))
 
 
 def seconds(values):

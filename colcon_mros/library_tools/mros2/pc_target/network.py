@@ -13,12 +13,13 @@ machine's own network namespace are not reached.
 
 :class:`BoardNetwork` sets the arrangement up and takes it down (the host
 namespace is never touched); it writes where its ROS side is to a state
-file that ``genmros mros2-pc ros -- CMD`` (:func:`ros_side_command`) reads.
+file that ``genmros mros2-pc ros -- CMD`` (:func:`run_ros_side`) reads.
 """
 
 import ipaddress
 import json
 import os
+import select
 import shutil
 import signal
 import subprocess
@@ -28,6 +29,8 @@ import tempfile
 from colcon_mros.errors import GenmrosError
 
 PREFIX_LENGTH = 24
+# Seconds a ROS-side command has to end once asked to, when its board has stopped.
+STOP_WAIT = 10
 MULTICAST = '224.0.0.0/4'
 BOARD_LINK, ROS_LINK = 'mros2-board', 'mros2-ros'
 # A process that holds a namespace until its stdin closes; it says when
@@ -152,8 +155,8 @@ class BoardNetwork:
         self._holders = []
 
 
-def ros_side_command(command):
-    """command, run on the ROS side of the board this user runs now."""
+def _running_board():
+    """The state of the board this user runs now."""
     try:
         with open(state_file()) as stream:
             state = json.load(stream)
@@ -163,8 +166,42 @@ def ros_side_command(command):
     if not os.path.exists('/proc/%d' % state['ros_pid']):
         raise GenmrosError('the board that wrote %s has stopped: start one with genmros '
                            'mros2-pc APP_DIR' % state_file())
-    return _inside(state['ros_pid']) + ['env', 'ROS_DOMAIN_ID=%d' % state['domain_id']] + \
-        list(command)
+    return state
+
+
+def run_ros_side(command):
+    """Runs command on the ROS side of the board this user runs now, until it ends or the
+    board stops (then it is stopped, with one line saying why: on its own it would go on in
+    a namespace that nothing else is in); returns its exit status."""
+    state = _running_board()
+    # The process that holds the ROS side's namespace ends when the board's network goes.
+    try:
+        network_gone = os.pidfd_open(state['ros_pid'])
+    except ProcessLookupError:
+        raise GenmrosError('the board that wrote %s has stopped: start one with genmros '
+                           'mros2-pc APP_DIR' % state_file())
+    child = subprocess.Popen(_inside(state['ros_pid']) +
+                             ['env', 'ROS_DOMAIN_ID=%d' % state['domain_id']] + list(command))
+    child_done = os.pidfd_open(child.pid)
+    try:
+        while True:
+            try:
+                ready, _, _ = select.select([network_gone, child_done], [], [])
+                break
+            except KeyboardInterrupt:  # Ctrl-C reached the command too: wait for it
+                continue
+        if child_done not in ready:
+            print('genmros: the board stopped: stopping %s' % command[0], file=sys.stderr,
+                  flush=True)
+            child.terminate()
+            try:
+                child.wait(timeout=STOP_WAIT)
+            except subprocess.TimeoutExpired:
+                child.kill()
+        return child.wait()
+    finally:
+        os.close(network_gone)
+        os.close(child_done)
 
 
 def run_board(program):

@@ -286,8 +286,15 @@ def test_the_command_runs_the_board_and_ros_commands_reach_it(posix_root, typest
             report['received'] = {topic: [bytes.fromhex(sample) for sample in samples]
                                   for topic, samples in report['received'].items()}
             check_echoes(report, typestore, texts)
+            # A ROS-side command still running when the board stops is stopped, saying why.
+            lingering = subprocess.Popen(
+                genmros + ['ros', '--', 'sh', '-c', 'echo started; exec sleep 600'],
+                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+            assert lingering.stdout.readline() == 'started\n'
             board.send_signal(signal.SIGINT)
             assert board.wait(timeout=mros2_pc.EVENT_CAP) == 0
+            assert lingering.wait(timeout=mros2_pc.EVENT_CAP) == -signal.SIGTERM
+            assert lingering.stderr.read() == 'genmros: the board stopped: stopping sh\n'
         finally:
             if board.poll() is None:
                 board.kill()
