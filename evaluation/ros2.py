@@ -255,17 +255,13 @@ def mros2_pc_run(workspace, work_dir, mros2_root, hardened):
     installs = sorted(glob.glob(os.path.join(workspace.root, 'install', '*')))
     publishes = APP_ALL_PUBLISHES if hardened else APP_ALL_PUBLISHES[:1]
     options = {'hardened': True, 'app_defines': ('APP_ALL_PUBLISHERS',)} if hardened else \
-        {'patches': ('accept-fast-dds-3-discovery',)}
+        {'patches': mros2_pc.TALKING_PATCHES}
     program = mros2_pc.build(MROS2_APP, os.path.join(work_dir, 'build'), mros2_root,
                              MROS2_APP_CONFIG, prefixes=installs + [WHEELS],
                              publish=publishes, subscribe=APP_SUBSCRIBES, **options)
     environment = {key: value for key, value in workspace.environment().items()
                    if key != 'ROS_AUTOMATIC_DISCOVERY_RANGE'}
     topics = [endpoint.split(':')[0] for endpoint in publishes]
-    go = os.path.join(work_dir, 'go')
-    # The board's side of each match, as mros2 reports it (pubMatch, subMatch).
-    matches = [('publisher matched with remote subscriber', len(publishes)),
-               ('subscriber matched with remote publisher', len(APP_SUBSCRIBES))]
     with mros2_pc.Session(program, work_dir) as session:
         session.start_board()
         if not session.wait_for_output('app ready'):
@@ -273,14 +269,8 @@ def mros2_pc_run(workspace, work_dir, mros2_root, hardened):
         peer = subprocess.Popen(
             session.network.ros_command([os.path.join(WHEELS, 'bin', 'python'), PEER, '--count',
                                          str(SAMPLES), '--timeout', str(PEER_TIMEOUT),
-                                         '--best-effort', '--topics', ','.join(topics),
-                                         '--go', go]),
+                                         '--best-effort', '--topics', ','.join(topics)]),
             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=environment)
-        deadline = time.monotonic() + PEER_TIMEOUT
-        while any(session.output().count(line) < count for line, count in matches) and \
-                peer.poll() is None and time.monotonic() < deadline:
-            time.sleep(0.1)
-        open(go, 'w').close()
         stdout, stderr = peer.communicate(timeout=PEER_TIMEOUT + 60)
         output = session.stop_board()
     with open(os.path.join(work_dir, 'board.log'), 'w') as log:

@@ -17,11 +17,11 @@ One line per topic; exits 0 only if every sample came and matched.
 
   ros2_peer.py [--count N] [--timeout SECONDS] [--best-effort] [--topics T,...]
 
-With --best-effort (a board on mros2 itself, whose endpoints are best-effort) its
-endpoints are best-effort too, and it sends its first sample only once each of its
-publishers and subscriptions has matched the board and the file --go names exists (the
-main job makes it when the board's log shows the board's side of every match); --topics
-checks only those topics.
+With --best-effort (a board on mros2 itself, whose endpoints are best-effort) it is the
+plain node (testing/mros2_pc_peer.py does the same with any samples): its endpoints are
+best-effort too, and once the graph shows each of its publishers and subscriptions matched
+with the board, it waits 3 s more, sends each sample once, 100 ms apart, and waits for the
+replies; nothing is sent again. --topics checks only those topics.
 
 Runs with rclpy (the ROS 2 wheels' venv) and test_ws_ros2's Python
 packages on the path; rosbags comes from the checkout's build/test-python.
@@ -52,6 +52,10 @@ from rosbags.typesys import Stores, get_types_from_msg, get_typestore  # noqa: E
 QOS = QoSProfile(depth=100, history=QoSHistoryPolicy.KEEP_LAST)
 BEST_EFFORT = QoSProfile(depth=100, history=QoSHistoryPolicy.KEEP_LAST,
                          reliability=ReliabilityPolicy.BEST_EFFORT)
+
+# The plain node's procedure (testing/mros2_pc.py): a wait once matched, and a sample's period.
+SETTLE = 3.0
+PERIOD = 0.1
 
 TYPESTORE = get_typestore(Stores.ROS2_HUMBLE)
 WORKSPACE_TYPES = (('mros2_base_msgs', 'Stamp'), ('mros2_test_msgs', 'Reading'))
@@ -151,7 +155,6 @@ def main():
     parser.add_argument('--timeout', type=float, default=60)
     parser.add_argument('--best-effort', action='store_true')
     parser.add_argument('--topics', help='the topics to check (default: all)')
-    parser.add_argument('--go', help='with --best-effort: send once this file exists')
     options = parser.parse_args()
     qos = BEST_EFFORT if options.best_effort else QOS
     count = options.count
@@ -192,12 +195,12 @@ def main():
                                        for subscription in kept)) \
             and time.monotonic() < deadline:
         time.sleep(0.1)
-    while options.go and not os.path.exists(options.go) and time.monotonic() < deadline:
-        time.sleep(0.1)
+    if options.best_effort:
+        time.sleep(SETTLE)
     for number in range(count):
         for publisher, samples in publishers:
             publisher.publish(samples[number])
-        time.sleep(0.05)
+        time.sleep(PERIOD if options.best_effort else 0.05)
     while not all(topic.done() for topic in topics) and time.monotonic() < deadline:
         time.sleep(0.1)
     passed = True

@@ -263,7 +263,8 @@ def run_ros2(steps, build_root):
 def run_mros2_pc(steps, workspace, build_root):
     """The main job's mros2 app on the user's mros2 (MROS2_ROOT), twice: one row per topic."""
     mros2_root = os.environ.get('MROS2_ROOT', '')
-    runs = (('mros2 as it is + accept-fast-dds-3-discovery, one publisher', False),
+    runs = (('mros2 as it is + accept-fast-dds-3-discovery, reader-catches-up-at-once, '
+             'one publisher', False),
             ('mros2 --hardened, six publishers', True))
     if not mros2_root or not os.path.isfile(os.path.join(mros2_root, 'src', 'mros2.cpp')):
         reason = 'MROS2_ROOT is not set' if not mros2_root else \

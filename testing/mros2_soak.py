@@ -143,8 +143,9 @@ class Start:
     order: str
     arrived: int
     expected: int
-    # Seconds from the later of the two starts until the node saw every endpoint matched,
-    # and until the board had reported its side of each match (None: not seen).
+    # Seconds from the later of the node's start and the board's "app ready" until the node
+    # saw every endpoint matched, and until the board had reported its side of each match
+    # (None: not seen).
     node_matched_after: float
     board_matched_after: float
     problem: str = ''
@@ -170,8 +171,9 @@ def run_start(program, case, typestore, work_dir, index, control=False):
             peer = session.peer(job, case.max_message)
         else:
             peer = session.peer(job, case.max_message)
-            started = time.monotonic()
             start_board()
+            session.wait_for_output('app ready')
+            started = time.monotonic()
         node_matched_after = board_matched_after = None
         wanted = len(job['publish']) + len(job['subscribe'])
         while peer.running():

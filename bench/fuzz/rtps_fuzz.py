@@ -7,7 +7,8 @@
         [--findings DIR] [--replay FILE]
 
 builds mros2-posix' echoreply_string with MROS2_ROOT --hardened (--as-it-is: with
-accept-fast-dds-3-discovery alone) for this PC with --sanitize (AddressSanitizer and
+accept-fast-dds-3-discovery and reader-catches-up-at-once alone)
+for this PC with --sanitize (AddressSanitizer and
 UndefinedBehaviorSanitizer), starts it, and records on the ROS side of its network the
 datagrams of a real exchange with an rclpy node (testing/mros2_pc_peer.py), both ways: SPDP,
 SEDP, DATA, HEARTBEAT, ACKNACK, INFO_TS, INFO_DST, and DATA_FRAG (the node's Fast DDS sends
@@ -286,7 +287,7 @@ def build(options, work):
     if not os.path.isdir(app):
         shutil.copytree(os.path.join(os.environ['MROS2_POSIX_ROOT'], 'workspace',
                                      'echoreply_string'), app)
-    patches = {'patches': ('accept-fast-dds-3-discovery',)} if options.as_it_is else \
+    patches = {'patches': mros2_pc.TALKING_PATCHES} if options.as_it_is else \
         {'hardened': True}
     return mros2_pc.build(app, os.path.join(work, 'build'), os.environ['MROS2_ROOT'],
                           board_config(work, options.as_it_is), target='native', sanitize=True,

@@ -8,8 +8,9 @@ mros2 board on the PC target and rclpy, mros2 as it is against --hardened, in on
 
 mros2-posix' echoreply_string (MROS2_POSIX_ROOT's workspace/, its include/rtps/config.h) is
 built with genmros mros2-pc for this PC, without sanitizers, twice: with MROS2_ROOT as it
-is plus accept-fast-dds-3-discovery (without which it discovers no Fast DDS 3 node), and
---hardened. Each run starts the board on its own network and round_trip_peer.py (rclpy,
+is plus accept-fast-dds-3-discovery and reader-catches-up-at-once (without which it
+discovers no Fast DDS 3 node, or matches it late), and --hardened. Each run starts the
+board on its own network and round_trip_peer.py (rclpy,
 the ROS 2 wheels) on its ROS side: --trips round trips one at a time, then --burst strings
 at once (best-effort: what is lost is counted). For orientation, rclpy_echo.py stands in
 for the board in the same place, rclpy on both sides. The builds take turns, run after run;
@@ -32,8 +33,8 @@ from testing import mros2_pc  # noqa: E402
 HERE = os.path.dirname(os.path.abspath(__file__))
 PEER = os.path.join(HERE, 'round_trip_peer.py')
 RCLPY_ECHO = os.path.join(HERE, 'rclpy_echo.py')
-DISCOVERY = 'accept-fast-dds-3-discovery'
-BUILDS = (('as it is + ' + DISCOVERY, {'patches': (DISCOVERY,)}),
+BUILDS = (('as it is + ' + ', '.join(mros2_pc.TALKING_PATCHES),
+           {'patches': mros2_pc.TALKING_PATCHES}),
           ('--hardened', {'hardened': True}))
 RCLPY = 'rclpy echo (orientation)'
 

@@ -104,8 +104,9 @@ def main():
             name, sum(start.passed for start in results), len(results),
             *seconds(start.board_matched_after for start in results),
             *seconds(start.node_matched_after for start in results), took))
-    print('\nthe series%s; times from the later of the two starts; %s' % (
-        ' without %s' % ', '.join(options.without) if options.without else '', work))
+    without = ' without %s' % ', '.join(options.without) if options.without else ''
+    print('\nthe series%s; times from the later of the node\'s start and the board\'s "app '
+          'ready"; %s' % (without, work))
     return 0 if all(start.passed for _, results, _ in rows for start in results) else 1
 
 

@@ -24,7 +24,8 @@ from colcon_mros.errors import GenmrosError, GenmrosProblems
 from colcon_mros.mros2.endpoints import PUBLISH, SUBSCRIBE, count, messages, topics_known
 from colcon_mros.mros2.rules import (CONFIG_HEADER, DATA_FRAG_PATCH, DISCOVERY_ANNOUNCEMENT,
                                      ENCAPSULATION, FRAGMENT_BUFFER, FRAGMENT_DEFAULTS,
-                                     PEER_MAX_MESSAGE, SETTINGS, TYPENAME_MAX,
+                                     FRAGMENT_OVERHEAD, PEER_MAX_MESSAGE, READER_QUEUE,
+                                     SETTINGS, TYPENAME_MAX,
                                      data_frag_requirements, discovery_problem,
                                      largest_datagram, requirements)
 
@@ -181,10 +182,16 @@ class Fit:
             if limit is not None and self.peer.value > limit.value:
                 lost = 'one of %d to %d bytes in one datagram is cut (%s %d), ' % (
                     limit.value + 1, self.peer.value, limit.name, limit.value)
+            fragment = self.peer.value - FRAGMENT_OVERHEAD
+            queue = self._setting(READER_QUEUE)
             return '%s: %s%sone larger than %s %d less its encapsulation (%d) is refused and ' \
-                'counted (mros2::Subscriber::refused_fragmented_samples)%s' % (
+                'counted (mros2::Subscriber::refused_fragmented_samples); one of S bytes in ' \
+                'fragments of %d (--peer-max-message %d less %d) needs %s >= S + %d and %s >= ' \
+                '(S + %d) / %d, rounded up (it is %d: up to %d bytes)%s' % (
                     buffer.where(), head, lost, FRAGMENT_BUFFER, buffer.value, ENCAPSULATION,
-                    tail)
+                    fragment, self.peer.value, FRAGMENT_OVERHEAD, FRAGMENT_BUFFER,
+                    ENCAPSULATION, READER_QUEUE, ENCAPSULATION, fragment, queue.value,
+                    queue.value * fragment - ENCAPSULATION, tail)
         return '%s: %sone larger than %s %d does not arrive%s; or apply the mros2 patch %s%s ' \
             'to take it in fragments' % (limit.where(), head, limit.name, limit.value, tail,
                                          DATA_FRAG_PATCH, _ADD_PATCH)

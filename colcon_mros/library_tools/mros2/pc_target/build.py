@@ -340,8 +340,12 @@ def build(request):
     limit = receive_limit(request.receive_limit)
     board = Board(config.path, request.receive_limit, root,
                   request.peer_max_message) if request.fit_check else None
-    export_firmware(os.path.join(build_dir, 'include'), request.workspaces, request.prefixes,
-                    (), (), publish, subscribe, request.storage, request.option_files, board)
+    exported = export_firmware(os.path.join(build_dir, 'include'), request.workspaces,
+                               request.prefixes, (), (), publish, subscribe, request.storage,
+                               request.option_files, board)
+    # What might not fit, as genmros mros2-fit says it (the misfits stopped the build).
+    for line in exported.fit.warnings if exported.fit else []:
+        print('genmros: warning: %s' % line, file=sys.stderr, flush=True)
     if config.change:
         print('genmros: %s' % config.change, flush=True)
 

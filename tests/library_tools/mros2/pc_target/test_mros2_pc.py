@@ -35,7 +35,7 @@ from user_checkouts import MROS2_ROOT
 pytestmark = [pytest.mark.needs_mros2, pytest.mark.slow]
 
 
-DISCOVERY = ('accept-fast-dds-3-discovery', 'reader-catches-up-at-once')
+DISCOVERY = mros2_pc.TALKING_PATCHES
 FIXTURE_APPS = os.path.join(REPO, 'tests', 'fixtures', 'mros2_pc_apps')
 STRING = 'std_msgs/msg/String'
 SANITIZER_REPORTS = ('AddressSanitizer', 'LeakSanitizer', 'runtime error:')
@@ -364,3 +364,25 @@ def test_echoing_a_long_string_reads_the_message_after_it_is_gone(apps, posix_ro
             assert session.wait_for_exit() != 0
             peer.result(stop=True)
             assert 'copyToFragBuf' in session.output()
+
+
+def test_an_unbounded_subscribed_type_is_warned_of_and_arm_builds_without_notes(
+        posix_root, tmp_path):
+    """The fit check's warning for a uint8[] the board subscribes to, with the fragment
+    buffer and queue a size needs, from the build itself; and no note of GCC's on the
+    std::vector<double> the app passes (the ABI of GCC 7.1 is no concern of a static build)."""
+    build_dir = str(tmp_path / 'build')
+    result = subprocess.run(
+        [sys.executable, '-m', 'colcon_mros', 'mros2-pc',
+         os.path.join(FIXTURE_APPS, 'unbounded'), '--rtps-config', config_of(posix_root),
+         '--mros2-root', MROS2_ROOT, '--prefix', mros2_pc.WHEELS_VENV, '--hardened',
+         '-o', build_dir, '--build-only', '-j2'],
+        capture_output=True, text=True, env=dict(os.environ, PYTHONPATH=REPO))
+    assert result.returncode == 0, result.stderr[-3000:]
+    assert 'std_msgs/msg/UInt8MultiArray: a sample has no largest size (unbounded)' in \
+        result.stderr
+    assert re.search(r'genmros: warning: .*config\.h, which sets no FRAGMENT_BUFFER_SIZE .*'
+                     r'UInt8MultiArray: .* needs FRAGMENT_BUFFER_SIZE >= S \+ 4 and '
+                     r'THREAD_POOL_WORKLOAD_QUEUE_LENGTH >= \(S \+ 4\) / 65324, rounded up '
+                     r'\(it is 20: up to \d+ bytes\)', result.stderr), result.stderr
+    assert 'note:' not in result.stdout + result.stderr.replace('genmros: note:', '')

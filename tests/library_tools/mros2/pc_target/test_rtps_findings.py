@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The RTPS fuzzer's findings, replayed (bench/fuzz/rtps_fuzz.py --replay) against a
 sanitized board of mros2-posix' echoreply_string on MROS2_ROOT: mros2 with only
-accept-fast-dds-3-discovery reports each, hardened (with the finding's patch) reports
+accept-fast-dds-3-discovery and reader-catches-up-at-once
+reports each, hardened (with the finding's patch) reports
 nothing and goes on echoing.
 
 tests/fixtures/rtps_findings/acknack.txt (checked-acknack): an ACKNACK cut after its
@@ -50,7 +51,7 @@ pytestmark = [pytest.mark.needs_mros2, pytest.mark.slow]
 
 FUZZER = os.path.join(REPO, 'bench', 'fuzz', 'rtps_fuzz.py')
 FINDINGS = os.path.join(REPO, 'tests', 'fixtures', 'rtps_findings')
-# What the board does with each finding, as it is (with accept-fast-dds-3-discovery alone).
+# What the board does with each finding, as it is (with mros2_pc.TALKING_PATCHES alone).
 AS_IT_IS = {'acknack.txt': "the board reports: ['AddressSanitizer']",
             'acknack_base.txt': 'the board reports nothing and no longer echoes',
             'acknack_count.txt': 'the board reports nothing and no longer echoes',
