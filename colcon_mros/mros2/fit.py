@@ -183,15 +183,17 @@ class Fit:
                 lost = 'one of %d to %d bytes in one datagram is cut (%s %d), ' % (
                     limit.value + 1, self.peer.value, limit.name, limit.value)
             fragment = self.peer.value - FRAGMENT_OVERHEAD
-            queue = self._setting(READER_QUEUE)
+            queue = self.settings.get(READER_QUEUE)
+            taken = '' if queue is None else ': with %d and %d, up to %d bytes' % (
+                buffer.value, queue.value,
+                max(0, min(buffer.value, queue.value * fragment) - ENCAPSULATION))
             return '%s: %s%sone larger than %s %d less its encapsulation (%d) is refused and ' \
                 'counted (mros2::Subscriber::refused_fragmented_samples); one of S bytes in ' \
                 'fragments of %d (--peer-max-message %d less %d) needs %s >= S + %d and %s >= ' \
-                '(S + %d) / %d, rounded up (it is %d: up to %d bytes)%s' % (
+                '(S + %d) / %d, rounded up%s%s' % (
                     buffer.where(), head, lost, FRAGMENT_BUFFER, buffer.value, ENCAPSULATION,
                     fragment, self.peer.value, FRAGMENT_OVERHEAD, FRAGMENT_BUFFER,
-                    ENCAPSULATION, READER_QUEUE, ENCAPSULATION, fragment, queue.value,
-                    queue.value * fragment - ENCAPSULATION, tail)
+                    ENCAPSULATION, READER_QUEUE, ENCAPSULATION, fragment, taken, tail)
         return '%s: %sone larger than %s %d does not arrive%s; or apply the mros2 patch %s%s ' \
             'to take it in fragments' % (limit.where(), head, limit.name, limit.value, tail,
                                          DATA_FRAG_PATCH, _ADD_PATCH)

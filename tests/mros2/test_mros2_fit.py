@@ -229,8 +229,8 @@ def test_with_the_patch_fragmented_samples_need_the_buffer(tmp_path):
         '0 less its encapsulation (4) is refused and counted '
         '(mros2::Subscriber::refused_fragmented_samples); one of S bytes in fragments of 424 '
         '(--peer-max-message 600 less 176) needs FRAGMENT_BUFFER_SIZE >= S + 4 and '
-        'THREAD_POOL_WORKLOAD_QUEUE_LENGTH >= (S + 4) / 424, rounded up (it is 1: up to 420 '
-        'bytes); bounded storage gives the exact need' % (default, UNBOUNDED)]
+        'THREAD_POOL_WORKLOAD_QUEUE_LENGTH >= (S + 4) / 424, rounded up: with 0 and 1, up to 0 '
+        'bytes; bounded storage gives the exact need' % (default, UNBOUNDED)]
     fit = _fragment_fit(tmp_path, '1472', 600, RECEIVER_PATCHED, buffer=736)
     assert fit.misfits == [] and fit.notes == []
     assert fit.warnings[0].startswith(
@@ -256,8 +256,8 @@ def test_with_the_patch_the_peers_message_must_fit_the_receive_limit(tmp_path):
         'its encapsulation (4) is refused and counted '
         '(mros2::Subscriber::refused_fragmented_samples); one of S bytes in fragments of 524 '
         '(--peer-max-message 700 less 176) needs FRAGMENT_BUFFER_SIZE >= S + 4 and '
-        'THREAD_POOL_WORKLOAD_QUEUE_LENGTH >= (S + 4) / 524, rounded up (it is 20: up to 10476 '
-        'bytes); bounded storage gives the exact need'
+        'THREAD_POOL_WORKLOAD_QUEUE_LENGTH >= (S + 4) / 524, rounded up: with 736 and 20, up to '
+        '732 bytes; bounded storage gives the exact need'
         % (tmp_path / 'rtps' / 'config.h', UNBOUNDED))
     # sent whole by the ROS side (65500), over the limit
     fit = _fragment_fit(tmp_path, '600', 65500, RECEIVER_PATCHED, buffer=736)

@@ -78,9 +78,11 @@ class Reader:
         assert self.process.wait(timeout=60) == 0
 
 
-def _node_start(program, heartbeat_periods=30):
+def _node_start(program, heartbeat_periods=30, answered=None):
     """The simulated writer against the reader until it has taken every sample: (the heartbeat
-    periods that took, the samples in the order taken, the ACKNACKs' requests)."""
+    periods that took, the samples in the order taken, the ACKNACKs' requests). answered: how
+    many of the samples asked for an answer brings (a board cuts a datagram at its receive
+    limit); all by default."""
     reader = Reader(program)
     taken, requests = [], []
     count = 1
@@ -94,7 +96,7 @@ def _node_start(program, heartbeat_periods=30):
         while pending:  # each ACKNACK answered with what it asks for
             request = pending.pop(0)
             requests.append(request)
-            for sn in request:
+            for sn in request[:answered]:
                 got, asked = reader.step('data %d' % sn)
                 taken += got
                 pending += asked
@@ -120,6 +122,19 @@ def test_a_node_start_is_caught_up_with_before_the_next_heartbeat(reader):
         assert requests == [[1, 2], [3, 4, 5, 6], [7, 8, 9, 10], [11, 12, 13]]
 
 
+def test_answers_cut_to_one_sample_make_the_requests_smaller(reader):
+    version, program = reader
+    periods, taken, requests = _node_start(program, answered=1)
+    assert taken == list(range(1, SAMPLES + 1))
+    if version == 'as-it-is':
+        assert periods == SAMPLES - ANNOUNCED + 1
+    else:
+        # A heartbeat finds [1, 2] answered with 1 alone, the next [2, 3]: two halvings, then
+        # one at a time, each asked for as soon as the one before is taken.
+        assert periods == 2
+        assert requests == [[1, 2], [2, 3]] + [[sn] for sn in range(3, SAMPLES + 1)]
+
+
 def test_what_the_writer_no_longer_has_is_not_waited_for(reader):
     version, program = reader
     checked = Reader(program)
@@ -127,9 +142,10 @@ def test_what_the_writer_no_longer_has_is_not_waited_for(reader):
     taken, asked = checked.step('heartbeat 5 8 1')
     assert asked == ([[1]] if version == 'as-it-is' else [[5, 6, 7, 8]])
     assert checked.step('data 5') == (([], []) if version == 'as-it-is' else ([5], []))
-    # A heartbeat whose first is past its last and one: not a range; nothing is skipped.
+    # A heartbeat whose first is past its last and one: not a range; nothing is skipped. It
+    # finds the request answered in part: the next asks for half as many.
     taken, asked = checked.step('heartbeat 20 8 2')
-    assert asked == ([[1]] if version == 'as-it-is' else [[6, 7, 8]])
+    assert asked == ([[1]] if version == 'as-it-is' else [[6, 7]])
     checked.close()
 
 
