@@ -42,7 +42,7 @@ REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.append(REPO)
 sys.path.append(os.path.join(REPO, 'build', 'test-python'))
 
-from testing import mros2_posix  # noqa: E402
+from testing import mros2_posix, mros2_soak  # noqa: E402
 from testing.ros_graph import PYTHON, CatkinWorkspace  # noqa: E402
 
 import board  # noqa: E402
@@ -287,6 +287,37 @@ def run_mros2_pc(steps, workspace, build_root):
             steps.add('%s: %s' % (title, row_title), detail, problem)
         peaks = [line.strip() for line in output.splitlines() if ' of ' in line and '%' in line]
         print('  stacks: ' + '; '.join(' '.join(line.split()[:5]) for line in peaks), flush=True)
+    run_plain_node(steps, mros2_root, build_root)
+
+
+def run_plain_node(steps, mros2_root, build_root):
+    """The plain node (what a user's node does) against a hardened board of the soak's app
+    three_echoes under qemu-arm, and against the control, an rclpy node in the board's place
+    (testing/mros2_soak.py): one row each, every reply exact."""
+    from rosbags.typesys import Stores, get_typestore
+    posix_root = os.environ.get('MROS2_POSIX_ROOT', '')
+    title = 'ROS 2 on mros2 (--hardened): the plain node and three_echoes under qemu-arm'
+    if not os.path.isfile(os.path.join(posix_root, 'include', 'rtps', 'config.h')):
+        print('\n%s, and its control, were not run: MROS2_POSIX_ROOT is not set (the soak\'s '
+              "board config is mros2-posix' include/rtps/config.h)." % title, flush=True)
+        return
+    case = mros2_soak.CASES['arm-small']
+    address = mros2_soak.ADDRESSES[0]
+    work = os.path.join(build_root, 'plain_node')
+    programs = mros2_soak.build_programs(case, posix_root, mros2_root, work,
+                                         addresses=(address,))
+    typestore = get_typestore(Stores.ROS2_HUMBLE)
+
+    def exchange(control):
+        start = mros2_soak.run_start(programs[address], case, typestore, os.path.join(
+            work, 'control' if control else 'board'), 0, control=control)
+        if not start.passed:
+            raise AssertionError(start.problem)
+        return start, '%d of %d replies exact, the node matched after %.2f s' % (
+            start.arrived, start.expected, start.node_matched_after)
+    steps.run(title, exchange, False)
+    steps.run('ROS 2 control: the plain node and an rclpy node in the board\'s place',
+              exchange, True)
 
 
 def run_mros_v1(steps, workspace, mros_root, build_root, count):

@@ -81,7 +81,7 @@ def board_config(posix_root, case, directory):
     return path
 
 
-def build_programs(case, posix_root, mros2_root, work_dir, patches=None):
+def build_programs(case, posix_root, mros2_root, work_dir, patches=None, addresses=ADDRESSES):
     """{address: program} of the case (patches: these of the series, not all of it)."""
     options = case.build_options()
     if patches is not None:
@@ -90,7 +90,7 @@ def build_programs(case, posix_root, mros2_root, work_dir, patches=None):
     return {address: mros2_pc.build(os.path.join(APPS, case.app),
                                     os.path.join(work_dir, case.name, 'build-' + address),
                                     mros2_root, config, board_address=address, **options)
-            for address in ADDRESSES}
+            for address in addresses}
 
 
 def exchange(case, typestore):
