@@ -443,7 +443,7 @@ def _add_mros2_pc(subparsers):
                     'of its own: the board side has the board\'s address, the ROS side the '
                     'peer\'s, in one user namespace with two network namespaces (no root). '
                     '`genmros mros2-pc ros -- CMD` runs a ROS 2 command on the ROS side of the '
-                    'board that runs.',
+                    'board that runs, and stops it if the board stops first.',
         usage='genmros mros2-pc APP_DIR --rtps-config FILE [options]\n'
               '       genmros mros2-pc ros -- CMD [ARG ...]')
     parser.add_argument('app_dir', metavar='APP_DIR',
