@@ -198,7 +198,9 @@ def run_ros_side(command):
                 child.wait(timeout=STOP_WAIT)
             except subprocess.TimeoutExpired:
                 child.kill()
-        return child.wait()
+        status = child.wait()
+        # A command ended by a signal ends genmros as a shell reports it: 128 + the signal.
+        return status if status >= 0 else 128 - status
     finally:
         os.close(network_gone)
         os.close(child_done)

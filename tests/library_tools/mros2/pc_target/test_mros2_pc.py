@@ -296,7 +296,7 @@ def test_the_command_runs_the_board_and_ros_commands_reach_it(posix_root, typest
             assert lingering.stdout.readline() == 'started\n'
             board.send_signal(signal.SIGINT)
             assert board.wait(timeout=mros2_pc.EVENT_CAP) == 0
-            assert lingering.wait(timeout=mros2_pc.EVENT_CAP) == -signal.SIGTERM
+            assert lingering.wait(timeout=mros2_pc.EVENT_CAP) == 128 + signal.SIGTERM
             assert lingering.stderr.read() == 'genmros: the board stopped: stopping sh\n'
         finally:
             if board.poll() is None:
