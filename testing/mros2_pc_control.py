@@ -12,19 +12,15 @@ are. Writes "app ready" to stdout once its endpoints exist, and runs until SIGIN
 SIGTERM.
 """
 
-import importlib
 import json
 import signal
 import sys
 
 import rclpy
-from rclpy.qos import QoSProfile, ReliabilityPolicy
 from rclpy.signals import SignalHandlerOptions
 
-
-def message_class(type_name):
-    package, _, name = type_name.split('/')
-    return getattr(importlib.import_module('%s.msg' % package), name)
+# The plain node's, beside this script.
+from mros2_pc_peer import BEST_EFFORT, message_class
 
 
 def changed_text(message):
@@ -51,16 +47,15 @@ def main():
     for stop in (signal.SIGINT, signal.SIGTERM):
         signal.signal(stop, lambda *_: stopped.append(True))
     node = rclpy.create_node('genmros_control')
-    qos = QoSProfile(depth=100, reliability=ReliabilityPolicy.BEST_EFFORT)
     for entry in job['echo']:
         kind = message_class(entry['type'])
-        publisher = node.create_publisher(kind, entry['to'], qos)
+        publisher = node.create_publisher(kind, entry['to'], BEST_EFFORT)
         change = CHANGES[entry['change']]
 
         def echo(message, publisher=publisher, change=change):
             change(message)
             publisher.publish(message)
-        node.create_subscription(kind, entry['from'], echo, qos)
+        node.create_subscription(kind, entry['from'], echo, BEST_EFFORT)
     print('app ready', flush=True)
     while not stopped:
         rclpy.spin_once(node, timeout_sec=0.05)

@@ -30,6 +30,10 @@ from rclpy.qos import QoSProfile, ReliabilityPolicy
 from rclpy.signals import SignalHandlerOptions
 
 
+# mros2's endpoints are best-effort.
+BEST_EFFORT = QoSProfile(depth=100, reliability=ReliabilityPolicy.BEST_EFFORT)
+
+
 def message_class(type_name):
     package, _, name = type_name.split('/')
     return getattr(importlib.import_module('%s.msg' % package), name)
@@ -42,15 +46,14 @@ class PlainNode:
         self.job = job
         self.stopped = stopped
         self.node = rclpy.create_node('genmros_plain_node')
-        qos = QoSProfile(depth=100, reliability=ReliabilityPolicy.BEST_EFFORT)
         self.received = {entry['topic']: [] for entry in job['subscribe']}
         for entry in job['subscribe']:
             self.node.create_subscription(
                 message_class(entry['type']), entry['topic'],
                 lambda raw, topic=entry['topic']: self.received[topic].append(bytes(raw).hex()),
-                qos, raw=True)
+                BEST_EFFORT, raw=True)
         self.publishers = [self.node.create_publisher(message_class(entry['type']),
-                                                      entry['topic'], qos)
+                                                      entry['topic'], BEST_EFFORT)
                            for entry in job['publish']]
 
     def spin_until(self, deadline, done=lambda: False):

@@ -91,12 +91,17 @@ PARSERS = (('MessageReceiver: DATA', 'rtps::MessageReceiver::processDataSubmessa
 RECORDING_MAX_MESSAGE = 1400
 
 
-def echoes(session, texts, max_message=None, match_wait=mros2_pc.EVENT_CAP):
-    """The plain node sends the board each text once: (the samples sent, those echoed)."""
+def strings(texts):
+    """Each text as a std_msgs/String sample on the wire."""
     from rosbags.typesys import Stores, get_typestore
     typestore = get_typestore(Stores.ROS2_HUMBLE)
     string = typestore.types['std_msgs/msg/String']
-    samples = [wire_bytes(typestore, string(data=text), 'std_msgs/msg/String') for text in texts]
+    return [wire_bytes(typestore, string(data=text), 'std_msgs/msg/String') for text in texts]
+
+
+def echoes(session, texts, max_message=None, match_wait=mros2_pc.EVENT_CAP):
+    """The plain node sends the board each text once: (the samples sent, those echoed)."""
+    samples = strings(texts)
     job = mros2_pc.plain_job(publish=[('to_stm', 'std_msgs/msg/String', samples)],
                              subscribe=[('to_linux', 'std_msgs/msg/String')],
                              expect={'to_linux': len(texts)}, match_wait=match_wait)
@@ -154,10 +159,7 @@ def live_writer(session, work_dir, seconds):
     name), and the datagrams of its first fragmented sample: (peer, datagrams)."""
     path = os.path.join(work_dir, 'live_writer.jsonl')
     capture = start_capture(session, path)
-    from rosbags.typesys import Stores, get_typestore
-    typestore = get_typestore(Stores.ROS2_HUMBLE)
-    string = typestore.types['std_msgs/msg/String']
-    sample = wire_bytes(typestore, string(data='fragments ' + 'f' * 3000), 'std_msgs/msg/String')
+    sample, = strings(['fragments ' + 'f' * 3000])
     job = mros2_pc.plain_job(publish=[('to_stm', 'std_msgs/msg/String', [sample] * int(seconds))],
                              period=1.0, reply_wait=0)
     peer = session.peer(job, RECORDING_MAX_MESSAGE)

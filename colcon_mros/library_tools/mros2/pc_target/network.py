@@ -156,30 +156,26 @@ class BoardNetwork:
 
 
 def _running_board():
-    """The state of the board this user runs now."""
+    """The state of the board this user runs now, and a pidfd of the process that holds
+    its ROS side's namespace (it ends when the board's network goes)."""
     try:
         with open(state_file()) as stream:
             state = json.load(stream)
     except (OSError, ValueError):
         raise GenmrosError('no board runs (no %s): start one with genmros mros2-pc APP_DIR'
                            % state_file())
-    if not os.path.exists('/proc/%d' % state['ros_pid']):
+    try:
+        return state, os.pidfd_open(state['ros_pid'])
+    except ProcessLookupError:
         raise GenmrosError('the board that wrote %s has stopped: start one with genmros '
                            'mros2-pc APP_DIR' % state_file())
-    return state
 
 
 def run_ros_side(command):
     """Runs command on the ROS side of the board this user runs now, until it ends or the
     board stops (then it is stopped, with one line saying why: on its own it would go on in
     a namespace that nothing else is in); returns its exit status."""
-    state = _running_board()
-    # The process that holds the ROS side's namespace ends when the board's network goes.
-    try:
-        network_gone = os.pidfd_open(state['ros_pid'])
-    except ProcessLookupError:
-        raise GenmrosError('the board that wrote %s has stopped: start one with genmros '
-                           'mros2-pc APP_DIR' % state_file())
+    state, network_gone = _running_board()
     child = subprocess.Popen(_inside(state['ros_pid']) +
                              ['env', 'ROS_DOMAIN_ID=%d' % state['domain_id']] + list(command))
     child_done = os.pidfd_open(child.pid)
