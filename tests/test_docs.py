@@ -11,7 +11,7 @@ import re
 import pytest
 
 from colcon_mros.cli import build_parser
-from conftest import REPO
+from support.checkout import REPO
 
 PACKAGE = os.path.join(REPO, 'colcon_mros')
 DOCUMENTS = [os.path.join(REPO, 'README.md'), os.path.join(REPO, 'bench', 'README.md')] + \

@@ -6,7 +6,7 @@ the tests, as colcon-core's suite holds its own code."""
 import subprocess
 import sys
 
-from conftest import REPO
+from support.checkout import REPO
 
 CHECKED = ['setup.py', 'colcon_mros', 'testing', 'evaluation', 'bench', 'scripts', 'tests']
 

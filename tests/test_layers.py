@@ -10,7 +10,7 @@ stack's front end only."""
 import ast
 import os
 
-from conftest import REPO
+from support.checkout import REPO
 
 PACKAGE = os.path.join(REPO, 'colcon_mros')
 # Bottom first; a level's subpackages are siblings. '' is the package's

@@ -13,7 +13,7 @@ import pytest
 
 from colcon_mros.core.output import is_generated
 from colcon_mros.core.render import render_template
-from conftest import REPO
+from support.checkout import REPO
 
 SPDX = 'SPDX-License-Identifier: BSD-3-Clause'
 # How each kind of source file says it, by the end of its name.

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The README's main command's driver (evaluation/run.py) as it runs, with
-this checkout installed (tests/checkout_install.py): every step of the main
+this checkout installed (tests/support/checkout_install.py): every step of the main
 job passes and its table says so, ROS 1's and then ROS 2's, with no mROS
 checkout; with the user's (MROS_V1_ROOT), the paper's five directions on the
 real library pass too, within the board's task stacks."""
@@ -12,9 +12,9 @@ import sys
 
 import pytest
 
-from checkout_install import checkout_install
-from conftest import REPO
-from user_checkouts import MROS_V1_ROOT
+from support.checkout_install import checkout_install
+from support.checkout import REPO
+from support.user_checkouts import MROS_V1_ROOT
 
 pytestmark = [pytest.mark.slow, pytest.mark.needs_qemu]
 

@@ -13,7 +13,7 @@ import sys
 
 import pytest
 
-from conftest import REPO
+from support.checkout import REPO
 from testing import ros_paths
 
 # Two renders, then rosidl_adapter's own template, in one process, as

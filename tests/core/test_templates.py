@@ -12,7 +12,7 @@ import re
 import em
 import pytest
 
-from conftest import REPO
+from support.checkout import REPO
 
 TEMPLATES = sorted(glob.glob(os.path.join(REPO, 'colcon_mros', '*', 'templates', '*.em')))
 _DOTTED = r'[A-Za-z_]\w*(?:\.[A-Za-z_]\w*)*'

@@ -7,7 +7,7 @@ definition's claim. The catkin side is in test_catkin_incremental.py."""
 import os
 
 from colcon_mros.mros_v1.cpp import SUPPORT_HEADERS
-from conftest import run_genmros
+from support.checkout import run_genmros
 from testing.ros_paths import ros1_package_dir
 
 STD_MSGS = ros1_package_dir('std_msgs')

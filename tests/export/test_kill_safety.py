@@ -19,8 +19,8 @@ import time
 
 import pytest
 
-from conftest import REPO, run_genmros
-from file_trees import package_xml, snapshot, write_tree
+from support.checkout import REPO, run_genmros
+from support.file_trees import package_xml, snapshot, write_tree
 from testing.ros_paths import prefix_arguments, ros1_prefixes
 
 TYPES = 40

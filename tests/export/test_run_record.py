@@ -9,9 +9,9 @@ import sys
 import time
 
 from colcon_mros.export.run_record import RunRecord, snapshot
+from support.checkout import REPO
 
 RUN = 'genmros 0.1.0 0123abcd'
-REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
 def _write(path, text):

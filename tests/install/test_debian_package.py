@@ -9,7 +9,7 @@ import subprocess
 import pytest
 
 from colcon_mros import __version__
-from conftest import REPO
+from support.checkout import REPO
 
 pytestmark = pytest.mark.slow
 

@@ -10,8 +10,8 @@ import os
 import shutil
 import subprocess
 
-from conftest import REPO, TEST_WS
-from user_install import NOBODY, install_as_nobody, pip_flags
+from support.checkout import REPO, TEST_WS
+from support.user_install import NOBODY, install_as_nobody, pip_flags
 
 import pytest
 

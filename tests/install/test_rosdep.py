@@ -7,7 +7,7 @@ an empty rosdistro index, so it reads nothing from the network."""
 import os
 import subprocess
 
-from conftest import REPO
+from support.checkout import REPO
 
 PACKAGE_XML = '''<?xml version="1.0"?>
 <package format="2">

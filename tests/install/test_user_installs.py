@@ -17,9 +17,9 @@ import subprocess
 import pytest
 
 from testing.ros_graph import Board, RosGraph
-from user_checkouts import MROS_V1_ROOT
-from conftest import REPO, TEST_WS
-from user_install import NOBODY, Install, copy_sources, install_as_nobody, pip_flags
+from support.user_checkouts import MROS_V1_ROOT
+from support.checkout import REPO, TEST_WS
+from support.user_install import NOBODY, Install, copy_sources, install_as_nobody, pip_flags
 
 pytestmark = pytest.mark.slow
 

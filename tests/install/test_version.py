@@ -8,8 +8,8 @@ import os
 import re
 import subprocess
 
-from checkout_install import checkout_install
-from conftest import REPO, run_genmros
+from support.checkout_install import checkout_install
+from support.checkout import REPO, run_genmros
 
 from colcon_mros import __version__
 

@@ -14,7 +14,7 @@ import re
 import shutil
 
 import pytest
-from settings_headers import header_paths, small_settings
+from support.settings_headers import header_paths, small_settings
 from fixtures.build_integration.tools import (
     FIRMWARE_FIXTURE, TEST_WS_SRC, genmsg_md5, new_workspace, run, search_path_of, unwrapped)
 from testing.ros_paths import ros1_package_dir, ros1_prefixes

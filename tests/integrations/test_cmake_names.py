@@ -8,7 +8,7 @@ import re
 import subprocess
 import sys
 
-from conftest import REPO
+from support.checkout import REPO
 
 CMAKE_FILES = [os.path.join(REPO, 'cmake', 'mros_generate.cmake'),
                os.path.join(REPO, 'share', 'genmros', 'cmake', 'genmros-extras.cmake')]

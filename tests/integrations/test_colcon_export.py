@@ -12,8 +12,8 @@ import shutil
 
 import pytest
 
-from checkout_install import checkout_install
-from conftest import REPO
+from support.checkout_install import checkout_install
+from support.checkout import REPO
 from testing.ros_paths import prefix_arguments, ros1_prefixes
 
 from colcon_mros.mros_v1.cpp import SUPPORT_HEADERS

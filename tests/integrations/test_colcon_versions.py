@@ -12,9 +12,9 @@ import subprocess
 
 import pytest
 
-from conftest import TEST_WS
+from support.checkout import TEST_WS
 from fixtures.build_integration.tools import run, user_environment
-from user_install import copy_sources, pip_flags
+from support.user_install import copy_sources, pip_flags
 
 pytestmark = pytest.mark.slow
 

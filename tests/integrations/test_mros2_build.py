@@ -19,7 +19,7 @@ import shutil
 
 import pytest
 
-from conftest import REPO
+from support.checkout import REPO
 from fixtures.build_integration.tools import run, unwrapped
 from testing import fastcdr
 

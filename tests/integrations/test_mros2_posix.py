@@ -22,7 +22,7 @@ import os
 
 import pytest
 
-from conftest import REPO
+from support.checkout import REPO
 from testing import mros2_posix
 
 pytestmark = pytest.mark.slow

@@ -18,9 +18,10 @@ import sys
 
 import pytest
 
-from compile_checks import LANGUAGE_MODES, STRICT_FLAGS, TARGETS, every_header_translation_unit
-from conftest import REPO, TEST_WS, run_genmros
-from settings_headers import define, header_paths, small_settings
+from support.compile_checks import (LANGUAGE_MODES, STRICT_FLAGS, TARGETS,
+                                    every_header_translation_unit)
+from support.checkout import REPO, TEST_WS, run_genmros
+from support.settings_headers import define, header_paths, small_settings
 from testing.ros_paths import prefix_arguments, ros1_prefixes
 
 # cmake, colcon, catkin or make builds: more than half a minute.

@@ -17,9 +17,9 @@ import sys
 
 import pytest
 
-from conftest import TEST_WS
+from support.checkout import TEST_WS
 from testing.ros_paths import ros1_package_dir
-from user_install import copy_sources
+from support.user_install import copy_sources
 
 pytestmark = pytest.mark.slow
 

@@ -24,8 +24,8 @@ import shutil
 
 import pytest
 
-from conftest import REPO, run_genmros
-from checkout_install import checkout_install
+from support.checkout import REPO, run_genmros
+from support.checkout_install import checkout_install
 from fixtures.build_integration.tools import run, user_environment
 
 DOCS = os.path.join(REPO, 'docs', 'mros2.md')

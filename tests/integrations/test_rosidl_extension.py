@@ -7,7 +7,7 @@ user builds it (--merge-install): /usr/bin first on PATH, no ROS variables
 set. The packages find_package(rosidl_generator_cpp) and
 find_package(rosidl_generator_mros2); this checkout's generator is used, not
 an installed one: rosidl_generator_mros2_DIR names the CMake package of this
-checkout's install (tests/checkout_install.py, which also holds the support
+checkout's install (tests/support/checkout_install.py, which also holds the support
 headers) and rosidl_generator_mros2_BIN a wrapper that runs the checkout's
 entry point (and logs each run). Each package installs its headers under
 include/<pkg>/mros2, no file twice, and exports a target an app links. The
@@ -24,7 +24,8 @@ import time
 
 import pytest
 
-from checkout_install import checkout_install
+from support.checkout import REPO
+from support.checkout_install import checkout_install
 from colcon_mros.integrations.rosidl_generator import (MARKER_RESOURCE, MROS2_INCLUDE_ROOT,
                                                        SUPPORT_INCLUDE_DIR)
 from colcon_mros.mros2 import render
@@ -33,7 +34,6 @@ from testing.ros_paths import ros2_prefixes
 # cmake and colcon builds.
 pytestmark = pytest.mark.slow
 
-REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 TEST_WS_ROS2 = os.path.join(REPO, 'test_ws_ros2')
 # The checkout as a prefix: what test_ament_index_discovery_finds_the_generator reads.
 CHECKOUT_EXTENSION_DIR = os.path.join(REPO, 'share', 'rosidl_generator_mros2', 'cmake')

@@ -11,7 +11,7 @@ import sys
 
 import pytest
 
-from conftest import REPO
+from support.checkout import REPO
 
 PING_IDL = '''module demo {
   module msg {

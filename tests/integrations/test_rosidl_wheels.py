@@ -4,7 +4,7 @@ mros2_base_msgs of test_ws_ros2 built with CMake against the rosidl that
 scripts/setup.sh --tests installs into build/ros2-wheels (its
 rosidl_write_generator_arguments(), rosidl_find_package_idl(), Python and
 rosidl_pycommon), with this checkout's rosidl_generator_mros2 (the CMake
-package and support headers of its install, tests/checkout_install.py; the
+package and support headers of its install, tests/support/checkout_install.py; the
 checkout's entry point). Its header is
 the one genmros writes for the same message with Debian's rosidl (3.3). And
 an interface package as ROS 2's tutorials write it, naming only
@@ -16,8 +16,8 @@ import subprocess
 
 import pytest
 
-from checkout_install import checkout_install
-from conftest import REPO, run_genmros
+from support.checkout_install import checkout_install
+from support.checkout import REPO, run_genmros
 
 pytestmark = pytest.mark.slow
 

@@ -23,7 +23,7 @@ import pytest
 
 from testing import fastcdr, ros2_messages
 
-from mros2_corpus import TEST_INTERFACE_PACKAGE, typestore
+from support.mros2_corpus import TEST_INTERFACE_PACKAGE, typestore
 from testing.ros_paths import ros2_package_dir
 
 INSTANCES_PER_TYPE = 12

@@ -10,10 +10,10 @@ import subprocess
 
 import pytest
 
-from conftest import run_genmros
+from support.checkout import run_genmros
 from testing import fastcdr, ros2_messages
 
-from mros2_corpus import ECHO_TARGETS
+from support.mros2_corpus import ECHO_TARGETS
 from testing.ros_paths import prefix_arguments, ros2_prefixes
 
 # Fragment sizes for the echo program, which drives copyToFragBuf as mros2's

@@ -16,7 +16,7 @@ from colcon_mros.errors import GenmrosError
 from colcon_mros.export.mros2_export import Board, firmware_fit
 from colcon_mros.mros2.render import templates_header
 
-from conftest import run_genmros
+from support.checkout import run_genmros
 from testing.ros_paths import prefix_arguments, ros2_prefixes
 
 CONFIG = '''\

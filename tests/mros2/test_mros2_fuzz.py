@@ -18,7 +18,7 @@ import re
 import subprocess
 import sys
 
-from conftest import REPO
+from support.checkout import REPO
 
 import pytest
 from testing.ros_paths import ros2_package_dir

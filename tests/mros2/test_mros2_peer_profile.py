@@ -7,7 +7,7 @@ import os
 
 from lxml import etree
 
-from conftest import run_genmros
+from support.checkout import run_genmros
 from testing.mros2_pc import WHEELS_VENV
 
 SCHEMA = os.path.join(WHEELS_VENV, 'share', 'fastdds', 'fastdds_profiles.xsd')

@@ -16,7 +16,7 @@ import subprocess
 
 import pytest
 
-from conftest import REPO, run_genmros
+from support.checkout import REPO, run_genmros
 from testing import fastcdr
 from testing.ros_paths import prefix_arguments, ros2_prefixes
 

@@ -13,7 +13,7 @@ import pytest
 from colcon_mros.errors import GenmrosError
 from colcon_mros.mros2.endpoints import split_endpoint, topic_name_problems
 
-from conftest import run_genmros
+from support.checkout import run_genmros
 
 EMPTY = 'test_interface_files/msg/Empty'
 BAD_NAMES = {

@@ -8,9 +8,9 @@ import subprocess
 
 import pytest
 
-from conftest import TEST_WS, run_genmros
-from compile_checks import (LANGUAGE_MODES, STRICT_FLAGS, TARGET_PARAMS, TARGETS,
-                            every_header_translation_unit)
+from support.checkout import TEST_WS, run_genmros
+from support.compile_checks import (LANGUAGE_MODES, STRICT_FLAGS, TARGET_PARAMS, TARGETS,
+                                    every_header_translation_unit)
 from testing.ros_paths import prefix_arguments, ros1_prefixes
 
 DEBIAN_SET = ['sensor_msgs/Image', 'sensor_msgs/PointCloud2', 'sensor_msgs/JointState',

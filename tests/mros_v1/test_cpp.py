@@ -13,7 +13,7 @@ from colcon_mros.mros_v1.cpp import (SUPPORT_HEADERS, CppMessage, CppType, cpp_c
 from colcon_mros.mros_v1.names import RESERVED_NAMES
 from colcon_mros.ros1.model import ModelBuilder
 from colcon_mros.ros1.parse import SpecLoader
-from conftest import REPO
+from support.checkout import REPO
 from testing.ros_paths import ros1_package_dir
 
 STD_MSGS = ros1_package_dir('std_msgs')

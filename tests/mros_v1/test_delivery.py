@@ -15,7 +15,7 @@ import subprocess
 import pytest
 
 from colcon_mros.mros_v1.rules import DELIVERY_ON_STACK_MAX
-from conftest import run_genmros
+from support.checkout import run_genmros
 from testing.ros_paths import prefix_arguments, ros1_prefixes
 
 SOURCE = '''#include <message_headers.h>

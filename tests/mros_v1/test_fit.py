@@ -20,9 +20,9 @@ from colcon_mros.mros_v1.rules import (PEER_NAME_MAX, PUBLISHER_HEADER_FIXED,
 from testing.ros_paths import ros1_package_dir, ros1_prefixes
 from testing.ros_graph import PYTHON, RosGraph
 from testing.tcpros_peer import HostilePublisher, RawSubscriber
-from conftest import TEST_WS
-from user_checkouts import MROS_V1_ROOT
-from settings_headers import define, header_paths, small_settings
+from support.checkout import TEST_WS
+from support.user_checkouts import MROS_V1_ROOT
+from support.settings_headers import define, header_paths, small_settings
 
 USR_CONFIG = os.path.join(MROS_V1_ROOT, 'mros_ws', 'custom_pubsub', 'mros_config',
                           'mros_usr_config.h')

@@ -14,8 +14,8 @@ import pytest
 from colcon_mros.core.settings import read_settings
 from colcon_mros.export.firmware_export import firmware_messages
 from colcon_mros.mros_v1.fit import Fit
-from conftest import TEST_WS, run_genmros
-from settings_headers import header_paths, small_settings
+from support.checkout import TEST_WS, run_genmros
+from support.settings_headers import header_paths, small_settings
 from testing.ros_paths import prefix_arguments, ros1_prefixes
 
 TYPES = ['std_msgs/String', 'mros_test_base/Vector3i', 'geometry_msgs/Quaternion',

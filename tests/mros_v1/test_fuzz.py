@@ -13,7 +13,7 @@ import re
 import subprocess
 import sys
 
-from conftest import REPO
+from support.checkout import REPO
 
 import pytest
 

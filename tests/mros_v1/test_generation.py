@@ -10,7 +10,7 @@ import subprocess
 import pytest
 
 from colcon_mros.mros_v1.cpp import SUPPORT_HEADER, SUPPORT_HEADERS, SUPPORT_VERSION_HEADER
-from conftest import REPO, TEST_WS, run_genmros
+from support.checkout import REPO, TEST_WS, run_genmros
 from testing.ros_paths import prefix_arguments, ros1_package_dir, ros1_prefixes
 
 FIXTURES = os.path.join(REPO, 'tests', 'fixtures')

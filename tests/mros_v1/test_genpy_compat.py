@@ -18,8 +18,8 @@ import genpy
 import pytest
 from genmsg.msgs import parse_type
 
-import cpp_harness
-from conftest import TEST_WS
+from support import cpp_harness
+from support.checkout import TEST_WS
 from testing import ros_paths
 
 INSTANCES_PER_TYPE = 100

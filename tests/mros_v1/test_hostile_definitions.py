@@ -22,8 +22,8 @@ import pytest
 from genmsg import gentools, msg_loader
 from genmsg.msgs import bare_msg_type, is_builtin, parse_type
 
-from conftest import run_genmros
-from file_trees import assert_one_line_error, package_xml, snapshot, write_tree
+from support.checkout import run_genmros
+from support.file_trees import assert_one_line_error, package_xml, snapshot, write_tree
 from testing.ros_paths import prefix_arguments, ros1_package_dir, ros1_prefixes
 
 pytestmark = pytest.mark.slow

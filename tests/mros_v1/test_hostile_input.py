@@ -12,8 +12,9 @@ import subprocess
 
 import pytest
 
-import cpp_harness
-from conftest import DEBIAN_MESSAGE_PACKAGES, TEST_WS
+from support import cpp_harness
+from support.checkout import TEST_WS
+from support.debian_messages import DEBIAN_MESSAGE_PACKAGES
 from testing import ros_paths
 
 # -O0: a third of -O1's compile time for this one large unit, and no access optimized away.

@@ -9,8 +9,8 @@ the two modes."""
 
 import subprocess
 
-from compile_checks import every_header_translation_unit
-from conftest import TEST_WS, run_genmros
+from support.compile_checks import every_header_translation_unit
+from support.checkout import TEST_WS, run_genmros
 from testing.ros_paths import prefix_arguments, ros1_prefixes
 
 

@@ -7,7 +7,7 @@ import re
 
 from colcon_mros.mros_v1.aggregates import DELIVERY_HEADER, firmware_files
 from colcon_mros.mros_v1.names import SUPPORT_HEADER_NAMES, SUPPORT_MACROS, member_identifier
-from conftest import REPO
+from support.checkout import REPO
 
 PACKAGE = os.path.join(REPO, 'colcon_mros')
 # The static support headers (the back end's and the core's containers

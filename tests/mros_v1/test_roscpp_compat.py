@@ -11,8 +11,8 @@ import subprocess
 
 import pytest
 
-import cpp_harness
-from conftest import DEBIAN_MESSAGE_PACKAGES
+from support import cpp_harness
+from support.debian_messages import DEBIAN_MESSAGE_PACKAGES
 from testing import ros_paths
 
 pytestmark = pytest.mark.slow

@@ -25,8 +25,8 @@ import subprocess
 
 import pytest
 
-import cpp_harness
-from conftest import TEST_WS, run_genmros
+from support import cpp_harness
+from support.checkout import TEST_WS, run_genmros
 from testing.ros_paths import prefix_arguments, ros1_prefixes
 
 pytestmark = [pytest.mark.needs_qemu, pytest.mark.slow]

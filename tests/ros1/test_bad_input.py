@@ -8,8 +8,8 @@ import sys
 
 import pytest
 
-from conftest import REPO, TEST_WS, run_genmros
-from file_trees import assert_one_line_error, snapshot, write_tree
+from support.checkout import REPO, TEST_WS, run_genmros
+from support.file_trees import assert_one_line_error, snapshot, write_tree
 from testing.ros_paths import prefix_arguments, ros1_package_dir, ros1_prefixes
 
 PACKAGE_XML = '''<?xml version="1.0"?>

@@ -19,8 +19,9 @@ import pytest
 
 from genpy.dynamic import generate_dynamic
 
-import cpp_harness
-from conftest import DEBIAN_MESSAGE_PACKAGES, REPO, TEST_WS, run_genmros
+from support import cpp_harness
+from support.checkout import REPO, TEST_WS, run_genmros
+from support.debian_messages import DEBIAN_MESSAGE_PACKAGES
 
 from colcon_mros.export.export_dir import ExportDir
 from colcon_mros.integrations.installed_files import CMAKE_MODULE, installed_file

@@ -6,7 +6,7 @@ source, no traceback, and --help and the colcon extension still load."""
 import subprocess
 import sys
 
-from conftest import REPO, TEST_WS
+from support.checkout import REPO, TEST_WS
 
 # This interpreter, with genmsg made unimportable (as in a Python without it).
 WITHOUT_GENMSG = "import sys; sys.modules['genmsg'] = None; sys.path.insert(0, %r); " % REPO

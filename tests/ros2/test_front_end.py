@@ -7,7 +7,7 @@ import os
 
 import pytest
 
-from conftest import run_genmros
+from support.checkout import run_genmros
 from testing.ros2_messages import PACKAGE_XML
 from testing.ros_paths import prefix_arguments, ros2_prefixes
 

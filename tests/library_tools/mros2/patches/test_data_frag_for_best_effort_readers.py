@@ -21,10 +21,10 @@ from colcon_mros.mros2.render import templates_header
 from colcon_mros.mros2.rules import data_frag_requirements
 from colcon_mros.ros2.interfaces import all_packages
 from colcon_mros.ros2.model import ModelBuilder
-from conftest import REPO
+from support.checkout import REPO
 from testing.ros_paths import ros2_prefixes
 from testing.rtps_datagrams import data, data_frag, rtps_header
-from user_checkouts import MROS2_ROOT
+from support.user_checkouts import MROS2_ROOT
 
 pytestmark = [pytest.mark.needs_mros2, pytest.mark.slow]
 

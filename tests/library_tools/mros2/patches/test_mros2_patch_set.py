@@ -13,8 +13,8 @@ import pytest
 
 from colcon_mros.library_tools.mros2.patches import LIBRARY_DIRS
 from colcon_mros.library_tools.mros2.pc_target.build import TARGET_DIR
-from conftest import REPO, run_genmros
-from user_checkouts import MROS2_ROOT
+from support.checkout import REPO, run_genmros
+from support.user_checkouts import MROS2_ROOT
 from testing.ros_paths import prefix_arguments, ros2_prefixes
 
 pytestmark = [pytest.mark.needs_mros2, pytest.mark.slow]

@@ -16,8 +16,8 @@ import pytest
 from colcon_mros.library_tools.mros2.patches import LIBRARY_DIRS, mros2_patches
 from colcon_mros.library_tools.mros2.pc_target.build import TARGET_DIR
 from colcon_mros.library_tools.patch_series import apply_patches
-from conftest import REPO
-from user_checkouts import MROS2_ROOT
+from support.checkout import REPO
+from support.user_checkouts import MROS2_ROOT
 
 pytestmark = [pytest.mark.needs_mros2]
 

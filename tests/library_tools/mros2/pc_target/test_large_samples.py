@@ -18,13 +18,13 @@ import numpy
 import pytest
 
 from colcon_mros.mros2.rules import FRAGMENT_OVERHEAD
-from conftest import let_empy_take_stdout
+from support.empy_stdout import let_empy_take_stdout
 from testing import mros2_pc, mros2_soak
 from testing.mros2_posix import wire_bytes
-from user_checkouts import MROS2_ROOT
+from support.user_checkouts import MROS2_ROOT
 
-import mros2_pc_boards
-from mros2_pc_boards import config_of
+from support import mros2_pc_boards
+from support.mros2_pc_boards import config_of
 
 pytestmark = [pytest.mark.needs_mros2, pytest.mark.slow]
 

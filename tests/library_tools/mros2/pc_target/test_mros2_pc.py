@@ -25,12 +25,12 @@ import time
 
 import pytest
 
-from conftest import REPO
-import mros2_pc_boards
-from mros2_pc_boards import config_of
+from support.checkout import REPO
+from support import mros2_pc_boards
+from support.mros2_pc_boards import config_of
 from testing import mros2_pc
 from testing.mros2_posix import wire_bytes
-from user_checkouts import MROS2_ROOT
+from support.user_checkouts import MROS2_ROOT
 
 pytestmark = [pytest.mark.needs_mros2, pytest.mark.slow]
 

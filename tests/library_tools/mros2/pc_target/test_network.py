@@ -12,7 +12,7 @@ import tempfile
 
 import pytest
 
-from conftest import REPO
+from support.checkout import REPO
 from testing.mros2_pc import host_network
 
 BOARD_ADDRESS = '192.168.11.3'

@@ -13,7 +13,7 @@ import sys
 
 import pytest
 
-from conftest import REPO
+from support.checkout import REPO
 
 pytestmark = [pytest.mark.needs_mros2, pytest.mark.slow]
 

@@ -8,9 +8,9 @@ of every start must come back (testing/mros2_soak.py)."""
 
 import pytest
 
-import mros2_pc_boards
+from support import mros2_pc_boards
 from testing import mros2_soak
-from user_checkouts import MROS2_ROOT
+from support.user_checkouts import MROS2_ROOT
 
 pytestmark = [pytest.mark.needs_mros2, pytest.mark.slow]
 

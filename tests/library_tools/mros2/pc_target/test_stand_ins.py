@@ -13,7 +13,7 @@ import pytest
 
 from colcon_mros.library_tools.mros2.pc_target.build import TARGET_DIR, settings_header
 from colcon_mros.library_tools.pc_build import ARM_COMPILER
-from conftest import REPO
+from support.checkout import REPO
 from testing import mros2_pc
 
 SOURCES = sorted(glob.glob(os.path.join(TARGET_DIR, 'src', '*.cpp')))

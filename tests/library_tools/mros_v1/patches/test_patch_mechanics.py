@@ -15,7 +15,7 @@ from colcon_mros.errors import GenmrosError
 from colcon_mros.library_tools.patch_series import (PatchSeries, apply_patches, patch_states,
                                                     read_series)
 
-from conftest import REPO
+from support.checkout import REPO
 
 TREE = os.path.join(REPO, 'tests', 'fixtures', 'patch_tree')
 

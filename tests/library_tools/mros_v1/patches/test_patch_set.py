@@ -12,8 +12,8 @@ import pytest
 from colcon_mros.errors import GenmrosError
 from colcon_mros.library_tools.mros_v1.patches import MROS_V1_SERIES, mros_v1_patches
 from colcon_mros.library_tools.patch_series import apply_patches, read_patch
-from conftest import run_genmros
-from user_checkouts import MROS_V1_ROOT
+from support.checkout import run_genmros
+from support.user_checkouts import MROS_V1_ROOT
 
 PATCH_DIR = MROS_V1_SERIES.directory
 

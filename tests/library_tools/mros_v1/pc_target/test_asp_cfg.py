@@ -7,8 +7,8 @@ import os
 
 import pytest
 
-from conftest import REPO
-from user_checkouts import MROS_V1_ROOT
+from support.checkout import REPO
+from support.user_checkouts import MROS_V1_ROOT
 from colcon_mros.errors import GenmrosError
 from colcon_mros.library_tools.mros_v1.pc_target.asp_cfg import read_config, write_kernel_config
 

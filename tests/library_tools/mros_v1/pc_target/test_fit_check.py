@@ -15,9 +15,9 @@ import pytest
 from colcon_mros.library_tools.mros_v1.pc_target.build import TARGET_DIR
 from colcon_mros.mros_v1.app import app_variables
 from testing.ros_graph import PYTHON
-from conftest import run_genmros
-from user_checkouts import MROS_V1_ROOT
-from settings_headers import define
+from support.checkout import run_genmros
+from support.user_checkouts import MROS_V1_ROOT
+from support.settings_headers import define
 from testing.ros_paths import prefix_arguments, ros1_package_dir, ros1_prefixes
 
 pytestmark = pytest.mark.needs_mros_v1

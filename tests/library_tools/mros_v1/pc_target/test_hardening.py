@@ -19,9 +19,9 @@ from testing.ros_graph import (DELIVERY_TIMEOUT, PEER_IP, Board,
                                RosGraph)
 from testing.tcpros_peer import (
     HostilePublisher, RawSubscriber, closed_by_peer, encode_header)
-from conftest import run_genmros
-from user_checkouts import MROS_V1_ROOT
-from pc_target_apps import build_sample
+from support.checkout import run_genmros
+from support.user_checkouts import MROS_V1_ROOT
+from support.pc_target_apps import build_sample
 
 pytestmark = [pytest.mark.needs_mros_v1, pytest.mark.needs_qemu, pytest.mark.slow]
 

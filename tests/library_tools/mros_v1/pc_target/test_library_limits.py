@@ -22,8 +22,8 @@ from testing.ros_graph import (
     DELIVERY_TIMEOUT, PEER_IP, Board, RosGraph)
 from testing.tcpros_peer import (
     HostilePublisher, closed_by_peer, encode_header, frame)
-from user_checkouts import MROS_V1_ROOT
-from pc_target_apps import build_app, library_copy
+from support.user_checkouts import MROS_V1_ROOT
+from support.pc_target_apps import build_app, library_copy
 
 pytestmark = [pytest.mark.needs_mros_v1, pytest.mark.needs_qemu, pytest.mark.slow]
 

@@ -35,9 +35,9 @@ from testing.ros_graph import (
 from testing.tcpros_peer import (
     HostilePublisher, RawSubscriber, encode_header)
 from fixtures.build_integration.tools import run
-from user_checkouts import MROS_V1_ROOT
-from pc_target_apps import build_sample
-from sanitizer_reports import LIBRARY_REPORTS, sanitizer_reports
+from support.user_checkouts import MROS_V1_ROOT
+from support.pc_target_apps import build_sample
+from support.sanitizer_reports import LIBRARY_REPORTS, sanitizer_reports
 
 pytestmark = [pytest.mark.needs_mros_v1, pytest.mark.needs_qemu, pytest.mark.slow]
 

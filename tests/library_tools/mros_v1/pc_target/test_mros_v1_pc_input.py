@@ -8,8 +8,8 @@ import os
 
 import pytest
 
-from conftest import run_genmros
-from user_checkouts import MROS_V1_ROOT
+from support.checkout import run_genmros
+from support.user_checkouts import MROS_V1_ROOT
 
 
 def _error_line(*arguments):

@@ -39,9 +39,9 @@ from testing.ros_graph import (
     DELIVERY_TIMEOUT, PEER_IP, Board, RosGraph, sourced_environment)
 from testing.tcpros_peer import (
     HostilePublisher, RawSubscriber, encode_header, frame)
-from user_checkouts import MROS_V1_ROOT
-from pc_target_apps import build_app, library_copy
-from sanitizer_reports import sanitizer_reports
+from support.user_checkouts import MROS_V1_ROOT
+from support.pc_target_apps import build_app, library_copy
+from support.sanitizer_reports import sanitizer_reports
 
 pytestmark = [pytest.mark.needs_mros_v1, pytest.mark.needs_qemu, pytest.mark.slow]
 

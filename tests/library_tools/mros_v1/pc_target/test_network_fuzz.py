@@ -13,8 +13,8 @@ import sys
 
 import pytest
 
-from conftest import REPO
-from user_checkouts import MROS_V1_ROOT
+from support.checkout import REPO
+from support.user_checkouts import MROS_V1_ROOT
 
 pytestmark = [pytest.mark.needs_mros_v1, pytest.mark.slow]
 

@@ -9,8 +9,8 @@ as the library's publishing pools hold (it remembered the last 4 notes)."""
 import pytest
 
 from testing.ros_graph import DELIVERY_TIMEOUT, Board, RosGraph
-from user_checkouts import MROS_V1_ROOT
-from pc_target_apps import build_app
+from support.user_checkouts import MROS_V1_ROOT
+from support.pc_target_apps import build_app
 
 pytestmark = [pytest.mark.needs_mros_v1, pytest.mark.needs_qemu, pytest.mark.slow]
 

@@ -3,7 +3,7 @@
 (colcon_mros/library_tools/mros_v1/pc_target/asp/kernel*.c), on its own: a
 program of ours (tests/fixtures/pc_target_kernel) configured from its own
 .cfg by colcon_mros.library_tools.mros_v1.pc_target.asp_cfg, as an mROS v1
-app is (tests/stand_in_programs.py), runs scenarios whose
+app is (tests/support/stand_in_programs.py), runs scenarios whose
 traces show ASP's rules: highest priority first and FIFO within one, a
 task whose priority is set going behind its equals, activation and wake-up
 requests queued up to 1, time-outs, delays and cyclic handlers on time, and
@@ -15,7 +15,7 @@ import subprocess
 
 import pytest
 
-import stand_in_programs
+from support import stand_in_programs
 
 E_OK, E_QOVR, E_TMOUT = 0, -43, -50
 # Timing on a loaded 2-core machine: late by up to this much, never early.

@@ -14,7 +14,7 @@ import subprocess
 
 import pytest
 
-import stand_in_programs
+from support import stand_in_programs
 
 STAND_INS = stand_in_programs.KERNEL + ('lwip/lwip.cpp',)
 # Timing on a loaded 2-core machine: late by up to this much, never early.

@@ -11,7 +11,7 @@ import subprocess
 
 import pytest
 
-import stand_in_programs
+from support import stand_in_programs
 from testing.ros_graph import Process
 
 STAND_INS = stand_in_programs.KERNEL + ('lwip/lwip.cpp', 'mbed/mbed.cpp')

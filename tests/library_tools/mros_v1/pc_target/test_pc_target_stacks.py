@@ -13,7 +13,7 @@ import signal
 
 import pytest
 
-import stand_in_programs
+from support import stand_in_programs
 from testing.ros_graph import Process
 
 pytestmark = [pytest.mark.needs_qemu, pytest.mark.slow]

@@ -14,8 +14,8 @@ import pytest
 
 from colcon_mros.mros_v1.app import App
 from testing.ros_graph import DELIVERY_TIMEOUT, Board, RosGraph
-from user_checkouts import MROS_V1_ROOT
-from pc_target_apps import APP_FIXTURE, build_app
+from support.user_checkouts import MROS_V1_ROOT
+from support.pc_target_apps import APP_FIXTURE, build_app
 
 pytestmark = [pytest.mark.needs_mros_v1, pytest.mark.needs_qemu, pytest.mark.slow]
 

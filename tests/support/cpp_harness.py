@@ -16,10 +16,10 @@ import sys
 from genmsg import msg_loader
 from genmsg.msgs import bare_msg_type, is_builtin
 
+from support.checkout import TESTS, TEST_WS
 from testing import ros_paths
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-RANDOM_HEADER_DIR = os.path.join(HERE, 'cpp')
+RANDOM_HEADER_DIR = os.path.join(TESTS, 'cpp')
 
 ROSCPP_LIBRARIES = ['-lroscpp_serialization', '-lrostime', '-lcpp_common']
 
@@ -270,8 +270,7 @@ def write_sources(directory, type_set, with_roscpp=True, for_targets=False):
 
 # The roscpp side's reference program, shared by the target-CPU and compact
 # definition tests.
-TARGETS_DIR = os.path.join(HERE, 'cpp', 'targets')
-TEST_WS = os.path.join(os.path.dirname(HERE), 'test_ws')
+TARGETS_DIR = os.path.join(TESTS, 'cpp', 'targets')
 TEST_WS_PACKAGES = ['mros_test', 'mros_test_base']
 BINARY, TEXT, COMPACT = 0, 1, 2  # harness::Mode
 

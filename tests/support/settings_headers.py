@@ -6,8 +6,9 @@ tests/fixtures/mros_v1_settings, copies of them with values changed, and a
 import os
 import re
 
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SMALL_SETTINGS = os.path.join(REPO, 'tests', 'fixtures', 'mros_v1_settings')
+from support.checkout import FIXTURES
+
+SMALL_SETTINGS = os.path.join(FIXTURES, 'mros_v1_settings')
 # In the order the build includes them.
 HEADERS = ('mros_usr_config.h', 'mros_packet_config.h')
 

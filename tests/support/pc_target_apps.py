@@ -10,9 +10,9 @@ import shutil
 import subprocess
 import sys
 
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-TEST_WS = os.path.join(REPO, 'test_ws')
-APP_FIXTURE = os.path.join(REPO, 'tests', 'fixtures', 'mros_v1_pc_app')
+from support.checkout import FIXTURES, REPO, TEST_WS
+
+APP_FIXTURE = os.path.join(FIXTURES, 'mros_v1_pc_app')
 
 
 def build_app(mros_root, build_root, source, target='arm', types=('mros_test/PersonalData',),

@@ -11,7 +11,7 @@ import shutil
 import subprocess
 import tempfile
 
-from user_install import copy_sources, pip_flags
+from support.user_install import copy_sources, pip_flags
 
 
 class CheckoutInstall:

@@ -7,10 +7,9 @@ import os
 import subprocess
 
 from colcon_mros.library_tools.mros_v1.pc_target.asp_cfg import read_config, write_kernel_config
+from support.checkout import FIXTURES, REPO
 
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PC_TARGET = os.path.join(REPO, 'colcon_mros', 'library_tools', 'mros_v1', 'pc_target')
-FIXTURES = os.path.join(REPO, 'tests', 'fixtures')
 # The arm target's line (mros_v1_pc.mk): GR-PEACH's CPU, linked statically
 # for qemu-arm.
 ARM = dict(prefix='arm-linux-gnueabihf-',

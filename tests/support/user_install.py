@@ -9,8 +9,9 @@ import subprocess
 import sys
 import tempfile
 
+from support.checkout import REPO
 
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
 NOBODY = 65534
 
 

@@ -10,11 +10,9 @@ import os
 import shutil
 import tempfile
 
-from checkout_install import checkout_install
+from support.checkout import TEST_WS
+from support.checkout_install import checkout_install
 from testing.ros_graph import CatkinWorkspace
-
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-TEST_WS = os.path.join(REPO, 'test_ws')
 
 
 def scratch(prefix):

@@ -10,7 +10,7 @@ import shutil
 
 import pytest
 
-from conftest import run_genmros
+from support.checkout import run_genmros
 from testing import fastcdr, mros2_harness, ros2_messages
 
 from colcon_mros.core.storage import HeapStorage
