@@ -9,10 +9,17 @@ rosidl_generator_mros2_generate_interfaces.cmake writes the arguments file
 (``ros_interface_files``: the target's sources), the ``.idl`` files of the
 packages it depends on (``ros_interface_dependencies``: ``<pkg>:<path>``)
 and the output directory. Exactly the listed interfaces get a header,
-``<output_dir>/<pkg>/<kind>/<type>.hpp``; an action is skipped with one
-line, as mros2 has none. genmros' own errors name the ``.msg`` or ``.srv``
-the user wrote, with its line. The support headers they include are not
-written: the generator's install holds them once
+``<output_dir>/<pkg>/<kind>/<type>.hpp``, but for what mros2 cannot
+carry, skipped with one line naming the type and the reason, so that
+every interface package builds as it does with rosidl_generator_cpp: an
+action (mros2 has none), a type of valid IDL mros2 cannot carry (a wchar,
+a long double, an image too large:
+:class:`~colcon_mros.ros2.model.UncarriableType`) and every type that
+holds one. ``--header-list`` writes the headers it wrote, which the
+CMake side installs as the package's ament index marker. genmros' own
+errors name the ``.msg`` or ``.srv`` the user wrote, with its line. The
+support headers they include are not written: the generator's install
+holds them once
 (``<prefix>/include/rosidl_generator_mros2``), and the CMake side installs
 each package's headers under an include root of its own
 (``<prefix>/include/<pkg>/mros2``, :data:`MROS2_INCLUDE_ROOT`).
@@ -34,9 +41,10 @@ from colcon_mros.core.storage import HeapStorage
 from colcon_mros.errors import GenmrosError
 from colcon_mros.export.mros2_export import render_types
 from colcon_mros.mros2 import render
+from colcon_mros.mros2.cpp import type_file_stem
 from colcon_mros.ros2.environment import require_rosidl
 from colcon_mros.ros2.interfaces import Package, interface_of_file
-from colcon_mros.ros2.model import ModelBuilder
+from colcon_mros.ros2.model import ModelBuilder, UncarriableType
 from colcon_mros.ros2.rosidl import read_generator_arguments
 
 PROGRAM = 'rosidl_generator_mros2'
@@ -80,7 +88,9 @@ def _where_dependencies_come_from(package):
 
 def generate(arguments):
     """Write the headers of the interfaces an arguments file (as a dict)
-    lists; returns (the paths written, the notices to print)."""
+    lists, but for the types mros2 cannot carry, and those that hold them;
+    returns (the paths it changed, the headers relative to the output
+    directory, the notices to print)."""
     name = arguments['package_name']
     user_files = _user_files(arguments.get('ros_interface_files', []))
     own, skipped = {}, []
@@ -105,19 +115,38 @@ def generate(arguments):
                 for package, interfaces in dependencies.items()}
     packages[name] = Package(name, None, own)
     builder = ModelBuilder(packages, HeapStorage(), _where_dependencies_come_from)
-    messages = [builder.message('%s/msg/%s' % (name, stem))
-                for kind, stem in sorted(own) if kind == 'msg']
-    services = [builder.service('%s/srv/%s' % (name, stem))
-                for kind, stem in sorted(own) if kind == 'srv']
-    # The support headers are not the package's: the generator's install
-    # holds them once (SUPPORT_INCLUDE_DIR), which the package's target names.
-    files = render_types(messages, services)
     notices = []
     for kind, reason in sorted(SKIPPED_KINDS.items()):
         names = ['%s/%s/%s' % (name, i.kind, i.name) for i in skipped if i.kind == kind]
         if names:
             notices.append('%s: skipped %s: %s' % (PROGRAM, ', '.join(names), reason))
-    return write_files(arguments['output_dir'], files), notices
+    models = {'msg': [], 'srv': []}
+    uncarried = []
+    for kind, stem in sorted(own):
+        full_name = '%s/%s/%s' % (name, kind, stem)
+        try:
+            models[kind].append(builder.message(full_name) if kind == 'msg'
+                                else builder.service(full_name))
+        except UncarriableType as error:
+            uncarried.append('%s/%s.hpp' % (os.path.dirname(full_name), type_file_stem(stem)))
+            notices.append('%s: skipped %s: %s' % (PROGRAM, full_name, _why_uncarriable(
+                full_name, error)))
+    # The support headers are not the package's: the generator's install
+    # holds them once (SUPPORT_INCLUDE_DIR), which the package's target names.
+    files = render_types(models['msg'], models['srv'])
+    # A header an earlier run wrote, before the type took what mros2 cannot carry.
+    for relative in uncarried:
+        path = os.path.join(arguments['output_dir'], relative)
+        if os.path.exists(path):
+            os.remove(path)
+    return write_files(arguments['output_dir'], files), sorted(files), notices
+
+
+def _why_uncarriable(full_name, error):
+    """Why a type was skipped: what mros2 cannot carry in it, or in a type it holds."""
+    if error.type_name in (full_name, full_name + '_Request', full_name + '_Response'):
+        return 'mros2 cannot carry it: %s' % error
+    return 'it holds %s, which mros2 cannot carry: %s' % (error.type_name, error)
 
 
 def _read_arguments(path):
@@ -160,6 +189,9 @@ def main(argv=None):
                                   'arguments file lists (what rosidl_generate_interfaces() runs).')
     parser.add_argument('--generator-arguments-file', metavar='FILE', required=True,
                         help='the arguments file rosidl_write_generator_arguments() wrote')
+    parser.add_argument('--header-list', metavar='FILE',
+                        help='also write the headers, one a line, relative to the output '
+                             'directory (the ament index marker the CMake side installs)')
     parser.add_argument('--dependency-file', metavar='FILE',
                         help="also write a make depfile: the rule's output depends on the "
                              "generator's own files")
@@ -170,7 +202,10 @@ def main(argv=None):
         parser.error('--dependency-file and --dependency-target go together')
     try:
         require_rosidl()
-        _, notices = generate(_read_arguments(options.generator_arguments_file))
+        _, headers, notices = generate(_read_arguments(options.generator_arguments_file))
+        if options.header_list:
+            directory, name = os.path.split(os.path.abspath(options.header_list))
+            write_files(directory, {name: ''.join(header + '\n' for header in headers)})
         if options.dependency_file:
             write_dependency_file(options.dependency_file, options.dependency_target)
     except GenmrosError as error:

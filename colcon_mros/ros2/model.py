@@ -35,6 +35,16 @@ WCHAR_SIZE = 4     # Fast-CDR writes each wstring character as a 32-bit unit
 MAX_IMAGE_SIZE = (1 << 32) - 1 - 4
 
 
+class UncarriableType(GenmrosError):
+    """Valid IDL that mros2 cannot carry (a wchar, a long double, an image
+    larger than a message can be). type_name is the type it was found in
+    ('pkg/msg/Name'): a type that contains that one cannot be carried either."""
+
+    def __init__(self, type_name, problem, path=None, line=None):
+        self.type_name = type_name
+        super().__init__(problem, path, line)
+
+
 def _align(position, size):
     return position + (-position % size)
 
@@ -142,11 +152,13 @@ class Message:
         self.min_size = self.end(0, largest=False)
         self.max_size = self.end(0, largest=True)
         if self.min_size > MAX_IMAGE_SIZE:
-            raise GenmrosError('%s takes at least %d bytes in CDR, more than the %d a message can '
-                               'have' % (self.full_name, self.min_size, MAX_IMAGE_SIZE), source)
+            raise UncarriableType(
+                self.full_name, '%s takes at least %d bytes in CDR, more than the %d a message '
+                'can have' % (self.full_name, self.min_size, MAX_IMAGE_SIZE), source)
         if self.max_size is not None and self.max_size > MAX_IMAGE_SIZE:
-            raise GenmrosError('%s can take %d bytes in CDR, more than the %d a message can have'
-                               % (self.full_name, self.max_size, MAX_IMAGE_SIZE), source)
+            raise UncarriableType(
+                self.full_name, '%s can take %d bytes in CDR, more than the %d a message can have'
+                % (self.full_name, self.max_size, MAX_IMAGE_SIZE), source)
 
     def end(self, position, largest=False):
         """Where an image of this message that starts at position ends (see
@@ -294,7 +306,7 @@ class ModelBuilder:
         number_type = string_bound = message = None
         if isinstance(element_type, idl.BasicType):
             if element_type.typename in UNSUPPORTED_NUMBERS:
-                raise GenmrosError("member '%s': %s" % (
+                raise UncarriableType(full_name, "member '%s': %s" % (
                     member.name, UNSUPPORTED_NUMBERS[element_type.typename]), parsed.path, line)
             element, number_type = 'number', element_type.typename
         elif isinstance(element_type, idl.AbstractGenericString):
@@ -307,8 +319,8 @@ class ModelBuilder:
             message = self.message('%s/%s/%s' % (package, kind, element_type.name),
                                    parsed.path, line)
         else:
-            raise GenmrosError("member '%s' has a type mros2 cannot carry" % member.name,
-                               parsed.path, line)
+            raise UncarriableType(full_name, "member '%s' has a type mros2 cannot carry"
+                                  % member.name, parsed.path, line)
         # Bounded storage bounds what rosidl leaves unbounded, from the options files.
         pkg, _, type_name = full_name.split('/')
         unbounded_string = element in ('string', 'wstring') and string_bound is None

@@ -101,6 +101,12 @@ class Workspace:
         with open(os.path.join(self.mros2_include(package), relative)) as stream:
             return stream.read()
 
+    def marker(self, package):
+        """The generator's ament index marker of the package: its headers, one a line."""
+        with open(os.path.join(self.install, 'share', 'ament_index', 'resource_index',
+                               MARKER_RESOURCE, package)) as stream:
+            return stream.read()
+
     def install_manifest(self, package):
         """The files the package's last install wrote (CMake's install_manifest.txt)."""
         with open(os.path.join(self.root, 'build', package, 'install_manifest.txt')) as stream:
@@ -177,9 +183,8 @@ def test_each_package_has_the_generators_marker(workspace):
     index = os.path.join(workspace.install, 'share', 'ament_index', 'resource_index',
                          MARKER_RESOURCE)
     assert _files_under(index) == ['mros2_base_msgs', 'mros2_test_msgs']
-    with open(os.path.join(index, 'mros2_test_msgs')) as stream:
-        assert stream.read().split() == ['mros2_test_msgs/msg/reading.hpp',
-                                         'mros2_test_msgs/srv/query.hpp']
+    assert workspace.marker('mros2_test_msgs') == ('mros2_test_msgs/msg/reading.hpp\n'
+                                                   'mros2_test_msgs/srv/query.hpp\n')
 
 
 def test_the_support_headers_are_the_generators_once(workspace):
@@ -305,22 +310,48 @@ def test_edited_message_is_regenerated(workspace):
     assert len(workspace.generator_runs()) == before + 1, 'only mros2_test_msgs is regenerated'
 
 
-def test_message_genmros_rejects_fails_the_build_naming_the_file(workspace):
+def test_a_message_mros2_cannot_carry_is_skipped_with_its_holders_naming_the_file(workspace):
     # rosidl takes the bound (its C++ member is a std::string); an mros2
-    # message image cannot be that long. (A fixed array as long, e.g.
+    # message image cannot be that long. The packages build, as with
+    # rosidl_generator_cpp alone, without the mros2 headers of Stamp and of
+    # Reading, which holds it. (A fixed array as long, e.g.
     # float64[600000000], takes genmros minutes: it sizes arrays element
     # by element.)
     stamp = workspace.source('mros2_base_msgs', 'msg', 'Stamp.msg')
     with open(stamp) as stream:
         original = stream.read()
     workspace.append(stamp, 'string<=5000000000 label')
-    result = workspace.colcon_build(check=False)
-    with open(stamp, 'w') as stream:
-        stream.write(original)
-    assert result.returncode != 0
-    errors = [line for line in result.stdout.splitlines() if line.startswith('genmros: error:')]
-    assert len(errors) == 1, result.stdout[-6000:]
-    assert errors[0].startswith('genmros: error: %s: mros2_base_msgs/msg/Stamp can take ' % stamp)
+    try:
+        result = workspace.colcon_build()
+        notices = [line for line in result.stdout.splitlines()
+                   if line.startswith('rosidl_generator_mros2: skipped')]
+        too_long = ('mros2_base_msgs/msg/Stamp can take 5000000013 bytes in CDR, more than the '
+                    '4294967291 a message can have')
+        # Another package's type, as rosidl passes it: its installed .idl.
+        installed_stamp = os.path.join(workspace.install, 'share', 'mros2_base_msgs', 'msg',
+                                       'Stamp.idl')
+        assert notices == [
+            'rosidl_generator_mros2: skipped mros2_base_msgs/msg/Stamp: mros2 cannot carry it: '
+            '%s: %s' % (stamp, too_long),
+            'rosidl_generator_mros2: skipped mros2_test_msgs/msg/Reading: it holds '
+            'mros2_base_msgs/msg/Stamp, which mros2 cannot carry: %s: %s'
+            % (installed_stamp, too_long),
+            'rosidl_generator_mros2: skipped mros2_test_msgs/srv/Query: it holds '
+            'mros2_base_msgs/msg/Stamp, which mros2 cannot carry: %s: %s'
+            % (installed_stamp, too_long)], result.stdout[-6000:]
+        # The headers of the earlier build are gone from the build tree, and
+        # the markers list none (an install keeps what it had, as for any
+        # file a package stops installing).
+        for package in ('mros2_base_msgs', 'mros2_test_msgs'):
+            assert _files_under(os.path.join(workspace.root, 'build', package,
+                                             'rosidl_generator_mros2')) == []
+            assert workspace.marker(package) == ''
+    finally:
+        with open(stamp, 'w') as stream:
+            stream.write(original)
+    workspace.colcon_build()
+    assert os.path.isfile(os.path.join(workspace.mros2_include('mros2_base_msgs'),
+                                       'mros2_base_msgs', 'msg', 'stamp.hpp'))
 
 
 def test_message_rosidl_rejects_fails_the_build_with_rosidls_error(workspace):

@@ -203,3 +203,24 @@ def test_nothing_listed_of_a_kind_writes_nothing_of_it(tmp_path, kind):
     result = _run('--generator-arguments-file', _arguments_file(tmp_path, idl_tuples=[]))
     assert (result.returncode, result.stderr) == (0, '')
     assert not os.path.exists(str(tmp_path / 'out' / 'demo' / kind))
+
+
+def test_a_type_that_became_uncarriable_loses_its_header_and_its_place_in_the_list(tmp_path):
+    base = str(tmp_path / 'adapter')
+    ping = _write(os.path.join(base, 'msg', 'Ping.idl'), PING_IDL)
+    arguments = _arguments_file(tmp_path, idl_tuples=['%s:msg/Ping.idl' % base])
+    header_list = str(tmp_path / 'headers')
+    assert _run('--generator-arguments-file', arguments, '--header-list',
+                header_list).returncode == 0
+    assert _written(tmp_path) == ['demo/msg/ping.hpp']
+    with open(header_list) as stream:
+        assert stream.read() == 'demo/msg/ping.hpp\n'
+    _write(ping, PING_IDL.replace('int32 value;', 'long double value;'))
+    result = _run('--generator-arguments-file', arguments, '--header-list', header_list)
+    assert (result.returncode, result.stderr) == (0, '')
+    assert result.stdout == ("rosidl_generator_mros2: skipped demo/msg/Ping: mros2 cannot carry "
+                             "it: %s:4: member 'value': long double has no fixed size on the "
+                             'boards mros2 runs on\n' % ping)
+    assert _written(tmp_path) == []
+    with open(header_list) as stream:
+        assert stream.read() == ''

@@ -13,8 +13,12 @@
 # (rosidl_write_generator_arguments(), the same keywords on rosidl 3.1
 # (Humble), 3.3 and 4.x) and runs its program over it, which writes
 # <output>/<pkg>/msg/<type>.hpp and <output>/<pkg>/srv/<service>.hpp for
-# exactly the listed interfaces. An action has no mros2 header: the program
-# says so in one line.
+# the listed interfaces. An action, a type mros2 cannot carry (a wchar, a
+# long double) and every type that holds one have no mros2 header: the
+# program says so in one line each, and the package builds, as with
+# rosidl_generator_cpp. So the headers below may be fewer than the
+# interfaces: they are installed OPTIONAL, and the program lists those it
+# wrote (--header-list) for the ament index marker.
 #
 # The install layout, one include root per package, so that no two
 # interface packages (in a merged install, or two Debian packages) install
@@ -24,8 +28,9 @@
 #   <prefix>/include/<pkg>/mros2/<pkg>/srv/<name>.hpp   include root
 #   <prefix>/share/ament_index/resource_index/rosidl_generator_mros2__packages/<pkg>
 #                                                       the marker: the
-#                                                       generator ran (its
-#                                                       headers, one a line)
+#                                                       generator ran (the
+#                                                       headers it wrote,
+#                                                       one a line)
 #
 # rosidl_generator_cpp installs <pkg>/msg/<type>.hpp under include/<pkg>
 # (Humble on); the mros2 headers have the same relative names (an app's
@@ -37,9 +42,14 @@
 # (rosidl_generator_mros2_SUPPORT_INCLUDE_DIR, rosidl_generator_mros2-extras.cmake).
 #
 # The exported target ${rosidl_generate_interfaces_TARGET}__rosidl_generator_mros2
-# (<pkg>::<pkg>__rosidl_generator_mros2 after find_package(<pkg>), also in
-# <pkg>_TARGETS__rosidl_generator_mros2, as rosidl_generator_cpp's) carries
-# both include dirs and those of the interface packages it depends on.
+# carries both include dirs and those of the interface packages it depends
+# on. Only what names it gets it: after find_package(<pkg>), as
+# <pkg>::<pkg>__rosidl_generator_mros2 or <pkg>_TARGETS__rosidl_generator_mros2
+# (as rosidl's typesupport targets are named), and in the package itself
+# through rosidl_get_typesupport_target(var <target> rosidl_generator_mros2).
+# It is not among <pkg>_TARGETS, which ament_target_dependencies() and
+# ${<pkg>_TARGETS} give every target of a consumer: its headers have the
+# names of rosidl_generator_cpp's, and would hide them from rclcpp code.
 
 # Every header includes the support headers, which the target below names
 # by absolute path: a generator installed without them (an older
@@ -52,6 +62,7 @@ endif()
 
 set(_mros2_output_dir "${CMAKE_CURRENT_BINARY_DIR}/rosidl_generator_mros2")
 set(_mros2_stamp "${CMAKE_CURRENT_BINARY_DIR}/rosidl_generator_mros2__${rosidl_generate_interfaces_TARGET}.stamp")
+set(_mros2_header_list "${CMAKE_CURRENT_BINARY_DIR}/rosidl_generator_mros2__${rosidl_generate_interfaces_TARGET}.headers")
 
 # The headers, one per message and service: rosidl's own name rule (Type -> type.hpp).
 set(_mros2_headers "")
@@ -129,9 +140,9 @@ else()
 endif()
 add_custom_command(
   OUTPUT "${_mros2_stamp}"
-  BYPRODUCTS ${_mros2_headers}
+  BYPRODUCTS ${_mros2_headers} "${_mros2_header_list}"
   COMMAND "${rosidl_generator_mros2_BIN}" --generator-arguments-file "${_mros2_arguments_file}"
-    ${_mros2_depfile_arguments}
+    --header-list "${_mros2_header_list}" ${_mros2_depfile_arguments}
   COMMAND "${CMAKE_COMMAND}" -E touch "${_mros2_stamp}"
   DEPENDS ${_mros2_target_dependencies} "${_mros2_arguments_file}"
   ${_mros2_depfile_options}
@@ -170,8 +181,8 @@ endif()
 
 if(NOT rosidl_generate_interfaces_SKIP_INSTALL)
   # Exactly the listed interfaces' headers (not the output dir, which may
-  # keep the header of an interface since removed), per kind.
-  set(_mros2_marker_content "")
+  # keep the header of an interface since removed), per kind; OPTIONAL: a
+  # type mros2 cannot carry has none.
   foreach(_mros2_kind msg srv)
     set(_mros2_kind_headers "")
     foreach(_mros2_header ${_mros2_headers})
@@ -179,24 +190,37 @@ if(NOT rosidl_generate_interfaces_SKIP_INSTALL)
       get_filename_component(_mros2_header_dir "${_mros2_header_dir}" NAME)
       if(_mros2_header_dir STREQUAL _mros2_kind)
         list(APPEND _mros2_kind_headers "${_mros2_header}")
-        file(RELATIVE_PATH _mros2_relative "${_mros2_output_dir}" "${_mros2_header}")
-        string(APPEND _mros2_marker_content "${_mros2_relative}\n")
       endif()
     endforeach()
     if(_mros2_kind_headers)
       install(
         FILES ${_mros2_kind_headers}
-        DESTINATION "include/${PROJECT_NAME}/mros2/${PROJECT_NAME}/${_mros2_kind}")
+        DESTINATION "include/${PROJECT_NAME}/mros2/${PROJECT_NAME}/${_mros2_kind}"
+        OPTIONAL)
     endif()
   endforeach()
   # What colcon build --mros-export reads to tell a package the generator
   # did not run for (a package with actions alone has no header and still
-  # has the marker).
-  ament_index_register_resource("rosidl_generator_mros2__packages"
-    CONTENT "${_mros2_marker_content}")
+  # has the marker): the headers the program wrote.
+  install(
+    FILES "${_mros2_header_list}"
+    DESTINATION "share/ament_index/resource_index/rosidl_generator_mros2__packages"
+    RENAME "${PROJECT_NAME}")
 
+  # Exported as ament_export_targets() does, but for <pkg>_TARGETS: an
+  # extra of <pkg>Config.cmake includes the export file alone.
   install(TARGETS ${_mros2_target} EXPORT export_${_mros2_target})
-  ament_export_targets(export_${_mros2_target})
+  install(
+    EXPORT export_${_mros2_target}
+    DESTINATION "share/${PROJECT_NAME}/cmake"
+    NAMESPACE "${PROJECT_NAME}::"
+    FILE "${_mros2_target}Export.cmake")
+  set(_mros2_config_extra
+    "${CMAKE_CURRENT_BINARY_DIR}/rosidl_generator_mros2_extras/${PROJECT_NAME}-mros2-extras.cmake")
+  file(WRITE "${_mros2_config_extra}"
+    "# The mros2 headers' target, kept out of ${PROJECT_NAME}_TARGETS (rosidl_generator_mros2).\n"
+    "include(\"\${${PROJECT_NAME}_DIR}/${_mros2_target}Export.cmake\")\n")
+  list(APPEND ${PROJECT_NAME}_CONFIG_EXTRAS "${_mros2_config_extra}")
   # <pkg>_TARGETS__rosidl_generator_mros2 in an app's scope after
   # find_package(<pkg>), which the loop above reads for dependencies.
   rosidl_export_typesupport_targets(${_mros2_target_suffix} ${_mros2_target})
