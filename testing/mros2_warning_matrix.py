@@ -1,10 +1,10 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The warning matrix of the mros2 headers: every message type of
 test_ws_ros2 and of ROS 2's test interface files (Debian's
-ros2-test-interface-files), and issue 50's float64[64], published in
-fragments by a caller written as mros2's ``Publisher::publish`` is (an
-array ``uint8_t frag_buf[N]``, the first fragment after the 4-byte
-encapsulation header), in one translation unit, compiled with every
+ros2-test-interface-files), and the float64[64] the warning was first
+found with, published in fragments by a caller written as mros2's
+``Publisher::publish`` is (an array ``uint8_t frag_buf[N]``, the first
+fragment after the 4-byte encapsulation header), in one translation unit, compiled with every
 warning flag of :data:`WARNING_FLAGS` by {g++, arm-none-eabi-g++, clang++}
 x {-O0 .. -Os} x {C++11 .. C++20}. The fragments of FLATTENED_SIZE bytes
 are sent with every call inlined (GCC's flatten), so that the compiler
@@ -40,11 +40,11 @@ TEST_WS_ROS2 = os.path.join(REPO, 'test_ws_ros2')
 # test_ws_ros2's packages, and ROS 2's test interface files, installed as
 # the package test_interface_files (Debian: under /usr).
 PACKAGES = ('mros2_base_msgs', 'mros2_test_msgs', 'test_interface_files')
-# And the type issue 50 found the warning with: a fixed array larger than
+# And the type the warning was first found with: a fixed array larger than
 # every fragment buffer, whose one copy the compiler held against the
 # buffer; in a package of its own, written beside the export.
-ISSUE_PACKAGE = 'warning_matrix_msgs'
-ISSUE_MESSAGES = {'WideArray': 'float64[64] values\n'}
+FIRST_FINDING_PACKAGE = 'warning_matrix_msgs'
+FIRST_FINDING_MESSAGES = {'WideArray': 'float64[64] values\n'}
 
 COMPILERS = {
     'g++': ['g++'],
@@ -83,16 +83,16 @@ def every_configuration():
 
 def export_headers(include_dir):
     """The headers of every message type and service half of PACKAGES and
-    ISSUE_PACKAGE, written into include_dir with genmros' mros2 back end, as
+    FIRST_FINDING_PACKAGE, written into include_dir with genmros' mros2 back end, as
     users run it (the issue's package in a workspace beside include_dir)."""
     issue_workspace = write_interface_package(
-        include_dir.rstrip(os.sep) + '-workspace', ISSUE_PACKAGE, ISSUE_MESSAGES,
+        include_dir.rstrip(os.sep) + '-workspace', FIRST_FINDING_PACKAGE, FIRST_FINDING_MESSAGES,
         'The message of testing/mros2_warning_matrix.py.')
     result = subprocess.run(
         [sys.executable, '-m', 'colcon_mros', 'mros2-export', '--workspace', TEST_WS_ROS2,
          '--workspace', issue_workspace, '-o', include_dir]
         + ros_paths.prefix_arguments(ros_paths.ros2_prefixes())
-        + ['--package=%s' % p for p in PACKAGES + (ISSUE_PACKAGE,)],
+        + ['--package=%s' % p for p in PACKAGES + (FIRST_FINDING_PACKAGE,)],
         capture_output=True, text=True, cwd=REPO)
     if result.returncode != 0:
         raise RuntimeError('genmros mros2-export failed:\n%s' % result.stderr[-4000:])

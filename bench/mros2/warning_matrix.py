@@ -5,8 +5,8 @@
     /usr/bin/python3 bench/mros2/warning_matrix.py [--jobs 2] [--keep DIR]
 
 builds the caller of testing/mros2_warning_matrix.py (every message type of
-test_ws_ros2 and of ROS 2's test interface files, and the type issue 50
-found the warning with, published in fragments as mros2's publish sends
+test_ws_ros2 and of ROS 2's test interface files, and the type the
+warning was first found with, published in fragments as mros2's publish sends
 them, in one translation unit) with {g++, arm-none-eabi-g++ (compiled
 only), clang++} x {-O0, -O1, -O2, -O3, -Os} x {C++11, 14, 17, 20} and
 -Wall -Wextra -Wpedantic -Wconversion -Wsign-conversion -Werror, runs each

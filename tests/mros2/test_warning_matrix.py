@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Every message type of test_ws_ros2 and of ROS 2's test interface files,
-and the type issue 50 found the warning with (float64[64]), published in
+and the type the warning was first found with (float64[64]), published in
 fragments by a caller written as mros2's publish is (an array
 ``uint8_t frag_buf[N]``, N 16, 64 and 100, the encapsulation header in the
 first fragment), compiles without a warning under -Wall -Wextra -Wpedantic
@@ -60,7 +60,7 @@ def _build_all(configurations, caller, out_dir):
 
 def test_the_caller_publishes_every_type(caller):
     _, _, types = caller
-    assert len(types) == _defined_type_count() + len(matrix.ISSUE_MESSAGES) > 20
+    assert len(types) == _defined_type_count() + len(matrix.FIRST_FINDING_MESSAGES) > 20
 
 
 def test_fragments_compile_warning_free_and_carry_copytobufs_bytes(caller, tmp_path):
