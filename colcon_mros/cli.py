@@ -36,7 +36,7 @@ SUBCOMMAND_GROUPS = (
     ('mROS v1 (ROS 1)', ('export', 'mros-v1-fit', 'mros-v1-pc', 'mros-v1-harden',
                          'prune-export')),
     ('mros2 (ROS 2)', ('mros2-export', 'mros2-fit', 'mros2-pc', 'mros2-harden',
-                       'mros2-peer-profile')),
+                       'mros2-peer-profile', 'mros2-mend-wheels')),
     ('paths for builds', ('cmake-dir', 'make-fragment', 'catkin-prefix')),
 )
 
@@ -524,9 +524,24 @@ def _add_mros2_peer_profile(subparsers):
     parser.set_defaults(run=_mros2_peer_profile)
 
 
+def _add_mros2_mend_wheels(subparsers):
+    parser = subparsers.add_parser(
+        'mros2-mend-wheels', help="make a venv of ROS 2's wheels fit for CMake builds",
+        description="mros2 (ROS 2): point the CMake files of ROS 2's wheels in a venv (PyPI's "
+                    "ros-*, on Debian 12) at the venv's own Python and NumPy include "
+                    "directories: as built, they name the wheels' builder's "
+                    '(/opt/python/cp311-cp311/...), and an interface package of yours that '
+                    "builds Python code against the venv stops at CMake's configure. Run it "
+                    'again after pip installs more wheels; files already mended are left as '
+                    'they are.')
+    parser.add_argument('venv', metavar='VENV', help='the venv that holds the wheels')
+    parser.set_defaults(run=_mros2_mend_wheels)
+
+
 SUBCOMMANDS = (_add_generate, _add_export, _add_printers, _add_export_dir_commands,
                _add_mros_v1_pc, _add_mros_v1_fit, _add_mros_v1_harden, _add_mros2_export,
-               _add_mros2_fit, _add_mros2_pc, _add_mros2_harden, _add_mros2_peer_profile)
+               _add_mros2_fit, _add_mros2_pc, _add_mros2_harden, _add_mros2_peer_profile,
+               _add_mros2_mend_wheels)
 
 
 def build_parser():
@@ -615,6 +630,13 @@ def _mros2_peer_profile(options):
     directory, name = os.path.split(os.path.abspath(options.output))
     write_files(directory, {name: profile})
     print('genmros: wrote %s' % options.output)
+    return 0
+
+
+def _mros2_mend_wheels(options):
+    from colcon_mros.ros2.wheels import mend_wheels
+    mended = mend_wheels(options.venv)
+    print('genmros: mended %d CMake file(s) of %s' % (len(mended), options.venv))
     return 0
 
 

@@ -113,13 +113,31 @@ def installed_packages(prefixes):
     return packages
 
 
+# ROS 2's own interface packages, each also a wheel on PyPI (ros-<name>):
+# an unknown one of these is an installation's to give; any other is the
+# user's own, in a workspace.
+ROS2_INTERFACE_PACKAGES = frozenset((
+    'action_msgs', 'actionlib_msgs', 'builtin_interfaces', 'composition_interfaces',
+    'diagnostic_msgs', 'example_interfaces', 'geometry_msgs', 'lifecycle_msgs', 'nav_msgs',
+    'rcl_interfaces', 'rmw_dds_common', 'rosgraph_msgs', 'sensor_msgs', 'service_msgs',
+    'shape_msgs', 'statistics_msgs', 'std_msgs', 'std_srvs', 'stereo_msgs', 'tf2_msgs',
+    'trajectory_msgs', 'type_description_interfaces', 'unique_identifier_msgs',
+    'visualization_msgs',
+))
+
+
 def where_packages_come_from(package):
-    """Where an installed ROS 2 package package comes from, for the line of
-    an unknown one: a sourced distribution, or, where the OS has none
-    (Debian 12), ROS 2's wheel of it in a venv (docs/mros2.md)."""
-    return ('AMENT_PREFIX_PATH or --prefix names the installed ones; where no ROS 2 '
-            'distribution is installed, as on Debian 12, a venv with the wheel %s holds it: '
-            '--prefix VENV, docs/mros2.md' % ('ros-' + package.replace('_', '-')))
+    """Where a package that is not found comes from, for its line: one of
+    ROS 2's from a sourced distribution or, where the OS has none (Debian
+    12), from ROS 2's wheel of it in a venv (docs/mros2.md); any other from
+    the user's workspace."""
+    installed = ('AMENT_PREFIX_PATH or --prefix names the installed ones; where no ROS 2 '
+                 'distribution is installed, as on Debian 12, a venv with the wheel %s holds it: '
+                 '--prefix VENV, docs/mros2.md' % ('ros-' + package.replace('_', '-')))
+    if package in ROS2_INTERFACE_PACKAGES:
+        return installed
+    return ('--workspace DIR names the workspace that holds a package of your own; '
+            'AMENT_PREFIX_PATH or --prefix names the installed ones')
 
 
 def ament_prefixes():

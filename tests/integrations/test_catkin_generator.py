@@ -15,7 +15,7 @@ import pytest
 
 from colcon_mros.mros_v1.aggregates import FIRMWARE_FILES
 from colcon_mros.mros_v1.cpp import SUPPORT_HEADERS
-from fixtures.build_integration.tools import (
+from support.build_integration import (
     MESSAGE_PACKAGES, TEST_WS_SRC,
     build_firmware_of_whole_export, compile_headers, expected_header_names, genmros_export,
     genmsg_md5, genpy_default_size, headers_under, imported_firmware_output, new_workspace,

@@ -17,7 +17,7 @@ import time
 
 import pytest
 
-from fixtures.build_integration.tools import (
+from support.build_integration import (
     GENERATOR_LOG_LINE, MESSAGE_PACKAGES, genmros_export, headers_under, mtimes,
     new_workspace, run)
 from testing.ros_paths import prefix_arguments, ros1_prefixes

@@ -15,7 +15,7 @@ import shutil
 
 import pytest
 from support.settings_headers import header_paths, small_settings
-from fixtures.build_integration.tools import (
+from support.build_integration import (
     FIRMWARE_FIXTURE, TEST_WS_SRC, genmsg_md5, new_workspace, run, search_path_of, unwrapped)
 from testing.ros_paths import ros1_package_dir, ros1_prefixes
 

@@ -13,7 +13,7 @@ import subprocess
 import pytest
 
 from support.checkout import TEST_WS
-from fixtures.build_integration.tools import run, user_environment
+from support.build_integration import run, user_environment
 from support.user_install import copy_sources, pip_flags
 
 pytestmark = pytest.mark.slow

@@ -20,7 +20,7 @@ import shutil
 import pytest
 
 from support.checkout import REPO
-from fixtures.build_integration.tools import run, unwrapped
+from support.build_integration import run, unwrapped
 from testing import fastcdr
 
 pytestmark = pytest.mark.slow

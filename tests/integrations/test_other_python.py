@@ -16,7 +16,7 @@ import sys
 
 import pytest
 
-from fixtures.build_integration.tools import TEST_WS_SRC, run, user_environment
+from support.build_integration import TEST_WS_SRC, run, user_environment
 
 # cmake, colcon, catkin or make builds: more than half a minute.
 pytestmark = pytest.mark.slow

@@ -26,7 +26,7 @@ import pytest
 
 from support.checkout import REPO, run_genmros
 from support.checkout_install import checkout_install
-from fixtures.build_integration.tools import run, user_environment
+from support.build_integration import run, user_environment
 
 DOCS = os.path.join(REPO, 'docs', 'mros2.md')
 INTERFACE_PACKAGE = os.path.join(REPO, 'test_ws_ros2', 'src', 'mros2_base_msgs')
@@ -230,3 +230,57 @@ def test_humble_defaults_find_the_generator_only_through_the_ament_index(
     with open(header) as built, open(str(expected / 'defaults_only_msgs' / 'msg' /
                                          'stamp.hpp')) as exported:
         assert built.read() == exported.read()
+
+
+# The user's rclpy node of the docs' last line: it publishes a Stamp once
+# the graph shows its subscriber matched, and reads it back.
+STAMP_NODE = '''
+import rclpy
+from rclpy.executors import SingleThreadedExecutor
+from mros2_base_msgs.msg import Stamp
+
+rclpy.init()
+talker, listener = rclpy.create_node('talker'), rclpy.create_node('listener')
+received = []
+listener.create_subscription(Stamp, 'stamp', received.append, 10)
+publisher = talker.create_publisher(Stamp, 'stamp', 10)
+executor = SingleThreadedExecutor()
+executor.add_node(talker)
+executor.add_node(listener)
+while publisher.get_subscription_count() == 0:
+    executor.spin_once(timeout_sec=0.1)
+publisher.publish(Stamp(sec=7, nanosec=8))
+while not received:
+    executor.spin_once(timeout_sec=0.1)
+print('received sec=%d nanosec=%d' % (received[0].sec, received[0].nanosec))
+rclpy.shutdown()
+'''
+
+
+def _own_package_lines():
+    text = _docs()
+    start = text.index('### Debian 12: your own interface package')
+    block, = re.findall(r'```sh\n(.*?)```', text[start:text.index('\n## ', start)], re.S)
+    return block
+
+
+@pytest.mark.slow
+def test_a_debian_users_own_package_reaches_rclpy_with_the_docs_lines(tmp_path):
+    home = tmp_path / 'home'
+    shutil.copytree(INTERFACE_PACKAGE, str(home / 'ws' / 'src' / 'mros2_base_msgs'))
+    (home / 'ws' / 'my_node.py').write_text(STAMP_NODE)
+    environment = user_environment(HOME=str(home), AMENT_PREFIX_PATH=None, ROS_DOMAIN_ID='77',
+                                   ROS_AUTOMATIC_DISCOVERY_RANGE='LOCALHOST')
+    result = run(['bash', '-e', '-c', _own_package_lines()], cwd=str(tmp_path), env=environment)
+    # The generator was the checkout's (its prefix on CMAKE_PREFIX_PATH after
+    # the venv), and the install holds the three kinds of output.
+    cache = (home / 'ws' / 'build' / 'mros2_base_msgs' / 'CMakeCache.txt').read_text()
+    assert 'rosidl_generator_mros2_DIR:PATH=%s' % os.path.join(
+        checkout_install().prefix, 'share', 'rosidl_generator_mros2', 'cmake') in cache
+    assert '_Python3_EXECUTABLE:INTERNAL=%s\n' % (home / 'ros2' / 'bin' / 'python3') in cache
+    install = home / 'ws' / 'install' / 'mros2_base_msgs'
+    for relative in ('include/mros2_base_msgs/mros2/mros2_base_msgs/msg/stamp.hpp',
+                     'include/mros2_base_msgs/mros2_base_msgs/msg/stamp.hpp',
+                     'lib/python3.11/site-packages/mros2_base_msgs/msg/_stamp.py'):
+        assert (install / relative).is_file(), relative
+    assert result.stdout.splitlines()[-1] == 'received sec=7 nanosec=8', result.stdout[-3000:]

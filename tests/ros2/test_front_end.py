@@ -93,9 +93,9 @@ def test_an_unknown_type_is_named_where_it_is_used(tmp_path):
     assert result.returncode == 1
     assert result.stderr.strip() == (
         "genmros: error: %s:2: unknown package 'nope_msgs' of type 'nope_msgs/msg/Thing' (not in "
-        'the workspace or the installed ROS 2 packages; AMENT_PREFIX_PATH or --prefix names the '
-        'installed ones; where no ROS 2 distribution is installed, as on Debian 12, a venv with '
-        'the wheel ros-nope-msgs holds it: --prefix VENV, docs/mros2.md)' % path)
+        'the workspace or the installed ROS 2 packages; --workspace DIR names the workspace '
+        'that holds a package of your own; AMENT_PREFIX_PATH or --prefix names the installed '
+        'ones)' % path)
     path = _package(tmp_path, 'demo_msgs', {'msg/Uses.msg': 'int32 a\nThin t\n',
                                             'msg/Thing.msg': 'int8 x\n'})
     result = _export(tmp_path, tmp_path / 'out', '--package', 'demo_msgs')

@@ -34,7 +34,7 @@ from testing.ros_graph import (
     BOARD_IP, DELIVERY_TIMEOUT, PEER_IP, Board, RosGraph, free_port, sourced_environment)
 from testing.tcpros_peer import (
     HostilePublisher, RawSubscriber, encode_header)
-from fixtures.build_integration.tools import run
+from support.build_integration import run
 from support.user_checkouts import MROS_V1_ROOT
 from support.pc_target_apps import build_sample
 from support.sanitizer_reports import LIBRARY_REPORTS, sanitizer_reports
