@@ -1,5 +1,4 @@
 @# SPDX-License-Identifier: BSD-3-Clause
-@# What it renders is free to use without notice: LICENSE's exception.
 @# One message class: its members, and mros2's calls through mros2_wire::Message.
 @[for line in msg.comment]@
 // @(line)

@@ -1,5 +1,4 @@
 @# SPDX-License-Identifier: BSD-3-Clause
-@# What it renders is free to use without notice: LICENSE's exception.
 @# A service's halves, and the service naming them as rosidl's C++ does.
 @(request_text)
 @(response_text)

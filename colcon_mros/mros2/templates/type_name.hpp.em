@@ -1,5 +1,4 @@
 @# SPDX-License-Identifier: BSD-3-Clause
-@# What it renders is free to use without notice: LICENSE's exception.
 namespace message_traits
 {
 @[for msg in messages]@
