@@ -179,3 +179,11 @@ def test_the_check_sees_a_crossing_import(tmp_path):
     module.write_text('import os\nfrom built_workspace import workspace\n')
     assert _imported_names(str(module)) == {'os', 'built_workspace'}
     assert 'built_workspace' in {os.path.basename(path)[:-3] for path in _python_files('tests')}
+
+
+def test_tests_take_their_helpers_from_support_never_from_conftest():
+    # conftest.py is pytest's (fixtures, hooks); what modules share is a
+    # module of tests/support, imported like any other.
+    importing = [os.path.relpath(path, REPO) for path in _python_files('tests')
+                 if 'conftest' in _imported_names(path)]
+    assert importing == []
