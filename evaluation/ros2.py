@@ -22,8 +22,10 @@
    veth pair (testing/mros2_posix.py), and with MROS2_ROOT (mros2 v0.5.4)
    patched by genmros mros2-harden, its two publishers.
 
-The ROS 2 nodes run in the venv build/ros2-wheels (scripts/setup.sh
---tests), on Fast DDS over loopback only, in a DDS domain of their own.
+The ROS 2 nodes run in the venv of ROS 2 wheels that testing/ros_paths.py
+names (scripts/setup.sh --tests: Kilted's build/ros2-wheels, or the one
+GENMROS_ROS2_WHEELS names, such as Jazzy's build/ros2-wheels-jazzy), on Fast
+DDS over loopback only, in a DDS domain of their own.
 """
 
 import glob
@@ -38,10 +40,11 @@ from board import TARGETS, Failure, run_logged, sizes
 from testing import mros2_posix
 from testing.dds_peer import free_domain_id
 from testing.ros_graph import Process
+from testing.ros_paths import ros2_wheels
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
-WHEELS = os.path.join(REPO, 'build', 'ros2-wheels')
+WHEELS = ros2_wheels()
 TEST_WS_ROS2_SRC = os.path.join(REPO, 'test_ws_ros2', 'src')
 FIRMWARE = os.path.join(HERE, 'firmware_ros2')
 RTPS_CONFIG = os.path.join(FIRMWARE, 'rtps', 'config.h')

@@ -20,10 +20,11 @@ messages with real ROS nodes. One line per step, then a PASS/FAIL table.
    for 32-bit ARM Linux and Cortex-M4F, the fit check's verdict, the ARM
    program under qemu-arm with real rclpy nodes, and a field added.
 
-  run.py [--messages N] [--build-dir DIR]
+  run.py [--messages N] [--build-dir DIR] [--ros2-only]
 
 Uses the installed genmros (scripts/run-evaluation.sh installs it). Exits 0
-only if every step passed.
+only if every step passed. --ros2-only runs step 6 alone, to try the ROS 2
+part on another venv of ROS 2 wheels (GENMROS_ROS2_WHEELS: testing/ros_paths.py).
 """
 
 import argparse
@@ -153,6 +154,8 @@ def main():
                              '(default 5)')
     parser.add_argument('--build-dir', help='keep the builds here, in a new or empty directory '
                         '(default: a temporary one)')
+    parser.add_argument('--ros2-only', action='store_true',
+                        help='run the ROS 2 part alone (step 6)')
     args = parser.parse_args()
     mros_root = os.environ.get('MROS_V1_ROOT', '')
     steps = Steps()
@@ -161,6 +164,9 @@ def main():
         os.makedirs(build_root, exist_ok=True)
         if os.listdir(build_root):
             parser.error('--build-dir %s is not empty' % build_root)
+        if args.ros2_only:
+            run_ros2(steps, os.path.join(build_root, 'ros2'))
+            return finish(steps)
         workspace = steps.run('catkin_make of test_ws (genmros beside gencpp and genpy)',
                               catkin_build, os.path.join(build_root, 'catkin_ws'))
         if workspace is None:
@@ -204,6 +210,7 @@ def main():
 def run_ros2(steps, build_root):
     """The ROS 2 part (evaluation/ros2.py): one row per step and per topic."""
     os.makedirs(build_root, exist_ok=True)
+    print('ROS 2: the ROS 2 wheels of %s' % ros2.WHEELS, flush=True)
     if not ros2.wheels_found():
         steps.skip('ROS 2: colcon build --mros-export of test_ws_ros2',
                    'no ROS 2 wheels at %s (scripts/setup.sh --tests makes them)' % ros2.WHEELS)

@@ -51,26 +51,34 @@ as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --reinstall \
 # ROS 2 serializer the mros2 tests compare with) goes into the checkout's
 # build/test-python, which tests/conftest.py puts on the path, not into a
 # Python of the system.
-# The ROS 2 wheels (scripts/test-requirements-ros2-wheels.txt: rosidl, rclpy
-# and message packages) get a venv of their own, build/ros2-wheels, made
-# again when the list changes.
+# The ROS 2 wheels (rosidl, rclpy and message packages) get venvs of their own,
+# each made again when its list changes: Kilted's, build/ros2-wheels
+# (scripts/test-requirements-ros2-wheels.txt), which the tests and the main job
+# use, and Jazzy's, build/ros2-wheels-jazzy
+# (scripts/test-requirements-ros2-wheels-jazzy.txt).
+ros2_wheels_venv() {
+  local venv="$1" wheel_list="$2"
+  if cmp -s "$wheel_list" "$venv/requirements.txt"; then
+    return
+  fi
+  rm -rf "$venv"
+  /usr/bin/python3 -m venv "$venv"
+  "$venv/bin/pip" install --quiet --disable-pip-version-check -r "$wheel_list"
+  # The wheels' CMake exports name the Python and NumPy include directories
+  # of the machine that built them (/opt/python/cp311-cp311/...), which
+  # CMake refuses as missing: they are pointed at the venv's own.
+  local python_include numpy_include
+  python_include=$("$venv/bin/python" -c 'import sysconfig; print(sysconfig.get_paths()["include"])')
+  numpy_include=$("$venv/bin/python" -c 'import numpy; print(numpy.get_include())')
+  grep -rlZ --include='*.cmake' /opt/python/cp311-cp311 "$venv/share" | xargs -0 -r sed -i \
+    -e "s|/opt/python/cp311-cp311/include/python3.11|$python_include|g" \
+    -e "s|/opt/python/cp311-cp311/lib/python3.11/site-packages/numpy/_core/include|$numpy_include|g"
+  cp "$wheel_list" "$venv/requirements.txt"
+}
 if [ "${1:-}" = --tests ]; then
   /usr/bin/python3 -m pip install --quiet --disable-pip-version-check --upgrade \
     --target "$here/build/test-python" -r "$here/scripts/test-requirements.txt"
-  wheels="$here/build/ros2-wheels"
-  wheel_list="$here/scripts/test-requirements-ros2-wheels.txt"
-  if ! cmp -s "$wheel_list" "$wheels/requirements.txt"; then
-    rm -rf "$wheels"
-    /usr/bin/python3 -m venv "$wheels"
-    "$wheels/bin/pip" install --quiet --disable-pip-version-check -r "$wheel_list"
-    # The wheels' CMake exports name the Python and NumPy include directories
-    # of the machine that built them (/opt/python/cp311-cp311/...), which
-    # CMake refuses as missing: they are pointed at the venv's own.
-    python_include=$("$wheels/bin/python" -c 'import sysconfig; print(sysconfig.get_paths()["include"])')
-    numpy_include=$("$wheels/bin/python" -c 'import numpy; print(numpy.get_include())')
-    grep -rlZ --include='*.cmake' /opt/python/cp311-cp311 "$wheels/share" | xargs -0 -r sed -i \
-      -e "s|/opt/python/cp311-cp311/include/python3.11|$python_include|g" \
-      -e "s|/opt/python/cp311-cp311/lib/python3.11/site-packages/numpy/_core/include|$numpy_include|g"
-    cp "$wheel_list" "$wheels/requirements.txt"
-  fi
+  ros2_wheels_venv "$here/build/ros2-wheels" "$here/scripts/test-requirements-ros2-wheels.txt"
+  ros2_wheels_venv "$here/build/ros2-wheels-jazzy" \
+    "$here/scripts/test-requirements-ros2-wheels-jazzy.txt"
 fi

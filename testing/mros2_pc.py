@@ -21,9 +21,10 @@ from colcon_mros.library_tools.mros2.pc_target.build import build as build_progr
 from colcon_mros.library_tools.mros2.pc_target.network import BoardNetwork
 from colcon_mros.mros2.render import peer_profile
 from colcon_mros.mros2.rules import PEER_RECEIVE_BUFFER
+from testing.ros_paths import ros2_wheels
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-WHEELS_VENV = os.path.join(REPO, 'build', 'ros2-wheels')
+WHEELS_VENV = ros2_wheels()
 PEER_SCRIPT = os.path.join(REPO, 'testing', 'mros2_pc_peer.py')
 # What a run waits for at most: discovery through embeddedRTPS' SEDP, whose heartbeat
 # comes every 4 s, under qemu on a busy 2-core machine.

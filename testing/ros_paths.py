@@ -12,14 +12,25 @@ the environment as genmros reads it, so that they run wherever ROS is
 
 Where a variable is not set, Debian 12's layout is the default: its ROS 1
 and ROS 2's build side are installed under /usr and need no sourcing.
+
+The ROS 2 nodes (rclpy) of the main job, the mros2 tests and the benches run
+in a venv of ROS 2 wheels that scripts/setup.sh --tests makes: Kilted's,
+build/ros2-wheels, unless GENMROS_ROS2_WHEELS names another (Jazzy's,
+build/ros2-wheels-jazzy).
 """
 
 import functools
 import glob
 import os
 
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # Where Debian 12 installs ROS, with nothing sourced.
 DEBIAN_PREFIX = '/usr'
+# The venvs of ROS 2 wheels scripts/setup.sh --tests makes, and the variable that
+# chooses one for the ROS 2 nodes.
+KILTED_WHEELS = os.path.join(REPO, 'build', 'ros2-wheels')
+JAZZY_WHEELS = os.path.join(REPO, 'build', 'ros2-wheels-jazzy')
+ROS2_WHEELS_VARIABLE = 'GENMROS_ROS2_WHEELS'
 
 
 def _variable_paths(name):
@@ -43,6 +54,11 @@ def ros1_prefixes():
 def ros2_prefixes():
     """The installed ROS 2 prefixes (AMENT_PREFIX_PATH), first wins."""
     return _variable_paths('AMENT_PREFIX_PATH') or [DEBIAN_PREFIX]
+
+
+def ros2_wheels():
+    """The venv of ROS 2 wheels the ROS 2 nodes run in (see the module)."""
+    return os.path.abspath(os.environ.get(ROS2_WHEELS_VARIABLE) or KILTED_WHEELS)
 
 
 def prefix_arguments(prefixes):

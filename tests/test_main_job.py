@@ -5,16 +5,13 @@ job passes and its table says so, ROS 1's and then ROS 2's, with no mROS
 checkout; with the user's (MROS_V1_ROOT), the paper's five directions on the
 real library pass too, within the board's task stacks."""
 
-import os
 import re
-import subprocess
-import sys
 
 import pytest
 
-from support.checkout_install import checkout_install
-from support.checkout import REPO
+from support.main_job import ROS2_ROWS, run_main_job
 from support.user_checkouts import MROS_V1_ROOT
+from testing.ros_paths import KILTED_WHEELS
 
 pytestmark = [pytest.mark.slow, pytest.mark.needs_qemu]
 
@@ -42,45 +39,18 @@ MROS_V1_ROWS = [
     'roscpp talker -> mROS v1',
 ]
 SYNC_ROW = 'in sync by construction: a field added, catkin_make, firmware rebuilt'
-ROS2_ROWS = [
-    "ROS 2: colcon build --mros-export of test_ws_ros2 (the ROS 2 wheels' "
-    'rosidl_default_generators and the mros2 generator)',
-    'ROS 2: firmware (CMake, mros2_import_messages) for 32-bit ARM Linux '
-    '(arm-linux-gnueabihf-g++, static)',
-    'ROS 2: firmware (CMake, mros2_import_messages) for Cortex-M4F (arm-none-eabi-g++, newlib '
-    'nano)',
-    "ROS 2: the fit check's verdict (genmros mros2-fit, the board's endpoints)",
-    'ROS 2: board -> rclpy: chatter',
-    'ROS 2: board -> rclpy: image',
-    'ROS 2: board -> rclpy: reading',
-    'ROS 2: rclpy -> board -> rclpy: command_echo',
-    'ROS 2: rclpy -> board -> rclpy: twist_echo',
-    'ROS 2: rclpy -> board -> rclpy: reading_in_echo',
-    'ROS 2: in sync by construction: a field added, colcon build, firmware rebuilt',
-]
-# The user's checkouts the main job would use besides.
-CHECKOUT_VARIABLES = ('MROS_V1_ROOT', 'MROS2_ROOT', 'MROS2_POSIX_ROOT')
-TABLE_ROW = re.compile(r'^(.*?) {2,}(PASS|FAIL.*)$')
 
 
 def _main_job(tmp_path, mros_v1_root):
     """What the main job printed, and its table's rows as (step, verdict)."""
-    environment = checkout_install().environment(os.environ)
-    for variable in CHECKOUT_VARIABLES:
-        environment.pop(variable, None)
-    if mros_v1_root:
-        environment['MROS_V1_ROOT'] = mros_v1_root
-    result = subprocess.run([sys.executable, os.path.join(REPO, 'evaluation', 'run.py'),
-                             '--messages', '5', '--build-dir', str(tmp_path / 'build')],
-                            env=environment, capture_output=True, text=True, timeout=1200)
-    table = result.stdout.split('==== the main job ====\n')[-1].splitlines()
-    assert table[-1] == 'RESULT: PASS' and result.returncode == 0, result.stdout[-5000:]
-    return result.stdout, [TABLE_ROW.match(line).groups() for line in table[:-1]]
+    return run_main_job(tmp_path / 'build', ['--messages', '5'],
+                        {'MROS_V1_ROOT': mros_v1_root} if mros_v1_root else {})
 
 
 def test_the_main_job_needs_no_mros(tmp_path):
     output, rows = _main_job(tmp_path, '')
     assert rows == [(row, 'PASS') for row in ROWS + [SYNC_ROW] + ROS2_ROWS], output
+    assert 'ROS 2: the ROS 2 wheels of %s\n' % KILTED_WHEELS in output
     assert 'frames carried between qemu-arm and the ROS graph by evaluation/board_bridge.py' \
         in output
     assert 'samples carried between qemu-arm and the ROS 2 graph by evaluation/ros2_bridge.py' \

@@ -3,69 +3,33 @@
 mros2_base_msgs of test_ws_ros2 built with CMake against the rosidl that
 scripts/setup.sh --tests installs into build/ros2-wheels (its
 rosidl_write_generator_arguments(), rosidl_find_package_idl(), Python and
-rosidl_pycommon), with this checkout's rosidl_generator_mros2 (the CMake
-package and support headers of its install, tests/support/checkout_install.py; the
-checkout's entry point). Its header is
-the one genmros writes for the same message with Debian's rosidl (3.3). And
+rosidl_pycommon), with this checkout's rosidl_generator_mros2
+(tests/support/rosidl_wheels.py). Its header is the one genmros writes for
+the same message with Debian's rosidl (3.3). And
 an interface package as ROS 2's tutorials write it, naming only
 rosidl_default_generators, gets its mros2 headers beside rosidl's C++ and
 Python code."""
 
 import os
-import subprocess
 
 import pytest
 
-from support.checkout_install import checkout_install
 from support.checkout import REPO, run_genmros
+from support.rosidl_wheels import (build_interface_package, installed_version, mros2_include,
+                                   require_venv)
+from testing.ros_paths import KILTED_WHEELS
 
 pytestmark = pytest.mark.slow
 
-VENV = os.path.join(REPO, 'build', 'ros2-wheels')
+VENV = KILTED_WHEELS
 PACKAGE = os.path.join(REPO, 'test_ws_ros2', 'src', 'mros2_base_msgs')
 STAMP = os.path.join('mros2_base_msgs', 'msg', 'stamp.hpp')
 
 
-def _extension_dir():
-    """The CMake package of this checkout's install (with its support headers)."""
-    return os.path.join(checkout_install().prefix, 'share', 'rosidl_generator_mros2', 'cmake')
-
-
-def _mros2_include(install, package):
-    """The package's mros2 include root: <install>/include/<pkg>/mros2."""
-    return os.path.join(str(install), 'include', package, 'mros2')
-
-
-def _run(argv, env):
-    result = subprocess.run(argv, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                            text=True)
-    assert result.returncode == 0, ' '.join(argv) + '\n' + result.stdout[-6000:]
-    return result
-
-
 @pytest.fixture(scope='module')
 def wheel_build(tmp_path_factory):
-    if not os.path.isfile(os.path.join(VENV, 'bin', 'python')):
-        pytest.fail('no %s: run scripts/setup.sh --tests' % VENV)
-    root = tmp_path_factory.mktemp('wheels')
-    generator = str(root / 'rosidl_generator_mros2')
-    with open(generator, 'w') as stream:
-        stream.write('#!/bin/sh\nPYTHONPATH=%s exec %s -m '
-                     'colcon_mros.integrations.rosidl_generator'
-                     ' "$@"\n' % (REPO, os.path.join(VENV, 'bin', 'python')))
-    os.chmod(generator, 0o755)
-    env = {key: value for key, value in os.environ.items()
-           if key not in ('AMENT_PREFIX_PATH', 'CMAKE_PREFIX_PATH', 'PYTHONPATH')}
-    env.update(PATH='%s:/usr/bin:/bin' % os.path.join(VENV, 'bin'), AMENT_PREFIX_PATH=VENV)
-    build, install = str(root / 'build'), str(root / 'install')
-    _run(['cmake', '-S', PACKAGE, '-B', build, '-DCMAKE_PREFIX_PATH=%s' % VENV,
-          '-DPython3_EXECUTABLE=%s' % os.path.join(VENV, 'bin', 'python'),
-          '-Drosidl_generator_mros2_DIR=%s' % _extension_dir(),
-          '-Drosidl_generator_mros2_BIN=%s' % generator, '-DCMAKE_INSTALL_PREFIX=%s' % install],
-         env)
-    _run(['cmake', '--build', build], env)
-    _run(['cmake', '--install', build], env)
-    return build, install
+    require_venv(VENV)
+    return build_interface_package(PACKAGE, tmp_path_factory.mktemp('wheels'), VENV)
 
 
 def test_the_build_used_the_wheels_rosidl(wheel_build):
@@ -74,18 +38,14 @@ def test_the_build_used_the_wheels_rosidl(wheel_build):
         cache = stream.read()
     assert 'rosidl_cmake_DIR:PATH=%s' % os.path.join(VENV, 'share', 'rosidl_cmake', 'cmake') \
         in cache
-    version = subprocess.run([os.path.join(VENV, 'bin', 'python'), '-c',
-                              'import importlib.metadata as m; '
-                              'print(m.version("ros-rosidl-pycommon"))'],
-                             capture_output=True, text=True, check=True).stdout.strip()
-    assert version.startswith('4.9.')
+    assert installed_version(VENV, 'ros-rosidl-pycommon').startswith('4.9.')
 
 
 def test_its_header_is_the_one_debians_rosidl_gives(wheel_build, tmp_path):
     _, install = wheel_build
     run_genmros('mros2-export', '--workspace', os.path.join(REPO, 'test_ws_ros2'),
                 '--type', 'mros2_base_msgs/msg/Stamp', '-o', str(tmp_path))
-    with open(os.path.join(_mros2_include(install, 'mros2_base_msgs'), STAMP)) as wheels, \
+    with open(os.path.join(mros2_include(install, 'mros2_base_msgs'), STAMP)) as wheels, \
             open(str(tmp_path / STAMP)) as debian:
         assert wheels.read() == debian.read()
 
@@ -126,22 +86,9 @@ def test_a_package_naming_only_rosidl_default_generators_gets_mros2_headers(tmp_
     (source / 'package.xml').write_text(TUTORIAL_PACKAGE)
     (source / 'msg' / 'Num.msg').write_text('int64 num\n')
     (source / 'srv' / 'AddThreeInts.srv').write_text('int64 a\nint64 b\nint64 c\n---\nint64 sum\n')
-    generator = tmp_path / 'rosidl_generator_mros2'
-    generator.write_text('#!/bin/sh\nPYTHONPATH=%s exec %s -m colcon_mros.integrations.'
-                         'rosidl_generator "$@"\n' % (REPO, os.path.join(VENV, 'bin', 'python')))
-    generator.chmod(0o755)
-    env = {key: value for key, value in os.environ.items()
-           if key not in ('AMENT_PREFIX_PATH', 'CMAKE_PREFIX_PATH', 'PYTHONPATH')}
-    env.update(PATH='%s:/usr/bin:/bin' % os.path.join(VENV, 'bin'),
-               AMENT_PREFIX_PATH='%s:%s' % (VENV, REPO))
-    build, install = str(tmp_path / 'build'), tmp_path / 'install'
-    _run(['cmake', '-S', str(source), '-B', build, '-DCMAKE_PREFIX_PATH=%s;%s' % (VENV, REPO),
-          '-DPython3_EXECUTABLE=%s' % os.path.join(VENV, 'bin', 'python'),
-          '-Drosidl_generator_mros2_DIR=%s' % _extension_dir(),
-          '-Drosidl_generator_mros2_BIN=%s' % generator,
-          '-DCMAKE_INSTALL_PREFIX=%s' % install], env)
-    _run(['cmake', '--build', build, '-j2'], env)
-    _run(['cmake', '--install', build], env)
+    require_venv(VENV)
+    build_interface_package(source, tmp_path, VENV, prefixes=[REPO])
+    install = tmp_path / 'install'
     for relative in ('include/tutorial_interfaces/mros2/tutorial_interfaces/msg/num.hpp',
                      'include/tutorial_interfaces/mros2/tutorial_interfaces/srv/'
                      'add_three_ints.hpp',
