@@ -10,4 +10,5 @@ embeddedRTPS and CMSIS to compile the user's own src/mros2.cpp
 (mros2_library/), and a genmros app on the user's mros2-posix against an
 rclpy node (mros2_posix, mros2_posix_app/). For both: where ROS is, read
 from the environment as genmros reads it (ros_paths). Each of them imports this
-package from the repository; none imports the others."""
+package from the repository, and a few build on another of it (the soak on
+mros2_pc, which takes the ROS 2 wheels' venv from ros_paths)."""

@@ -30,9 +30,9 @@ PEER_SCRIPT = os.path.join(REPO, 'testing', 'mros2_pc_peer.py')
 # comes every 4 s, under qemu on a busy 2-core machine.
 EVENT_CAP = 180
 # What mros2 as it is needs of genmros' series to exchange with ROS 2 nodes at all: without
-# the first it discovers no Fast DDS 3 participant; without the second it matches a node
-# that starts after it seconds after the node matched it, and the samples of that time are
-# lost.
+# the first it discovers no participant of Fast DDS 3 or 2.14 (Kilted's, Jazzy's); without
+# the second it matches a node that starts after it seconds after the node matched it, and
+# the samples of that time are lost.
 TALKING_PATCHES = ('accept-fast-dds-3-discovery', 'reader-catches-up-at-once')
 # The plain node's procedure, what an ordinary ROS 2 node does: once the graph shows every
 # endpoint matched, it waits SETTLE seconds, publishes each sample once, PERIOD seconds

@@ -43,7 +43,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.dirname(HERE))
 from build_overhead import WRAPPER, measure, timed_build  # noqa: E402
-from testing.ros_paths import ros2_package_dir  # noqa: E402
+from testing.ros_paths import KILTED_WHEELS, ros2_package_dir  # noqa: E402
 
 TEST_WS_ROS2 = os.path.join(REPO, 'test_ws_ros2', 'src')
 TEST_INTERFACE_FILES = os.path.dirname(ros2_package_dir('test_interface_files'))
@@ -97,7 +97,7 @@ def test_interfaces(root):
         stream.write(INTERFACES_PACKAGE)
 
 
-WHEELS = os.path.join(REPO, 'build', 'ros2-wheels')
+WHEELS = KILTED_WHEELS
 
 
 def debian_environment(enabled):

@@ -22,12 +22,12 @@ import os
 
 import pytest
 
-from support.checkout import REPO
 from testing import mros2_posix
+from testing.ros_paths import KILTED_WHEELS
 
 pytestmark = pytest.mark.slow
 
-WHEELS_VENV = os.path.join(REPO, 'build', 'ros2-wheels')
+WHEELS_VENV = KILTED_WHEELS
 EXCHANGES = mros2_posix.EXCHANGES
 
 

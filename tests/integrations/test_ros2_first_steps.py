@@ -27,10 +27,11 @@ import pytest
 from support.checkout import REPO, run_genmros
 from support.checkout_install import checkout_install
 from support.build_integration import run, user_environment
+from testing.ros_paths import KILTED_WHEELS
 
 DOCS = os.path.join(REPO, 'docs', 'mros2.md')
 INTERFACE_PACKAGE = os.path.join(REPO, 'test_ws_ros2', 'src', 'mros2_base_msgs')
-WHEELS = os.path.join(REPO, 'build', 'ros2-wheels')
+WHEELS = KILTED_WHEELS
 WHEEL_PINS = os.path.join(REPO, 'scripts', 'test-requirements-ros2-wheels.txt')
 HUMBLE = os.environ.get('HUMBLE_ROSIDL_PREFIX', '')
 # /opt/ros/humble has setup.bash; a prefix built by Debian 12's colcon (no

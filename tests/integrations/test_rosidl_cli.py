@@ -9,11 +9,12 @@ import subprocess
 
 import pytest
 
-from support.checkout import REPO, run_genmros
+from support.checkout import run_genmros
 from support.checkout_install import checkout_install
 from support.file_trees import package_xml, write_tree
+from testing.ros_paths import KILTED_WHEELS
 
-WHEELS_PYTHON = os.path.join(REPO, 'build', 'ros2-wheels', 'bin', 'python')
+WHEELS_PYTHON = os.path.join(KILTED_WHEELS, 'bin', 'python')
 PYTHONS = {'debian': '/usr/bin/python3', 'wheels': WHEELS_PYTHON}
 ROSIDL = 'import sys; from rosidl_cli.cli import main; sys.exit(main())'
 SOURCES = {

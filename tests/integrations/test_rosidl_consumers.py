@@ -19,10 +19,11 @@ import pytest
 
 from support.checkout import REPO
 from support.checkout_install import checkout_install
+from testing.ros_paths import KILTED_WHEELS
 
 pytestmark = pytest.mark.slow
 
-WHEELS = os.path.join(REPO, 'build', 'ros2-wheels')
+WHEELS = KILTED_WHEELS
 # What each rosidl offers an interface package for C++: Debian 12 has
 # rosidl_generator_cpp alone; a ROS 2 distribution and its wheels have
 # rosidl_default_generators.
