@@ -51,15 +51,25 @@ _NAME = r'[A-Za-z_]\w*'
 _DOTTED = r'%s(?:\.%s)*' % (_NAME, _NAME)
 # A markup of a logic-free template, at its prefix. Nothing in one can hold a
 # closing parenthesis or bracket: where it ends is plain.
-_MARKUP = re.compile(r'@(?:(?P<prefix>@)|#[^\n]*\n|[ \n]|\(\s*(?P<expansion>%s)\s*\)'
+_MARKUP = re.compile(r'@(?:(?P<prefix>@)|#[^\n]*\n|[ \n]|\( *(?P<expansion>%s) *\)'
                      r'|\[(?P<control>[^\]\n]*)\])' % _DOTTED)
-_FOR = re.compile(r'for\s+(%s(?:\s*,\s*%s)*)\s+in\s+(%s)$' % (_NAME, _NAME, _DOTTED))
-_BRANCH = re.compile(r'(if|elif)\s+((?:not\s+)?%s)$' % _DOTTED)
-_END = re.compile(r'end\s+(for|if)$')
+# Control markups as empy 3 reads them: the keyword, one space, the rest.
+_FOR = re.compile(r'for (%s(?:, ?%s)*) in (%s)$' % (_NAME, _NAME, _DOTTED))
+_BRANCH = re.compile(r'(if|elif) ((?:not )?%s)$' % _DOTTED)
+_END = re.compile(r'end (for|if)$')
 
 
 class _NotLogicFree(Exception):
     """The template holds more than the markups compiled here."""
+
+
+class _Block:
+    """An open @[for] or @[if] of a template being compiled."""
+
+    def __init__(self, kind):
+        self.kind = kind
+        self.statements = 0  # in its current branch
+        self.has_else = False
 
 
 class _Compilation:
@@ -67,14 +77,12 @@ class _Compilation:
 
     def __init__(self):
         self.lines = []
-        # The open for and if blocks, innermost last: [kind, statements in
-        # the current branch, whether else was seen].
-        self.blocks = []
+        self.blocks = []  # innermost last
 
     def add(self, line):
         self.lines.append(_INDENT * len(self.blocks) + line)
         if self.blocks:
-            self.blocks[-1][1] += 1
+            self.blocks[-1].statements += 1
 
     def write(self, text):
         if text:
@@ -91,23 +99,24 @@ class _Compilation:
         elif branch and branch.group(1) == 'if':
             self.open('if', 'if %s:' % branch.group(2))
         elif branch or contents == 'else':
-            if not self.blocks or self.blocks[-1][0] != 'if' or self.blocks[-1][2]:
+            if not self.blocks or self.blocks[-1].kind != 'if' or self.blocks[-1].has_else:
                 raise _NotLogicFree()
-            self.close_branch()
-            self.add('elif %s:' % branch.group(2) if branch else 'else:')
-            self.blocks.append(['if', 0, not branch])
-        elif end and self.blocks and self.blocks[-1][0] == end.group(1):
-            self.close_branch()
+            self.close()
+            self.open('if', 'elif %s:' % branch.group(2) if branch else 'else:')
+            self.blocks[-1].has_else = not branch
+        elif end and self.blocks and self.blocks[-1].kind == end.group(1):
+            self.close()
         else:
             raise _NotLogicFree()
 
     def open(self, kind, line):
         self.add(line)
-        self.blocks.append([kind, 0, False])
+        self.blocks.append(_Block(kind))
 
-    def close_branch(self):
-        """Ends the innermost block's current branch ('pass' where it wrote nothing)."""
-        if not self.blocks[-1][1]:
+    def close(self):
+        """Ends the innermost block's current branch, 'pass' where it
+        writes nothing; an elif or else opens the next."""
+        if not self.blocks[-1].statements:
             self.add('pass')
         self.blocks.pop()
 

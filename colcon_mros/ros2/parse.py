@@ -93,7 +93,7 @@ def _adapt(package, kind, name, text):
         'srv': parse_service_string(package, name, text)})
 
 
-def _require_an_adapter_for_this_empy():
+def require_an_adapter_for_this_empy():
     """Raise a one-line GenmrosError where rosidl_adapter cannot render even
     a message without fields: it takes the empy it was written for (Debian
     12's, rosidl 3, takes empy 3 only), and the .msg or .srv is not at fault."""
@@ -142,7 +142,7 @@ def parse_interface(interface):
         try:
             idl = _quietly(_adapt, interface.package, interface.kind, interface.name, text)
         except Exception as error:  # rosidl_adapter's errors, ValueError and more
-            _require_an_adapter_for_this_empy()
+            require_an_adapter_for_this_empy()
             raise GenmrosError(_problem(error), path,
                                _first_bad_line(interface.package, interface.kind,
                                                interface.name, text))
