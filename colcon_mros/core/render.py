@@ -9,13 +9,14 @@ A template renders one of two ways, with the same text out under empy 3
 and empy 4 alike (tests/core/test_render.py holds them to it over every
 template of the package and over a user's template directory, genmros -e):
 
-- A logic-free template, one that holds only the markups empy's
-  documentation gives as text, ``@@``, ``@#`` comments, ``@`` before a
-  space or a newline, expansions of a name or attribute (``@(msg.name)``),
-  ``@[for x in msg.fields]``, ``@[if msg.constants]`` (or ``not``) with
-  ``@[elif ...]``, ``@[else]`` and ``@[end for]``/``@[end if]``, is
-  compiled once per process into one Python code object, which each render
-  runs over the context. It does what empy does with those markups: write
+- A logic-free template, one that holds nothing but text and these
+  markups, as empy's documentation defines them in 3 and 4 alike: ``@@``,
+  ``@#`` comments, ``@`` before a space or a newline, expansions of a name
+  or attribute (``@(msg.name)``), ``@[for x in msg.fields]``,
+  ``@[if msg.constants]`` (or ``not``) with ``@[elif ...]`` and
+  ``@[else]``, and ``@[end for]``/``@[end if]``, is compiled once per
+  process into one Python code object, which each render runs over the
+  context. It does what empy does with those markups: write
   the text; write ``str()`` of an expression unless it is None; loop and
   branch, the loop variables among the template's globals. Every template
   of the package is one (tests/core/test_templates.py). empy keeps nothing

@@ -95,8 +95,8 @@ def _adapt(package, kind, name, text):
 
 def require_an_adapter_for_this_empy():
     """Raise a one-line GenmrosError where rosidl_adapter cannot render even
-    a message without fields: it takes the empy it was written for (Debian
-    12's, rosidl 3, takes empy 3 only), and the .msg or .srv is not at fault."""
+    a message without fields under an empy other than 3: it was written for
+    empy 3 (Debian 12's, rosidl 3.3), and no .msg or .srv is at fault."""
     import em
     import rosidl_adapter
     try:
