@@ -2,6 +2,7 @@
 """Fixtures shared by the test modules."""
 
 import os
+import subprocess
 import sys
 
 import pytest
@@ -9,7 +10,6 @@ import pytest
 from support import built_workspace
 from support.checkout import REPO, TEST_WS, run_genmros
 from support.debian_messages import DEBIAN_MESSAGE_PACKAGES
-from support.empy_stdout import let_empy_take_stdout
 from support.user_checkouts import CHECKOUTS
 from testing import ros_paths
 
@@ -18,8 +18,9 @@ from testing import ros_paths
 sys.path.append(os.path.join(REPO, 'build', 'test-python'))
 
 
-# The mros2 corpora's fixtures (tests/support/mros2_corpus.py).
-pytest_plugins = ['support.mros2_corpus']
+# The mros2 corpora's fixtures (tests/support/mros2_corpus.py), and empy 3's stdout proxy
+# kept across pytest's capture (tests/support/empy_stdout.py).
+pytest_plugins = ['support.mros2_corpus', 'support.empy_stdout']
 
 
 def pytest_collection_modifyitems(config, items):
@@ -34,11 +35,20 @@ def pytest_collection_modifyitems(config, items):
                 item.add_marker(skip)
 
 
-@pytest.fixture(autouse=True)
-def empy_takes_the_tests_stdout():
-    """Each test lets its first empy interpreter wrap its stdout."""
-    let_empy_take_stdout()
-    yield
+@pytest.fixture(scope='session')
+def empy4_python(tmp_path_factory):
+    """The python of a venv over Debian's Python (genmsg, rosidl) with empy 4
+    from PyPI (pip's cache will do) in place of Debian's empy 3, made once per
+    session; a test that needs it skips, saying why, where pip gets no empy 4."""
+    venv = str(tmp_path_factory.mktemp('empy4_venv'))
+    subprocess.run(['/usr/bin/python3', '-m', 'venv', '--system-site-packages', venv], check=True)
+    python = os.path.join(venv, 'bin', 'python')
+    result = subprocess.run([python, '-m', 'pip', 'install', '-q', 'empy>=4,<5'],
+                            capture_output=True, text=True)
+    if result.returncode != 0:
+        pytest.skip('no empy 4 from PyPI for the venv: %s'
+                    % (result.stderr.strip().splitlines() or ['pip failed'])[-1])
+    return python
 
 
 @pytest.fixture(scope='session')

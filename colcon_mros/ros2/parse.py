@@ -11,6 +11,7 @@ line at which the file stops parsing), so every error reads
 
 import contextlib
 import io
+import os
 import re
 
 from colcon_mros.errors import GenmrosError
@@ -92,6 +93,23 @@ def _adapt(package, kind, name, text):
         'srv': parse_service_string(package, name, text)})
 
 
+def require_an_adapter_for_this_empy():
+    """Raise a one-line GenmrosError where rosidl_adapter cannot render even
+    a message without fields under an empy other than 3: it was written for
+    empy 3 (Debian 12's, rosidl 3.3), and no .msg or .srv is at fault."""
+    import em
+    import rosidl_adapter
+    try:
+        _quietly(_adapt, 'genmros', 'msg', 'Empty', '')
+    except Exception:  # whatever this rosidl_adapter makes of this empy
+        if not em.__version__.startswith('3.'):
+            raise GenmrosError(
+                "rosidl_adapter (%s) renders .msg and .srv files with empy 3 only, and empy %s "
+                "is installed (%s): install empy 3 in its place (pip install 'empy<4'), or a "
+                'rosidl_adapter that renders with empy 4'
+                % (os.path.dirname(rosidl_adapter.__file__), em.__version__, em.__file__))
+
+
 def _first_bad_line(package, kind, name, text):
     """The first line at which a .msg or .srv no longer parses, or None."""
     from rosidl_adapter.parser import parse_message_string, parse_service_string
@@ -124,6 +142,7 @@ def parse_interface(interface):
         try:
             idl = _quietly(_adapt, interface.package, interface.kind, interface.name, text)
         except Exception as error:  # rosidl_adapter's errors, ValueError and more
+            require_an_adapter_for_this_empy()
             raise GenmrosError(_problem(error), path,
                                _first_bad_line(interface.package, interface.kind,
                                                interface.name, text))

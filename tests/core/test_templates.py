@@ -7,50 +7,13 @@ needs more than that asks its C++ view for it."""
 
 import glob
 import os
-import re
 
-import em
 import pytest
 
+from colcon_mros.core.render import compiled_template
 from support.checkout import REPO
 
 TEMPLATES = sorted(glob.glob(os.path.join(REPO, 'colcon_mros', '*', 'templates', '*.em')))
-_DOTTED = r'[A-Za-z_]\w*(?:\.[A-Za-z_]\w*)*'
-_ALLOWED_CONTROL = {
-    'for': re.compile(r'^[A-Za-z_]\w*(?:\s*,\s*[A-Za-z_]\w*)*\s+in\s+%s$' % _DOTTED),
-    'if': re.compile(r'^(?:not\s+)?%s$' % _DOTTED),
-    'elif': re.compile(r'^(?:not\s+)?%s$' % _DOTTED),
-}
-
-
-def _tokens(tokens):
-    for token in tokens:
-        yield token
-        yield from _tokens(getattr(token, 'subtokens', ()))
-
-
-def _logic(path):
-    """What in the template at path is more than a name or a plain for/if."""
-    with open(path) as stream:
-        scanner = em.Scanner(em.DEFAULT_PREFIX, stream.read())
-    found = []
-    for token in _tokens(iter(scanner.one, None)):
-        if isinstance(token, (em.StatementToken, em.InPlaceToken, em.CustomToken)):
-            found.append(token.string())
-        elif isinstance(token, em.ExpressionToken):
-            if (not re.match('^%s$' % _DOTTED, token.testCode.strip())
-                    or token.thenCode or token.elseCode or token.exceptCode):
-                found.append(token.string())
-        elif isinstance(token, em.SimpleExpressionToken):
-            if not re.match('^%s$' % _DOTTED, token.code):
-                found.append(token.string())
-        elif isinstance(token, em.ControlToken):
-            if token.type in _ALLOWED_CONTROL:
-                if not _ALLOWED_CONTROL[token.type].match(token.rest.strip()):
-                    found.append('@[%s]' % token.contents)
-            elif token.type not in ('else', 'end'):
-                found.append('@[%s]' % token.contents)
-    return found
 
 
 def test_there_are_templates_of_every_back_end_and_the_export():
@@ -60,13 +23,20 @@ def test_there_are_templates_of_every_back_end_and_the_export():
 
 @pytest.mark.parametrize('path', TEMPLATES, ids=lambda path: os.path.relpath(path, REPO))
 def test_the_template_holds_no_logic(path):
-    assert _logic(path) == []
+    """colcon_mros.core.render compiles only a template without logic."""
+    assert compiled_template(path) is not None
 
 
-def test_the_check_sees_logic(tmp_path):
-    template = tmp_path / 'logic.em'
-    template.write_text('@{x = 1}@(len(items)) @(a + b) @name.attr @(msg.name)\n'
-                        '@[for i in range(3)]@(i)@[end for]@[for m in msg.members]@[end for]\n'
-                        '@[if a == b]@[elif not msg.ok]@[else]@[end if]@[while x]@[end while]\n')
-    assert _logic(str(template)) == ['@{x = 1}', '@(len(items))', '@(a + b)',
-                                     '@[for i in range(3)]', '@[if a == b]', '@[while x]']
+@pytest.mark.parametrize('logic', [
+    '@{x = 1}', '@(len(items))', '@(a + b)', '@name.attr', '@(a ? b ! c)',
+    '@[for i in range(3)]@(i)@[end for]', '@[if a == b]@[end if]', '@[while x]@[end while]',
+    '@[for m in msg.members]@[else]@[end for]', '@[if x]@[else]@[elif y]@[end if]',
+    '@[if x]', '@[end if]', '@[if x]@[end for]'])
+def test_the_check_sees_logic(tmp_path, logic):
+    """logic after a template without any."""
+    logic_free = ('@(msg.name) @[if not msg.ok]@[elif msg.other]@[else]@[end if]\n'
+                  '@[for a, b in msg.pairs]@(a)@[end for]\n')
+    for name, text, compiles in [('logic_free.em', logic_free, True),
+                                 ('logic.em', logic_free + logic, False)]:
+        (tmp_path / name).write_text(text)
+        assert (compiled_template(str(tmp_path / name)) is not None) == compiles, name

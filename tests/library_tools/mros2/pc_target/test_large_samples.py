@@ -18,7 +18,6 @@ import numpy
 import pytest
 
 from colcon_mros.mros2.rules import FRAGMENT_OVERHEAD
-from support.empy_stdout import let_empy_take_stdout
 from testing import mros2_pc, mros2_soak
 from testing.mros2_posix import wire_bytes
 from support.user_checkouts import MROS2_ROOT
@@ -44,7 +43,6 @@ typestore = mros2_pc_boards.typestore
 @pytest.fixture(scope='module', params=LIMITS, ids=['limit-%d' % limit for limit in LIMITS])
 def board(request, posix_root, tmp_path_factory):
     """(program, receive limit): fragment_echo built hardened for that limit."""
-    let_empy_take_stdout()  # the module's second build runs in another test's capture
     limit = request.param
     work = tmp_path_factory.mktemp('large_samples_%d' % limit)
     with open(config_of(posix_root)) as stream:
