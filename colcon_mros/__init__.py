@@ -6,4 +6,4 @@ docs/design.md maps the subpackages and their layers; tests/test_layers.py
 holds every import to them.
 """
 
-__version__ = '0.1.0'
+__version__ = '0.1.1'

@@ -2,11 +2,11 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Installs what a genmros user needs on Debian 12 (debian-packages.txt; with
 # --tests also what the tests and the evaluation use, debian-test-packages.txt),
-# then the project itself as the Debian package colcon-mros, built here from
-# this tree by dpkg-buildpackage (debian/: debhelper and pybuild): dpkg then
-# owns every file of it, the catkin generator marker /etc/ros/genmsg/genmros
-# included, and `apt-get purge colcon-mros` (scripts/uninstall.sh) takes all
-# of it away. Idempotent; needs root (or sudo).
+# then the project itself as the Debian package python3-colcon-mros, built here
+# from this tree by dpkg-buildpackage (debian/: debhelper and pybuild): dpkg
+# then owns every file of it, the catkin generator marker /etc/ros/genmsg/genmros
+# included, and `apt-get purge python3-colcon-mros` (scripts/uninstall.sh)
+# takes all of it away. Idempotent; needs root (or sudo).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
@@ -42,10 +42,14 @@ if ! (cd "$work/colcon-mros" && dpkg-buildpackage -b -us -uc >"$work/build.log" 
 fi
 # apt resolves the package's Depends and installs its Recommends (the PC
 # target's cross compiler and qemu-user, rosidl for mros2); apt-get install
-# --no-install-recommends ./colcon-mros_*.deb is the headers-only install.
+# --no-install-recommends ./python3-colcon-mros_*.deb is the headers-only
+# install. The package of the old name, colcon-mros, which an earlier
+# setup.sh installed, is purged (python3-colcon-mros breaks it and takes
+# over its files); the build's transitional colcon-mros is for upgrades from
+# a repository, so it is not installed.
 chmod 755 "$work"
-as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --reinstall \
-  "$work"/colcon-mros_*_all.deb >/dev/null
+as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --reinstall --purge \
+  "$work"/python3-colcon-mros_*_all.deb >/dev/null
 
 # What the tests take from PyPI (scripts/test-requirements.txt: rosbags, the
 # ROS 2 serializer the mros2 tests compare with) goes into the checkout's

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
 # Removes colcon-mros (not the Debian packages it needs, which other software
-# may use): the Debian package scripts/setup.sh built and installed, with the
-# genmros command, the catkin generator marker, the CMake module and make
-# fragment. catkin and colcon builds go on without genmros afterwards.
+# may use): the Debian package python3-colcon-mros scripts/setup.sh built and
+# installed, with the genmros command, the catkin generator marker, the CMake
+# module and make fragment, and colcon-mros, the package's name until 0.1.0
+# (now its transitional package), with what is left of it. catkin and colcon
+# builds go on without genmros afterwards.
 # --legacy-only removes only what an earlier setup.sh installed with pip (a
 # copy in /usr/local and a link in /etc/ros/genmsg); both are always removed.
 set -euo pipefail
@@ -23,6 +25,17 @@ if [[ "$location" == /usr/local/* ]]; then
   as_root /usr/bin/python3 -m pip uninstall "${pip_flags[@]}" colcon-mros
 fi
 
-if [ "${1:-}" != --legacy-only ] && dpkg-query -W -f='${Status}' colcon-mros 2>/dev/null | grep -q installed; then
-  as_root env DEBIAN_FRONTEND=noninteractive apt-get purge -y -qq colcon-mros >/dev/null
+if [ "${1:-}" = --legacy-only ]; then
+  exit 0
+fi
+# Each one dpkg knows, installed or with its configuration files left.
+known=()
+for package in python3-colcon-mros colcon-mros; do
+  status=$(dpkg-query -W -f='${Status}' "$package" 2>/dev/null || true)
+  if [ -n "$status" ] && [[ "$status" != *not-installed ]]; then
+    known+=("$package")
+  fi
+done
+if [ ${#known[@]} -gt 0 ]; then
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get purge -y -qq "${known[@]}" >/dev/null
 fi

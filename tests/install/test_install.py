@@ -1,8 +1,9 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Installing and uninstalling colcon-mros: scripts/setup.sh
-installs it as the Debian package colcon-mros, so dpkg owns every file of it,
-the catkin generator marker included; after scripts/uninstall.sh nothing of
-genmros is left, and an ordinary message workspace still builds with
+installs it as the Debian package python3-colcon-mros, so dpkg owns every
+file of it, the catkin generator marker included; after scripts/uninstall.sh
+nothing of genmros is left, neither package (nor colcon-mros, the old name)
+is known to dpkg, and an ordinary message workspace still builds with
 catkin_make and colcon; scripts/setup.sh puts it back and leaves the source
 tree as it was. The install is restored even when a check fails."""
 
@@ -18,6 +19,9 @@ import pytest
 pytestmark = pytest.mark.slow
 
 MARKER = '/etc/ros/genmsg/genmros'
+PACKAGE = 'python3-colcon-mros'
+# The package's name until 0.1.0, now its transitional package.
+OLD_NAME = 'colcon-mros'
 
 
 def _run(argv, cwd, **kwargs):
@@ -32,8 +36,15 @@ def _ignored_files():
 
 
 def _package_files():
-    """The files dpkg lists for colcon-mros."""
-    return _run(['dpkg', '-L', 'colcon-mros'], REPO).stdout.split()
+    """The files dpkg lists for python3-colcon-mros."""
+    return _run(['dpkg', '-L', PACKAGE], REPO).stdout.split()
+
+
+def _dpkg_knows(package):
+    """Whether dpkg has package installed, or its configuration files left."""
+    result = subprocess.run(['dpkg-query', '-W', '-f=${Status}', package],
+                            capture_output=True, text=True)
+    return result.returncode == 0 and not result.stdout.endswith('not-installed')
 
 
 def _ordinary_workspace(root):
@@ -48,6 +59,7 @@ def test_uninstall_leaves_catkin_and_colcon_working_and_setup_reinstalls(tmp_pat
     try:
         installed = _package_files()
         _run([os.path.join(REPO, 'scripts', 'uninstall.sh')], REPO)
+        assert not _dpkg_knows(PACKAGE) and not _dpkg_knows(OLD_NAME)
         assert not os.path.lexists(MARKER)
         assert shutil.which('genmros', path=environment['PATH']) is None
         assert subprocess.run(['/usr/bin/python3', '-m', 'pip', 'show', 'colcon-mros'],
@@ -69,9 +81,12 @@ def test_uninstall_leaves_catkin_and_colcon_working_and_setup_reinstalls(tmp_pat
                                            'mros_test_base', 'Vector3i.h'))
     finally:
         _run([os.path.join(REPO, 'scripts', 'setup.sh')], REPO)
-    assert _run(['dpkg', '-S', MARKER], REPO).stdout == 'colcon-mros: %s\n' % MARKER
+    assert _run(['dpkg', '-S', MARKER], REPO).stdout == '%s: %s\n' % (PACKAGE, MARKER)
     assert _run(['dpkg', '-S', shutil.which('genmros', path=environment['PATH'])],
-                REPO).stdout.startswith('colcon-mros: ')
+                REPO).stdout.startswith(PACKAGE + ': ')
+    # The transitional package is for upgrades from a repository: setup.sh
+    # leaves it out (and purges an earlier setup.sh's colcon-mros).
+    assert not _dpkg_knows(OLD_NAME)
     assert _ignored_files() == before  # no build/ or *.egg-info in the source tree
 
 
