@@ -4,7 +4,7 @@
 
     /usr/bin/python3 bench/export_speed.py [--rounds N]
 
-For the 15 Debian message packages: one `genmros export` of all of them
+For the 15 Debian message packages: one `genmros mros-v1-export` of all of them
 (every header, the support header and the aggregates), against Debian's
 gencpp run once per .msg/.srv file, as catkin runs it. Also the time of
 `genmros --version` (the interpreter and genmros' start-up) and of the
@@ -58,7 +58,8 @@ def main():
     gen_cpp, templates = ros_paths.gencpp()
     samples = {'genmros': [], 'gencpp': [], 'version': []}
     with tempfile.TemporaryDirectory(prefix='export_speed_') as scratch:
-        export = GENMROS + ['export', *ros_paths.prefix_arguments(ros_paths.ros1_prefixes()),
+        export = GENMROS + ['mros-v1-export',
+                            *ros_paths.prefix_arguments(ros_paths.ros1_prefixes()),
                             '-o', os.path.join(scratch, 'mros')]
         for package in PACKAGES:
             export += ['--package', package]
@@ -80,7 +81,7 @@ def main():
     print('| run | seconds | gencpp / it |')
     print('|---|---:|---:|')
     print('| gencpp, one process per file (as catkin runs it) | %.2f | 1.0x |' % gencpp)
-    print('| genmros export, all 15 packages in one process | %.2f | %.1fx |'
+    print('| genmros mros-v1-export, all 15 packages in one process | %.2f | %.1fx |'
           % (genmros, gencpp / genmros))
     print('| genmros --version (interpreter and start-up) | %.3f | |'
           % statistics.median(samples['version']))

@@ -24,7 +24,7 @@
 #   MROS_MSG_DEFINITION_TEXT  full (default: gencpp's definition texts) or
 #                         compact (without comments and blank lines: less flash,
 #                         the same MD5 sums)
-#   MROS_MSG_FLAGS        further genmros export flags, e.g. the fit check against
+#   MROS_MSG_FLAGS        further genmros mros-v1-export flags, e.g. the fit check against
 #                         the library's settings (one error line per setting too
 #                         small): --mros-v1-settings mros_config/mros_usr_config.h
 #                         --mros-v1-settings <mros-lib>/mros-src/packet/cimpl/version/kinetic/mros_packet_config.h

@@ -49,7 +49,7 @@ declare -A cpus=(
   [cortex-m4]="-mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16"
 )
 
-# app  genmros export arguments  whether app.cpp builds on the stubs (image_publisher needs the camera library)
+# app  genmros mros-v1-export arguments  whether app.cpp builds on the stubs (image_publisher needs the camera library)
 apps=(
   "custom_pubsub --workspace $mros/ros_catkin_ws --type custom_pubsub/UserTypeTest yes"
   "string_pubsub --type std_msgs/String yes"

@@ -294,7 +294,7 @@ def test_import_bounded_storage_generates_its_own_headers(firmware, catkin_expor
 
 @pytest.mark.parametrize('cache, expected', [
     ({'MROS_STORAGE': 'stack'},
-     "mros_generate_messages(): genmros export: error: argument "
+     "mros_generate_messages(): genmros mros-v1-export: error: argument "
      "--storage: invalid choice: 'stack' (choose from 'heap', 'bounded')"),
     ({'MROS_STORAGE': 'bounded', 'MROS_OPTIONS': '/nonexistent/firmware.options'},
      "mros_generate_messages(): genmros: error: /nonexistent/firmware.options: cannot read "

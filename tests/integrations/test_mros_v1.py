@@ -116,7 +116,7 @@ def test_make_regenerates_headers_when_a_definition_changes(app_dir, tmp_path):
     compact = _make(app_dir, paths, 'MROS_MSG_DEFINITION_TEXT=compact')
     assert compact.returncode == 0, compact.stderr[-3000:]
     assert 'genmros: exported 13 message' in compact.stdout
-    assert '(genmros export --definition-text compact)' in header.read_text()
+    assert '(genmros mros-v1-export --definition-text compact)' in header.read_text()
 
     definition = workspace / 'src' / 'mros_test' / 'msg' / 'PersonalData.msg'
     definition.write_text(definition.read_text() + 'float64 height\n')
@@ -179,7 +179,7 @@ def test_genmros_names_its_make_fragment():
 
 
 def test_aggregates_cover_the_named_types_and_headers_their_closure(tmp_path):
-    run_genmros('export', '--workspace', TEST_WS, '--type', 'mros_test/NestedTypes',
+    run_genmros('mros-v1-export', '--workspace', TEST_WS, '--type', 'mros_test/NestedTypes',
                 '-o', str(tmp_path), *prefix_arguments(ros1_prefixes()))
     assert os.path.isfile(str(tmp_path / 'geometry_msgs' / 'Pose.h'))
     with open(str(tmp_path / 'message_class_specialization.h')) as stream:

@@ -157,10 +157,11 @@ def _definition_in_header(header_path):
 
 
 def test_export_writes_the_chosen_text_into_every_header(tmp_path):
-    run_genmros('export', *prefix_arguments(ros1_prefixes()), '--type', 'nav_msgs/Odometry',
-                '-o', str(tmp_path / 'full'))
-    run_genmros('export', *prefix_arguments(ros1_prefixes()), '--type', 'nav_msgs/Odometry',
-                '-o', str(tmp_path / 'compact'), '--definition-text', 'compact')
+    run_genmros('mros-v1-export', *prefix_arguments(ros1_prefixes()), '--type',
+                'nav_msgs/Odometry', '-o', str(tmp_path / 'full'))
+    run_genmros('mros-v1-export', *prefix_arguments(ros1_prefixes()),
+                '--type', 'nav_msgs/Odometry', '-o', str(tmp_path / 'compact'),
+                '--definition-text', 'compact')
     for relative in ('nav_msgs/Odometry.h', 'std_msgs/Header.h',
                      'geometry_msgs/PoseWithCovariance.h'):
         name = relative[:-2]
@@ -170,7 +171,8 @@ def test_export_writes_the_chosen_text_into_every_header(tmp_path):
         assert _class(name, compact)._md5sum == _class(name, full)._md5sum
         with open(str(tmp_path / 'compact' / relative)) as header:
             assert 'without comments and\n// blank lines' in header.read()
-    result = run_genmros('export', *prefix_arguments(ros1_prefixes()), '--type', 'std_msgs/Header',
+    result = run_genmros('mros-v1-export', *prefix_arguments(ros1_prefixes()),
+                         '--type', 'std_msgs/Header',
                          '-o', str(tmp_path / 'bad'), '--definition-text', 'short',
                          check=False)
     assert result.returncode == 2 and "invalid choice: 'short'" in result.stderr
@@ -196,7 +198,7 @@ def test_cmake_module_and_make_fragment_take_the_choice(tmp_path):
         % (REPO, ' '.join(ros1_prefixes()), tmp_path / 'export'))
     # An export dir as colcon writes it: full-text headers and the definitions.
     export = ExportDir(str(tmp_path / 'export'))
-    run_genmros('export', *prefix_arguments(ros1_prefixes()), '--package', 'std_msgs',
+    run_genmros('mros-v1-export', *prefix_arguments(ros1_prefixes()), '--package', 'std_msgs',
                 '--only', 'headers', '-o', export.include_dir)
     export.replace_packages({'std_msgs': installed_packages(ros1_prefixes())['std_msgs']},
                             installed_file(CMAKE_MODULE))
@@ -211,7 +213,7 @@ def test_cmake_module_and_make_fragment_take_the_choice(tmp_path):
     bad = subprocess.run(['cmake', '-S', str(project), '-B', str(build), '-DBAD=ON'],
                          capture_output=True, text=True)
     assert bad.returncode != 0
-    assert ("mros_generate_messages(): genmros export: error: argument --definition-text: "
+    assert ("mros_generate_messages(): genmros mros-v1-export: error: argument --definition-text: "
             "invalid choice: 'short' (choose from 'full', 'compact')") in ' '.join(
                 bad.stderr.split())
 

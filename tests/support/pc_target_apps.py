@@ -35,7 +35,7 @@ def build_app(mros_root, build_root, source, target='arm', types=('mros_test/Per
             os.symlink(origin, os.path.join(app, name))
     output = os.path.join(build_root, 'build')
     type_args = [argument for name in types for argument in ('--type', name)]
-    _mros_v1_pc(app, output, ['--mros-root', mros_root, '--workspace',
+    _mros_v1_pc(app, output, ['--mros-v1-root', mros_root, '--workspace',
                               os.path.join(TEST_WS, 'src'), '--target', target]
                 + type_args + list(header_flags))
     return os.path.join(output, 'test_app')

@@ -248,7 +248,7 @@ def test_a_sample_over_the_receive_limit(apps, posix_root, tmp_path, typestore, 
 @pytest.mark.parametrize('uid', [None, 65534], ids=['as-root', 'as-nobody'])
 def test_the_command_runs_the_board_and_ros_commands_reach_it(posix_root, typestore, uid):
     """genmros mros2-pc as a user runs it (docs/mros2.md's example): the board on its
-    network, a ROS 2 command on the ROS side through `genmros mros2-pc ros --`, Ctrl-C, and
+    network, a ROS 2 command on the ROS side through `genmros mros2-pc-ros --`, Ctrl-C, and
     the host as it was."""
     if uid is not None and (os.geteuid() != 0 or shutil.which('setpriv') is None):
         pytest.skip('runs genmros as another uid: needs root and setpriv')
@@ -278,7 +278,7 @@ def test_the_command_runs_the_board_and_ros_commands_reach_it(posix_root, typest
                 time.sleep(0.05)
             assert ('genmros: the board runs at 192.168.11.3, the ROS side at 192.168.11.2 '
                     '(ROS_DOMAIN_ID=0); from another shell, ROS 2 commands reach it with: '
-                    'genmros mros2-pc ros -- ros2 topic list') in open(log_path).read()
+                    'genmros mros2-pc-ros -- ros2 topic list') in open(log_path).read()
             texts = ['hello %d' % index for index in range(5)]
             peer = subprocess.run(
                 genmros + ['ros', '--', os.path.join(mros2_pc.WHEELS_VENV, 'bin', 'python'),
@@ -302,7 +302,7 @@ def test_the_command_runs_the_board_and_ros_commands_reach_it(posix_root, typest
             if board.poll() is None:
                 board.kill()
                 board.wait()
-        # The state file `genmros mros2-pc ros` reads goes with the board.
+        # The state file `genmros mros2-pc-ros` reads goes with the board.
         assert not [name for name in os.listdir(work) if name.startswith('genmros-mros2-pc')]
     assert mros2_pc.host_network() == before
 

@@ -143,7 +143,7 @@ def test_ros_cpp_refuses_to_compile_where_no_genmros_check_ran(tmp_path, compile
     # aggregate it includes stops the compile, also with a compiler that has
     # no __has_include (gcc-arm-none-eabi 4.9, which mROS v1's README lists).
     include = str(tmp_path / 'include')
-    run_genmros('export', '--type', 'sensor_msgs/JointState', '-o', include,
+    run_genmros('mros-v1-export', '--type', 'sensor_msgs/JointState', '-o', include,
                 *prefix_arguments(ros1_prefixes()))
     source = tmp_path / 'ros_like.cpp'
     # ros.cpp's first two lines.
