@@ -20,10 +20,11 @@
 #     Generate the headers at build time from .msg files. Each PACKAGE_PATHS
 #     entry is an installed prefix (dir/share/<pkg>/msg, as ROS installs them
 #     and as an export dir holds them) or a source tree of packages (found
-#     by their package.xml); genmros tells them apart (genmros mros-v1-export
-#     --msg-path). Without PACKAGE_PATHS, or with source trees only: the ROS
-#     environment, as `genmros mros-v1-export` searches it (rospkg on
-#     ROS_PACKAGE_PATH, then CMAKE_PREFIX_PATH).
+#     by their package.xml): a directory with share/ is passed to genmros
+#     mros-v1-export as --prefix, any other as --workspace. Without
+#     PACKAGE_PATHS, or with source trees only: the ROS environment, as
+#     `genmros mros-v1-export` searches it (rospkg on ROS_PACKAGE_PATH, then
+#     CMAKE_PREFIX_PATH).
 #
 # Both write the per-firmware aggregates for exactly the listed types
 # (message_headers.h, message_class_specialization.h, msg_max_size.h, so
@@ -96,7 +97,7 @@ function(_mros_attach ARG_TARGET ARG_OUTPUT_DIR ARG_GENMROS_ARGS ARG_DEPENDS ARG
   # not rebuilt for nothing; the touch marks the rule as done for make.
   add_custom_command(OUTPUT "${record}"
     BYPRODUCTS ${aggregates}
-    COMMAND "${GENMROS_BIN}" export ${ARG_GENMROS_ARGS} --record "${record}"
+    COMMAND "${GENMROS_BIN}" mros-v1-export ${ARG_GENMROS_ARGS} --record "${record}"
     COMMAND "${CMAKE_COMMAND}" -E touch_nocreate "${record}"
     DEPENDS "${GENMROS_BIN}" ${ARG_DEPENDS}
     COMMENT "Generating mROS message headers for ${ARG_TARGET}"
@@ -144,7 +145,7 @@ endfunction()
 # genmros found them, so that a change to any of them regenerates the headers.
 function(_mros_export_now ARG_FUNCTION ARG_GENMROS_ARGS ARG_OUTPUT_DIR ARG_OUTPUT_VAR)
   _mros_record("${ARG_OUTPUT_DIR}" record)
-  execute_process(COMMAND "${GENMROS_BIN}" export ${ARG_GENMROS_ARGS} --record "${record}"
+  execute_process(COMMAND "${GENMROS_BIN}" mros-v1-export ${ARG_GENMROS_ARGS} --record "${record}"
     RESULT_VARIABLE result ERROR_VARIABLE error OUTPUT_QUIET)
   # genmros' error lines, one per problem (argparse puts its usage before
   # them), and its warnings; a CMake list splits at ';', so the lines keep
@@ -244,10 +245,18 @@ function(mros_generate_messages)
   _mros_form_args("${ARG_STORAGE}" "${ARG_OPTIONS}" "${ARG_DEFINITION_TEXT}" genmros_args)
   _mros_fit_args("${ARG_MROS_V1_SETTINGS}" "${ARG_FIT_STRICT}" fit_args)
   list(APPEND genmros_args ${fit_args})
-  # genmros tells installed prefixes from source trees.
+  # An installed prefix has share/ (genmros' own rule for a package path).
   foreach(path ${ARG_PACKAGE_PATHS})
     get_filename_component(path "${path}" ABSOLUTE)
-    list(APPEND genmros_args --msg-path "${path}")
+    if(NOT IS_DIRECTORY "${path}")
+      message(FATAL_ERROR "mros_generate_messages(): PACKAGE_PATHS: ${path}: not a "
+        "directory: a package path is a source tree of packages or an installed prefix "
+        "(with share/<pkg>/msg)")
+    elseif(IS_DIRECTORY "${path}/share")
+      list(APPEND genmros_args --prefix "${path}")
+    else()
+      list(APPEND genmros_args --workspace "${path}")
+    endif()
   endforeach()
   foreach(type ${ARG_TYPES})
     list(APPEND genmros_args --type "${type}")

@@ -635,7 +635,7 @@ def _mros2_board(options):
 
 def _definition_places(options):
     """(workspaces, prefixes or None) of --workspace, --prefix and the
-    hidden --msg-path, which takes either."""
+    old --msg-path, which takes either."""
     from colcon_mros.ros1.workspace import split_msg_paths
     prefixes, workspaces = split_msg_paths(options.msg_paths)
     prefixes = (options.prefixes or []) + prefixes

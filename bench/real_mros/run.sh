@@ -96,7 +96,7 @@ for entry in "${apps[@]}"; do
   app=$1
   builds_app=${!#}
   arguments=("${@:2:$#-2}")
-  PYTHONPATH="$repo" /usr/bin/python3 -m colcon_mros export "${arguments[@]}" -o "$work/export/$app" >/dev/null
+  PYTHONPATH="$repo" /usr/bin/python3 -m colcon_mros mros-v1-export "${arguments[@]}" -o "$work/export/$app" >/dev/null
   # The task IDs ros.cpp names (kernel_cfg.h), from the app's app.cfg as the
   # PC target makes them; from the library's own mros.cfg where the app's
   # includes board libraries the target does not have (image_publisher's camera).

@@ -2,6 +2,8 @@
 """colcon_mros.cli: every subcommand the parser has answers --help; a command
 line names its subcommand, and an unknown one is named as unknown."""
 
+import re
+
 import pytest
 
 from colcon_mros.cli import SUBCOMMAND_GROUPS, build_parser, main
@@ -111,3 +113,25 @@ def test_an_option_name_means_one_thing_in_every_subcommand(capsys):
         with pytest.raises(SystemExit):
             main([subcommand, '--help'])
         assert 'the types come from' in ' '.join(capsys.readouterr().out.split())
+
+
+@pytest.mark.parametrize('flags, runs', [([], True), (['--build-only'], False)])
+def test_mros_v1_pc_builds_and_runs_unless_build_only(flags, runs, monkeypatch, capsys):
+    from colcon_mros.library_tools.mros_v1.pc_target import build
+    ran = []
+    monkeypatch.setattr(build, 'build', lambda request: '/built/%s' % request.app_dir)
+    monkeypatch.setattr(build, 'run_program', lambda *program: ran.append(program))
+    assert main(['mros-v1-pc', 'app', '--target', 'native'] + flags) == 0
+    assert capsys.readouterr().out.startswith('genmros: built /built/app\n')
+    assert ran == ([('/built/app', 'native')] if runs else [])
+
+
+@pytest.mark.parametrize('subcommand, written', [
+    ('generate', "the package's header directory"), ('mros-v1-export', 'the include root'),
+    ('mros2-export', 'the include root'), ('mros-v1-pc', 'the build directory'),
+    ('mros2-pc', 'the build directory'), ('mros2-peer-profile', 'the profile file')])
+def test_output_names_what_the_subcommand_writes(subcommand, written, capsys):
+    with pytest.raises(SystemExit):
+        main([subcommand, '--help'])
+    help_text = ' '.join(capsys.readouterr().out.split())
+    assert re.search(r'-o (DIR|FILE), --output (DIR|FILE) %s' % re.escape(written), help_text)

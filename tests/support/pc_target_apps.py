@@ -52,7 +52,8 @@ def build_sample(mros_root, app, output, *flags):
 def _mros_v1_pc(app_dir, output, flags):
     """genmros mros-v1-pc of this checkout; what it printed, or RuntimeError."""
     result = subprocess.run(
-        [sys.executable, '-m', 'colcon_mros', 'mros-v1-pc', app_dir, '-o', output, '-j2']
+        [sys.executable, '-m', 'colcon_mros', 'mros-v1-pc', app_dir, '-o', output, '-j2',
+         '--build-only']
         + list(flags), cwd=REPO, capture_output=True, text=True)
     if result.returncode != 0:
         raise RuntimeError('genmros mros-v1-pc failed:\n' + result.stdout[-3000:]

@@ -262,11 +262,11 @@ def test_the_command_runs_the_board_and_ros_commands_reach_it(posix_root, typest
             as_user = ['setpriv', '--reuid', str(uid), '--regid', str(uid), '--clear-groups']
         env = dict(mros2_pc.peer_environment(work), HOME=work, XDG_RUNTIME_DIR=work,
                    PYTHONPATH=REPO)
-        genmros = as_user + [sys.executable, '-m', 'colcon_mros', 'mros2-pc']
+        genmros = as_user + [sys.executable, '-m', 'colcon_mros']
         log_path = os.path.join(work, 'genmros.log')
         with open(log_path, 'w') as log:
             board = subprocess.Popen(
-                genmros + [app, '--rtps-config', config_of(posix_root), '--mros2-root',
+                genmros + ['mros2-pc', app, '--rtps-config', config_of(posix_root), '--mros2-root',
                            MROS2_ROOT, '--prefix', mros2_pc.WHEELS_VENV, '--target', 'native',
                            '--hardened', '-j2'],
                 stdout=log, stderr=subprocess.STDOUT, env=env)
@@ -281,7 +281,8 @@ def test_the_command_runs_the_board_and_ros_commands_reach_it(posix_root, typest
                     'genmros mros2-pc-ros -- ros2 topic list') in open(log_path).read()
             texts = ['hello %d' % index for index in range(5)]
             peer = subprocess.run(
-                genmros + ['ros', '--', os.path.join(mros2_pc.WHEELS_VENV, 'bin', 'python'),
+                genmros + ['mros2-pc-ros', '--',
+                           os.path.join(mros2_pc.WHEELS_VENV, 'bin', 'python'),
                            mros2_pc.PEER_SCRIPT], input=json.dumps(echo_job(typestore, texts)),
                 capture_output=True, text=True, env=env, timeout=mros2_pc.EVENT_CAP)
             assert peer.returncode == 0, peer.stderr[-3000:]
@@ -291,7 +292,7 @@ def test_the_command_runs_the_board_and_ros_commands_reach_it(posix_root, typest
             check_echoes(report, typestore, texts)
             # A ROS-side command still running when the board stops is stopped, saying why.
             lingering = subprocess.Popen(
-                genmros + ['ros', '--', 'sh', '-c', 'echo started; exec sleep 600'],
+                genmros + ['mros2-pc-ros', '--', 'sh', '-c', 'echo started; exec sleep 600'],
                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
             assert lingering.stdout.readline() == 'started\n'
             board.send_signal(signal.SIGINT)

@@ -38,9 +38,10 @@ def _full_text_size(type_name):
 def test_a_frame_over_the_largest_pool_is_refused_before_the_build(tmp_path):
     options = tmp_path / 'bounds.options'
     options.write_text('std_msgs/String.data max_size:2000\n')
-    result = run_genmros('mros-v1-pc', CUSTOM_PUBSUB, '-o', str(tmp_path / 'build'), '--type',
-                         'std_msgs/String', '--storage', 'bounded', '--options', str(options),
-                         check=False)
+    result = run_genmros('mros-v1-pc', CUSTOM_PUBSUB, '--build-only', '-o',
+                         str(tmp_path / 'build'),
+                         '--type', 'std_msgs/String', '--storage', 'bounded',
+                         '--options', str(options), check=False)
     assert result.returncode == 1
     frame = 4 + 2000  # the string's length, then its bytes
     lines = []
