@@ -228,7 +228,7 @@ def _add_generate(subparsers):
     parser.set_defaults(run=_generate)
 
 
-def _add_export(subparsers):
+def _add_mros_v1_export(subparsers):
     parser = subparsers.add_parser(
         'mros-v1-export', help='the headers and aggregates one firmware needs',
         description='The headers of the selected types and every type they contain, plus the '
@@ -264,7 +264,7 @@ def _add_export(subparsers):
     parser.add_argument('--quiet', action='store_true',
                         help='say nothing when the run record says the headers are up to date '
                              '(the make fragment runs genmros on every make)')
-    parser.set_defaults(run=_export)
+    parser.set_defaults(run=_mros_v1_export)
 
 
 def _add_printers(subparsers):
@@ -288,7 +288,7 @@ def _add_export_dir_commands(subparsers):
         description='Remove from an export dir (MROS_EXPORT_DIR) the headers and definitions no '
                     'generated type needs any more.')
     parser.add_argument('export_dir', metavar='DIR')
-    parser.set_defaults(run=_prune_export)
+    parser.set_defaults(run=_mros_v1_prune_export)
     parser = subparsers.add_parser(
         'catkin-export-dir', help="catkin's configure step with MROS_EXPORT_DIR "
                                   '(genmros-extras.cmake)',
@@ -595,7 +595,7 @@ def _add_mros2_peer_profile(subparsers):
     parser.set_defaults(run=_mros2_peer_profile)
 
 
-SUBCOMMANDS = (_add_generate, _add_export, _add_printers, _add_export_dir_commands,
+SUBCOMMANDS = (_add_generate, _add_mros_v1_export, _add_printers, _add_export_dir_commands,
                _add_mros_v1_pc, _add_mros_v1_fit, _add_mros_v1_harden, _add_mros2_export,
                _add_mros2_fit, _add_mros2_pc, _add_mros2_pc_ros, _add_mros2_harden,
                _add_mros2_peer_profile)
@@ -690,7 +690,7 @@ def _mros2_peer_profile(options):
     return 0
 
 
-def _export(options):
+def _mros_v1_export(options):
     from colcon_mros.ros1.environment import require_ros_python
     require_ros_python()
     from colcon_mros.export.firmware_export import ExportRequest, export  # needs genmsg and empy
@@ -729,7 +729,7 @@ def _catkin_prefix(options):
     print(os.path.dirname(installed_file(CATKIN_MARKER)))
 
 
-def _prune_export(options):
+def _mros_v1_prune_export(options):
     from colcon_mros.export.export_dir import ExportDir
     from colcon_mros.integrations.installed_files import CMAKE_MODULE, installed_file
     if not os.path.isdir(options.export_dir):

@@ -41,7 +41,7 @@ def test_a_directory_without_app_cfg_is_not_an_app(tmp_path):
     assert _error_line(str(tmp_path)) == '%s: no app.cfg: not an mROS v1 app' % tmp_path
 
 
-def test_an_app_outside_a_checkout_needs_mros_root(tmp_path):
+def test_an_app_outside_a_checkout_needs_mros_v1_root(tmp_path):
     app = _app(tmp_path, '')
     assert _error_line(app) == ('%s: no mROS v1 checkout here (no mros-lib/Makefile.m); give '
                                 '--mros-v1-root' % os.path.normpath(os.path.join(app, '..', '..')))
