@@ -235,7 +235,7 @@ def test_template_directory_override(tmp_path):
 
 @pytest.mark.parametrize('arguments, expected', [
     (['--help'], ['genmros mros-v1-export', 'genmros mros2-export']),
-    (['generate', '--help'], ['genmros generate [-h]', '-p PACKAGE', '-o OUTPUT_DIR']),
+    (['generate', '--help'], ['genmros generate [-h]', '-p PACKAGE', '-o DIR']),
     (['mros-v1-export', '--help'],
      ['--workspace WS', '--package PKG', '--type PKG/TYPE', '--variable-size-budget']),
 ])

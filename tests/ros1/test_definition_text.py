@@ -20,6 +20,7 @@ import pytest
 from genpy.dynamic import generate_dynamic
 
 from support import cpp_harness
+from fixtures.build_integration.tools import user_environment
 from support.checkout import REPO, TEST_WS, run_genmros
 from support.debian_messages import DEBIAN_MESSAGE_PACKAGES
 
@@ -203,15 +204,18 @@ def test_cmake_module_and_make_fragment_take_the_choice(tmp_path):
     export.replace_packages({'std_msgs': installed_packages(ros1_prefixes())['std_msgs']},
                             installed_file(CMAKE_MODULE))
     build = tmp_path / 'build'
+    # The builds run this checkout's genmros, not the one installed on PATH.
+    environment = user_environment()
     subprocess.run(['cmake', '-S', str(project), '-B', str(build)],
-                   check=True, capture_output=True)
-    subprocess.run(['cmake', '--build', str(build)], check=True, capture_output=True)
+                   check=True, capture_output=True, env=environment)
+    subprocess.run(['cmake', '--build', str(build)], check=True, capture_output=True,
+                   env=environment)
     for target in ('generated', 'imported'):
         compact = _definition_in_header(
             str(build / 'mros_messages' / target / 'std_msgs' / 'Header.h'))
         assert compact == 'uint32 seq\ntime stamp\nstring frame_id\n', target
     bad = subprocess.run(['cmake', '-S', str(project), '-B', str(build), '-DBAD=ON'],
-                         capture_output=True, text=True)
+                         capture_output=True, text=True, env=environment)
     assert bad.returncode != 0
     assert ("mros_generate_messages(): genmros mros-v1-export: error: argument --definition-text: "
             "invalid choice: 'short' (choose from 'full', 'compact')") in ' '.join(
@@ -223,6 +227,6 @@ def test_cmake_module_and_make_fragment_take_the_choice(tmp_path):
         'MROS_MSG_TYPES := std_msgs/Header\nMROS_MSG_PATHS := %s\n'
         'MROS_MSG_DEFINITION_TEXT := compact\ninclude %s/cmake/genmros.mk\nall:\n\t@true\n'
         % (' '.join(ros1_prefixes()), REPO))
-    subprocess.run(['make', '-C', str(app)], check=True, capture_output=True)
+    subprocess.run(['make', '-C', str(app)], check=True, capture_output=True, env=environment)
     assert _definition_in_header(str(app / 'include' / 'std_msgs' / 'Header.h')) == \
         'uint32 seq\ntime stamp\nstring frame_id\n'
