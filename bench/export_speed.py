@@ -4,7 +4,7 @@
 
     /usr/bin/python3 bench/export_speed.py [--rounds N] [--empy4-python PYTHON]
 
-For the 15 Debian message packages: one `genmros export` of all of them
+For the 15 Debian message packages: one `genmros mros-v1-export` of all of them
 (every header, the support header and the aggregates), against Debian's
 gencpp run once per .msg/.srv file, as catkin runs it; and the same export
 with every template run by empy's Interpreter (none compiled: what a user's
@@ -75,13 +75,13 @@ def main():
     gen_cpp, templates = ros_paths.gencpp()
     exports = {}
     with tempfile.TemporaryDirectory(prefix='export_speed_') as scratch:
-        export = ['export', *ros_paths.prefix_arguments(ros_paths.ros1_prefixes()),
+        export = ['mros-v1-export', *ros_paths.prefix_arguments(ros_paths.ros1_prefixes()),
                   '-o', os.path.join(scratch, 'mros')]
         for package in PACKAGES:
             export += ['--package', package]
         for python in pythons:
             empy = 'empy %s' % _empy_version(python)
-            exports['genmros export, all 15 packages in one process (%s)' % empy] = \
+            exports['genmros mros-v1-export, all 15 packages in one process (%s)' % empy] = \
                 [python, '-m', 'colcon_mros'] + export
             exports['the same, every template through empy\'s Interpreter (%s)' % empy] = \
                 [python, '-c', INTERPRETER_ONLY] + export

@@ -4,7 +4,7 @@
 
     /usr/bin/python3 bench/generator_scaling.py [--baseline CHECKOUT]
 
-For each case it times a whole ``genmros export`` of a generated package,
+For each case it times a whole ``genmros mros-v1-export`` of a generated package,
 and, side by side in the same run, genmsg's own compute_md5 and
 compute_full_text over the same types (what genmros used before it computed
 each type's identity once), or, with --baseline, the genmros of another
@@ -100,7 +100,7 @@ def main(argv=None):
     options = parser.parse_args(argv)
     other = ('genmros at %s' % options.baseline if options.baseline
              else "genmsg's compute_md5 + full text")
-    print('| case | genmros export | %s | ratio |' % other)
+    print('| case | genmros mros-v1-export | %s | ratio |' % other)
     print('|---|---|---|---|')
     for label, identity, files in CASES:
         with tempfile.TemporaryDirectory() as root:
@@ -111,7 +111,7 @@ def main(argv=None):
             for name, text in files().items():
                 with open(os.path.join(package, 'msg', name), 'w') as stream:
                     stream.write(text)
-            export = ['export', '--workspace', os.path.join(root, 'ws'),
+            export = ['mros-v1-export', '--workspace', os.path.join(root, 'ws'),
                       *prefix_arguments(ros1_prefixes())]
             ours = _timed([sys.executable, '-m', 'colcon_mros'] + export
                           + ['-o', os.path.join(root, 'out')], options.limit, cwd=REPO)

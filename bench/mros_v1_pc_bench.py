@@ -127,9 +127,9 @@ def build(mros_root, build_root):
     programs = {}
     for library, flags in (('mros_v1', []), ('mros_v1_hardened', ['--hardened'])):
         output = os.path.join(build_root, 'talker-build-' + library)
-        subprocess.run(['genmros', 'mros-v1-pc', talker, '--target', 'native', '--mros-root',
+        subprocess.run(['genmros', 'mros-v1-pc', talker, '--target', 'native', '--mros-v1-root',
                         mros_root, '--workspace', TEST_WS_SRC, '--type', 'mros_test/PersonalData',
-                        '-o', output] + flags, check=True)
+                        '-o', output, '--build-only'] + flags, check=True)
         programs[library] = os.path.join(output, 'bench_talker')
     return workspace, programs
 

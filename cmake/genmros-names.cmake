@@ -8,7 +8,7 @@ set(GENMROS_SUPPORT_HEADER "mros_message_support.h")
 # It and the support headers it includes, all at the include root.
 set(GENMROS_SUPPORT_HEADERS "mros_message_support.h;mros_message_containers.h;mros_message_wire.h;mros_message_support_version.h")
 
-# The files genmros export writes for one firmware's types.
+# The files genmros mros-v1-export writes for one firmware's types.
 set(GENMROS_FIRMWARE_AGGREGATES "message_headers.h;message_class_specialization.h;msg_max_size.h;mros_v1_delivery.h;mros_v1_fit_check.h")
 
 # A service <Srv> gives <Srv>.h and <Srv><half>.h for each of these.

@@ -18,13 +18,14 @@
 #
 #   MROS_MSG_TYPES        pkg/Type ... the app publishes or subscribes (required)
 #   MROS_MSG_PATHS        where packages are: catkin source trees (searched for
-#                         package.xml) and installed prefixes (with share/<pkg>/msg);
-#                         default: the ROS environment genmros finds
+#                         package.xml) and installed prefixes (with share/<pkg>/msg;
+#                         a directory with share/ is one); default: the ROS
+#                         environment genmros finds
 #   MROS_MSG_INCLUDE_DIR  output directory (default: include, the app's include dir)
 #   MROS_MSG_DEFINITION_TEXT  full (default: gencpp's definition texts) or
 #                         compact (without comments and blank lines: less flash,
 #                         the same MD5 sums)
-#   MROS_MSG_FLAGS        further genmros export flags, e.g. the fit check against
+#   MROS_MSG_FLAGS        further genmros mros-v1-export flags, e.g. the fit check against
 #                         the library's settings (one error line per setting too
 #                         small): --mros-v1-settings mros_config/mros_usr_config.h
 #                         --mros-v1-settings <mros-lib>/mros-src/packet/cimpl/version/kinetic/mros_packet_config.h
@@ -43,9 +44,16 @@ ifeq ($(shell command -v $(firstword $(GENMROS)) 2>/dev/null),)
 $(error genmros.mk: '$(firstword $(GENMROS))' not found: install colcon-mros or set GENMROS)
 endif
 
-_mros_msg_args := export -o $(MROS_MSG_INCLUDE_DIR) \
+# A package path as genmros' --prefix (an installed prefix: it has share/)
+# or --workspace (a source tree), by genmros' own rule for package paths.
+_mros_msg_path_arg = $(if $(wildcard $(1)/.), \
+  $(if $(wildcard $(1)/share/.),--prefix,--workspace) $(1), \
+  $(error genmros.mk: MROS_MSG_PATHS: $(1): not a directory: a package path is a \
+    source tree of packages or an installed prefix (with share/<pkg>/msg)))
+
+_mros_msg_args := mros-v1-export -o $(MROS_MSG_INCLUDE_DIR) \
   $(addprefix --type ,$(MROS_MSG_TYPES)) \
-  $(addprefix --msg-path ,$(MROS_MSG_PATHS)) \
+  $(foreach path,$(MROS_MSG_PATHS),$(call _mros_msg_path_arg,$(path))) \
   $(if $(MROS_MSG_DEFINITION_TEXT),--definition-text $(MROS_MSG_DEFINITION_TEXT)) $(MROS_MSG_FLAGS)
 
 # genmros keeps the run record in this file, a makefile; make remakes an

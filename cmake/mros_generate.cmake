@@ -20,10 +20,11 @@
 #     Generate the headers at build time from .msg files. Each PACKAGE_PATHS
 #     entry is an installed prefix (dir/share/<pkg>/msg, as ROS installs them
 #     and as an export dir holds them) or a source tree of packages (found
-#     by their package.xml); genmros tells them apart (genmros export
-#     --msg-path). Without PACKAGE_PATHS, or with source trees only: the ROS
-#     environment, as `genmros export` searches it (rospkg on
-#     ROS_PACKAGE_PATH, then CMAKE_PREFIX_PATH).
+#     by their package.xml): a directory with share/ is passed to genmros
+#     mros-v1-export as --prefix, any other as --workspace. Without
+#     PACKAGE_PATHS, or with source trees only: the ROS environment, as
+#     `genmros mros-v1-export` searches it (rospkg on ROS_PACKAGE_PATH, then
+#     CMAKE_PREFIX_PATH).
 #
 # Both write the per-firmware aggregates for exactly the listed types
 # (message_headers.h, message_class_specialization.h, msg_max_size.h, so
@@ -31,15 +32,15 @@
 # mros_v1_fit_check.h, which they include) and give t the include
 # directories. STORAGE bounded holds strings and variable arrays in the
 # message, with the maxima of the OPTIONS files and of each package's
-# msg/genmros.options (genmros export --storage bounded --options); editing
+# msg/genmros.options (genmros mros-v1-export --storage bounded --options); editing
 # any of them regenerates the headers. DEFINITION_TEXT compact puts each
 # type's definition text into the headers without comments and blank lines
-# (genmros export --definition-text compact): less flash, same MD5 sums.
+# (genmros mros-v1-export --definition-text compact): less flash, same MD5 sums.
 # MROS_V1_SETTINGS names the mROS v1 settings headers the firmware builds
 # with (the app's mros_usr_config.h, the library's mros_packet_config.h):
 # the fit check then stops the configure step and the build with one line per
 # setting too small for the types, naming its file, line and the value
-# needed (genmros export --mros-v1-settings); FIT_STRICT refuses a type whose
+# needed (genmros mros-v1-export --mros-v1-settings); FIT_STRICT refuses a type whose
 # frame has no maximum too (--fit-strict). Editing a settings header checks
 # again. Without it the check still runs when the firmware compiles ros.cpp
 # (mros_v1_fit_check.h), where the library's macros are visible.
@@ -77,13 +78,13 @@ function(_mros_check_arguments ARG_FUNCTION ARG_TARGET ARG_UNPARSED)
   endif()
 endfunction()
 
-# The run record of the target's genmros export (the rule of
+# The run record of the target's genmros mros-v1-export (the rule of
 # colcon_mros/export/run_record.py), beside its output directory.
 function(_mros_record ARG_OUTPUT_DIR ARG_OUTPUT_VAR)
   set(${ARG_OUTPUT_VAR} "${ARG_OUTPUT_DIR}.d" PARENT_SCOPE)
 endfunction()
 
-# A custom target that runs genmros export with ARG_GENMROS_ARGS whenever an
+# A custom target that runs genmros mros-v1-export with ARG_GENMROS_ARGS whenever an
 # input its run record names changes, and makes ARG_TARGET build after it
 # with ARG_INCLUDE_DIRS.
 function(_mros_attach ARG_TARGET ARG_OUTPUT_DIR ARG_GENMROS_ARGS ARG_DEPENDS ARG_INCLUDE_DIRS)
@@ -96,7 +97,7 @@ function(_mros_attach ARG_TARGET ARG_OUTPUT_DIR ARG_GENMROS_ARGS ARG_DEPENDS ARG
   # not rebuilt for nothing; the touch marks the rule as done for make.
   add_custom_command(OUTPUT "${record}"
     BYPRODUCTS ${aggregates}
-    COMMAND "${GENMROS_BIN}" export ${ARG_GENMROS_ARGS} --record "${record}"
+    COMMAND "${GENMROS_BIN}" mros-v1-export ${ARG_GENMROS_ARGS} --record "${record}"
     COMMAND "${CMAKE_COMMAND}" -E touch_nocreate "${record}"
     DEPENDS "${GENMROS_BIN}" ${ARG_DEPENDS}
     COMMENT "Generating mROS message headers for ${ARG_TARGET}"
@@ -137,14 +138,14 @@ function(_mros_fit_args ARG_SETTINGS ARG_FIT_STRICT ARG_OUTPUT_VAR)
   set(${ARG_OUTPUT_VAR} ${arguments} PARENT_SCOPE)
 endfunction()
 
-# Runs genmros export once at configure time, so a bad type, package or
+# Runs genmros mros-v1-export once at configure time, so a bad type, package or
 # options file fails the configure step with genmros' one line rather than
 # the first build, and sets ARG_OUTPUT_VAR to the inputs its run record
 # names: every .msg/.srv and options file the headers come from, wherever
 # genmros found them, so that a change to any of them regenerates the headers.
 function(_mros_export_now ARG_FUNCTION ARG_GENMROS_ARGS ARG_OUTPUT_DIR ARG_OUTPUT_VAR)
   _mros_record("${ARG_OUTPUT_DIR}" record)
-  execute_process(COMMAND "${GENMROS_BIN}" export ${ARG_GENMROS_ARGS} --record "${record}"
+  execute_process(COMMAND "${GENMROS_BIN}" mros-v1-export ${ARG_GENMROS_ARGS} --record "${record}"
     RESULT_VARIABLE result ERROR_VARIABLE error OUTPUT_QUIET)
   # genmros' error lines, one per problem (argparse puts its usage before
   # them), and its warnings; a CMake list splits at ';', so the lines keep
@@ -244,10 +245,18 @@ function(mros_generate_messages)
   _mros_form_args("${ARG_STORAGE}" "${ARG_OPTIONS}" "${ARG_DEFINITION_TEXT}" genmros_args)
   _mros_fit_args("${ARG_MROS_V1_SETTINGS}" "${ARG_FIT_STRICT}" fit_args)
   list(APPEND genmros_args ${fit_args})
-  # genmros tells installed prefixes from source trees.
+  # An installed prefix has share/ (genmros' own rule for a package path).
   foreach(path ${ARG_PACKAGE_PATHS})
     get_filename_component(path "${path}" ABSOLUTE)
-    list(APPEND genmros_args --msg-path "${path}")
+    if(NOT IS_DIRECTORY "${path}")
+      message(FATAL_ERROR "mros_generate_messages(): PACKAGE_PATHS: ${path}: not a "
+        "directory: a package path is a source tree of packages or an installed prefix "
+        "(with share/<pkg>/msg)")
+    elseif(IS_DIRECTORY "${path}/share")
+      list(APPEND genmros_args --prefix "${path}")
+    else()
+      list(APPEND genmros_args --workspace "${path}")
+    endif()
   endforeach()
   foreach(type ${ARG_TYPES})
     list(APPEND genmros_args --type "${type}")

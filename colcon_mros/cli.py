@@ -26,16 +26,19 @@ and from ROS 2 interface files (.msg, .srv, .idl, read with rosidl) for
 mros2. Definitions come from source trees (--workspace WS) and installed
 prefixes (--prefix PREFIX); without --prefix, from the ROS environment.
 
-  genmros export [--workspace WS ...] [--type PKG/TYPE ...] -o DIR
+  genmros mros-v1-export [--workspace WS ...] [--type PKG/TYPE ...] -o DIR
   genmros mros2-export [--workspace WS ...] [--publish [TOPIC:]PKG/msg/TYPE ...]
-                       [--subscribe [TOPIC:]PKG/msg/TYPE ...] -o DIR'''
+                       [--subscribe [TOPIC:]PKG/msg/TYPE ...] -o DIR
+
+The names this release replaced (export, prune-export, --mros-root, ...)
+still work until the next release, each saying its new name on stderr.'''
 # The user's subcommands in the top-level help, by what they serve. The
 # plumbing the builds run (catkin: generate, catkin-export-dir) answers
 # --help of its own but is not listed.
 SUBCOMMAND_GROUPS = (
-    ('mROS v1 (ROS 1)', ('export', 'mros-v1-fit', 'mros-v1-pc', 'mros-v1-harden',
-                         'prune-export')),
-    ('mros2 (ROS 2)', ('mros2-export', 'mros2-fit', 'mros2-pc', 'mros2-harden',
+    ('mROS v1 (ROS 1)', ('mros-v1-export', 'mros-v1-fit', 'mros-v1-pc', 'mros-v1-harden',
+                         'mros-v1-prune-export')),
+    ('mros2 (ROS 2)', ('mros2-export', 'mros2-fit', 'mros2-pc', 'mros2-pc-ros', 'mros2-harden',
                        'mros2-peer-profile', 'mros2-mend-wheels')),
     ('paths for builds', ('cmake-dir', 'make-fragment', 'catkin-prefix')),
 )
@@ -64,7 +67,45 @@ class _Subcommands:
         return '\n'.join(lines)
 
 
+# The spellings this release replaced, hidden from --help and kept until the
+# next one, so that scripts and builds have a release to move: each does
+# what its new spelling does and says that spelling on stderr.
+RENAMED_SUBCOMMANDS = {'export': 'mros-v1-export', 'prune-export': 'mros-v1-prune-export'}
+
+
+def _say_renamed(old, new):
+    print("genmros: '%s' is now %s; the old name goes in the next release" % (old, new),
+          file=sys.stderr)
+
+
+class _OldSpelling(argparse.Action):
+    """An old spelling of an option (or of a positional argument, then named
+    by old): it stores its value where the new spelling does (appends with
+    append; stores const with nargs=0) and says new, once a run."""
+
+    def __init__(self, option_strings, dest, new, old=None, append=False, **keywords):
+        # Absent, it leaves the new spelling's default alone.
+        keywords.setdefault('default', argparse.SUPPRESS)
+        super().__init__(option_strings, dest, help=argparse.SUPPRESS, **keywords)
+        self.new, self.old, self.append, self.said = new, old, append, False
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        if not self.said:
+            _say_renamed(self.old or option_string, self.new)
+            self.said = True
+        if self.append:
+            values = list(getattr(namespace, self.dest, None) or []) + [values]
+        elif self.nargs == 0:
+            values = self.const
+        setattr(namespace, self.dest, values)
+
+
 # Options more than one subcommand takes, each defined once.
+
+def _add_output(parser, what, **keywords):
+    """-o/--output: on every subcommand, the thing it writes."""
+    parser.add_argument('-o', '--output', help=what, **keywords)
+
 
 def _add_template_dir(parser):
     parser.add_argument('-e', dest='template_dir',
@@ -87,8 +128,7 @@ def _add_definition_places(parser, prefix_default, workspace_help='a source tree
     """Where definitions are, with one name for each kind of place on every
     subcommand: --workspace (a source tree) and --prefix (an installed
     prefix). The names they had are hidden aliases: --underlay (a prefix)
-    and --msg-path (either, told apart by its share/), which the CMake
-    module's PACKAGE_PATHS and the make fragment's MROS_MSG_PATHS pass."""
+    and --msg-path (either, told apart by its share/), an old spelling."""
     parser.add_argument('--workspace', dest='workspaces', action='append', default=[],
                         metavar='WS', help='%s, searched for package.xml (repeatable)'
                                            % workspace_help)
@@ -96,8 +136,9 @@ def _add_definition_places(parser, prefix_default, workspace_help='a source tree
                         help='an installed prefix (share/<pkg>/msg), or an export dir '
                              '(repeatable; default: %s)' % prefix_default)
     parser.add_argument('--underlay', dest='prefixes', action='append', help=argparse.SUPPRESS)
-    parser.add_argument('--msg-path', dest='msg_paths', action='append', default=[],
-                        help=argparse.SUPPRESS)
+    parser.add_argument('--msg-path', dest='msg_paths', action=_OldSpelling, append=True,
+                        default=[], new="'--workspace' (a source tree) or '--prefix' (an "
+                                        'installed prefix, with share/)')
 
 
 def _add_source_export_dir(parser, use):
@@ -146,8 +187,10 @@ def _add_header_form(parser):
 
 def _add_app(parser, types_default="the app's app.json"):
     """Where an mROS v1 app, its library and its types are."""
-    parser.add_argument('--mros-root', metavar='DIR',
+    parser.add_argument('--mros-v1-root', metavar='DIR',
                         help='the mROS v1 checkout (default: the one APP_DIR is in, ../..)')
+    parser.add_argument('--mros-root', dest='mros_v1_root', action=_OldSpelling,
+                        new="'--mros-v1-root'")
     _add_types(parser, types_default)
     _add_definition_places(parser, "app.json's catkin_ws_dir, else the ROS environment",
                            "a source tree (default: app.json's catkin_ws_dir)")
@@ -162,8 +205,9 @@ def _add_generate(subparsers):
                     'arguments: what catkin runs once per package.')
     parser.add_argument('files', nargs='+', metavar='FILE', help='a .msg or .srv file')
     parser.add_argument('-p', dest='package', required=True, help='package of the files')
-    parser.add_argument('-o', dest='output_dir', required=True,
-                        help='output directory, <include root>/<package>')
+    _add_output(parser, "the package's header directory the headers are written to, "
+                        '<include root>/<package>', dest='output_dir', required=True,
+                metavar='DIR')
     parser.add_argument('-I', dest='include_paths', action='append', default=[],
                         metavar='PKG:DIR', help='msg directory of a package (repeatable)')
     _add_template_dir(parser)
@@ -184,9 +228,9 @@ def _add_generate(subparsers):
     parser.set_defaults(run=_generate)
 
 
-def _add_export(subparsers):
+def _add_mros_v1_export(subparsers):
     parser = subparsers.add_parser(
-        'export', help='the headers and aggregates one firmware needs',
+        'mros-v1-export', help='the headers and aggregates one firmware needs',
         description='The headers of the selected types and every type they contain, plus the '
                     'per-firmware aggregates message_headers.h, message_class_specialization.h '
                     'and msg_max_size.h for the selected types. Without --package or --type: '
@@ -197,8 +241,8 @@ def _add_export(subparsers):
     parser.add_argument('--package', dest='packages', action='append', default=[],
                         metavar='PKG', help='export every type of PKG (repeatable)')
     _add_types(parser, 'every type of --package, else of --workspace')
-    parser.add_argument('-o', dest='output_dir', required=True, metavar='DIR',
-                        help='include root to write to')
+    _add_output(parser, 'the include root the headers are written to', dest='output_dir',
+                required=True, metavar='DIR')
     _add_source_export_dir(parser, ': an underlay whose headers serve where they have the form '
                                    'asked for (heap storage, full text), so that only the '
                                    'aggregates are written')
@@ -220,7 +264,7 @@ def _add_export(subparsers):
     parser.add_argument('--quiet', action='store_true',
                         help='say nothing when the run record says the headers are up to date '
                              '(the make fragment runs genmros on every make)')
-    parser.set_defaults(run=_export)
+    parser.set_defaults(run=_mros_v1_export)
 
 
 def _add_printers(subparsers):
@@ -240,11 +284,11 @@ def _add_printers(subparsers):
 
 def _add_export_dir_commands(subparsers):
     parser = subparsers.add_parser(
-        'prune-export', help='remove from an export dir what no definition needs any more',
+        'mros-v1-prune-export', help='remove from an export dir what no definition needs any more',
         description='Remove from an export dir (MROS_EXPORT_DIR) the headers and definitions no '
                     'generated type needs any more.')
     parser.add_argument('export_dir', metavar='DIR')
-    parser.set_defaults(run=_prune_export)
+    parser.set_defaults(run=_mros_v1_prune_export)
     parser = subparsers.add_parser(
         'catkin-export-dir', help="catkin's configure step with MROS_EXPORT_DIR "
                                   '(genmros-extras.cmake)',
@@ -259,11 +303,11 @@ def _add_export_dir_commands(subparsers):
 
 def _add_mros_v1_pc(subparsers):
     parser = subparsers.add_parser(
-        'mros-v1-pc', help='build an unmodified mROS v1 app and library for this PC',
+        'mros-v1-pc', help='build and run an unmodified mROS v1 app and library on this PC',
         description='Build an mROS v1 app (mros_ws/<app>) with the mROS v1 library of its '
-                    'checkout, unchanged, and genmros\' headers, to run on this PC against a ROS '
-                    'master: the PC target stands in for TOPPERS/ASP (with its scheduling), lwIP '
-                    'and mbed. The message types come from the app\'s app.json (the old '
+                    'checkout, unchanged, and genmros\' headers, and run it on this PC against a '
+                    'ROS master: the PC target stands in for TOPPERS/ASP (with its scheduling), '
+                    'lwIP and mbed. The message types come from the app\'s app.json (the old '
                     'generator\'s file) unless --type is given. The node finds the master in '
                     'ROS_MASTER_URI and its address in ROS_IP/ROS_HOSTNAME.')
     parser.add_argument('app_dir', metavar='APP_DIR', help="the app's directory (with app.cfg)")
@@ -271,8 +315,8 @@ def _add_mros_v1_pc(subparsers):
                         help='arm: 32-bit ARM Linux, the board\'s instruction set, a static '
                              'program run with qemu-arm, each task on its app.cfg stack size '
                              '(default); native: this PC, 1 MiB task stacks')
-    parser.add_argument('-o', dest='build_dir', metavar='DIR',
-                        help='build directory (default: APP_DIR/build-pc-TARGET)')
+    _add_output(parser, 'the build directory (default: APP_DIR/build-pc-TARGET)',
+                dest='build_dir', metavar='DIR')
     _add_app(parser)
     _add_header_form(parser)
     parser.add_argument('-j', dest='jobs', type=int, default=os.cpu_count() or 1,
@@ -293,8 +337,9 @@ def _add_mros_v1_pc(subparsers):
     parser.add_argument('-v', '--verbose', action='store_true',
                         help='show every compiler command (default: one line per step; '
                              'compiler errors are always shown in full)')
-    parser.add_argument('--run', dest='run_program', action='store_true',
-                        help='run the program once it is built (under qemu-arm for arm)')
+    _add_build_only(parser, 'under qemu-arm for arm, against the master of ROS_MASTER_URI')
+    parser.add_argument('--run', dest='build_only', action=_OldSpelling, nargs=0, const=False,
+                        new="the default ('--build-only' builds without running)")
     parser.set_defaults(run=_mros_v1_pc)
 
 
@@ -317,7 +362,22 @@ def _add_mros_v1_fit(subparsers):
     parser.set_defaults(run=_mros_v1_fit)
 
 
-def _add_harden_actions(parser):
+def _add_build_only(parser, where):
+    parser.add_argument('--build-only', action='store_true',
+                        help='build the program, and do not run it (default: build it, then run '
+                             'it %s)' % where)
+
+
+def _add_harden_arguments(parser, subcommand, option, what):
+    """The checkout a harden subcommand patches (option, or the one argument
+    of the old spelling), and what it does to it."""
+    dest = option[2:].replace('-', '_')
+    root = parser.add_mutually_exclusive_group(required=True)
+    root.add_argument(option, dest=dest, metavar='DIR', help=what)
+    root.add_argument(dest, nargs='?', action=_OldSpelling, old='%s DIR' % subcommand,
+                      new="'%s %s DIR'" % (subcommand, option))
+    # argparse shows a group with a hidden member as optional.
+    parser.usage = '%%(prog)s [-h] %s DIR [--check | --revert]' % option
     action = parser.add_mutually_exclusive_group()
     action.add_argument('--check', action='store_true',
                         help='say which patches are applied; exit 0 if all are, 1 if not')
@@ -331,8 +391,7 @@ def _add_mros_v1_harden(subparsers):
                     'what it fixes) to the mros-lib/ of a checkout, for the board\'s own build. '
                     'Only mros-lib/ is changed, and only where every file is as the patches '
                     'expect; a patch already applied is left as it is.')
-    parser.add_argument('mros_root', metavar='MROS_ROOT', help='the mROS v1 checkout')
-    _add_harden_actions(parser)
+    _add_harden_arguments(parser, 'mros-v1-harden', '--mros-v1-root', 'the mROS v1 checkout')
     parser.set_defaults(run=_mros_v1_harden)
 
 
@@ -345,8 +404,7 @@ def _add_mros2_harden(subparsers):
                     'DDS 3) to a checkout. Only include/, src/ and embeddedRTPS/ are changed, '
                     'and only where every file is as the patches expect; a patch already '
                     'applied is left as it is.')
-    parser.add_argument('mros2_root', metavar='MROS2_ROOT', help='the mros2 checkout')
-    _add_harden_actions(parser)
+    _add_harden_arguments(parser, 'mros2-harden', '--mros2-root', 'the mros2 checkout')
     parser.set_defaults(run=_mros2_harden)
 
 
@@ -410,8 +468,8 @@ def _add_mros2_export(subparsers):
                         help='a message (PKG/msg/TYPE or PKG/TYPE), a service (PKG/srv/NAME) or '
                              'one half of one (repeatable)')
     _add_mros2_endpoints(parser, ': exported, and instantiated in templates.hpp')
-    parser.add_argument('-o', dest='output_dir', required=True, metavar='DIR',
-                        help='include root to write to')
+    _add_output(parser, 'the include root the headers (and templates.hpp) are written to',
+                dest='output_dir', required=True, metavar='DIR')
     _add_mros2_board(parser, required=False)
     _add_mros2_storage(parser)
     parser.set_defaults(run=_mros2_export)
@@ -442,14 +500,12 @@ def _add_mros2_pc(subparsers):
                     "stand-ins for the board's CMSIS-RTOS2 and lwIP, then run it on a network "
                     'of its own: the board side has the board\'s address, the ROS side the '
                     'peer\'s, in one user namespace with two network namespaces (no root). '
-                    '`genmros mros2-pc ros -- CMD` runs a ROS 2 command on the ROS side of the '
-                    'board that runs, and stops it if the board stops first.',
-        usage='genmros mros2-pc APP_DIR --rtps-config FILE [options]\n'
-              '       genmros mros2-pc ros -- CMD [ARG ...]')
+                    '`genmros mros2-pc-ros -- CMD` runs a ROS 2 command on its ROS side.',
+        usage='genmros mros2-pc APP_DIR --rtps-config FILE [options]')
     parser.add_argument('app_dir', metavar='APP_DIR',
-                        help="the app's directory (its Filelists.cmake, else its .c/.cpp "
-                             "files); 'ros' runs the command after -- on the ROS side")
-    parser.add_argument('command', nargs='*', metavar='CMD', help=argparse.SUPPRESS)
+                        help="the app's directory (its Filelists.cmake, else its .c/.cpp files)")
+    # The old spelling of mros2-pc-ros: APP_DIR 'ros', then -- CMD.
+    parser.add_argument('command', nargs='*', help=argparse.SUPPRESS)
     parser.add_argument('--rtps-config', metavar='FILE',
                         help="the board's rtps/config.h, the one the firmware compiles with")
     parser.add_argument('--receive-limit', metavar='BYTES|FILE:NAME',
@@ -485,8 +541,8 @@ def _add_mros2_pc(subparsers):
                          metavar='NAME',
                          help='apply only this patch of the series to the copy (repeatable), '
                               'e.g. accept-fast-dds-3-discovery')
-    parser.add_argument('-o', dest='build_dir', metavar='DIR',
-                        help='build directory (default: APP_DIR/build-mros2-pc-FLAVOUR)')
+    _add_output(parser, 'the build directory (default: APP_DIR/build-mros2-pc-FLAVOUR)',
+                dest='build_dir', metavar='DIR')
     parser.add_argument('-j', dest='jobs', type=int, default=os.cpu_count() or 1,
                         help='parallel make jobs (default: the number of CPUs)')
     parser.add_argument('--no-fit-check', action='store_true',
@@ -495,11 +551,23 @@ def _add_mros2_pc(subparsers):
                         metavar='NAME[=VALUE]',
                         help="a preprocessor definition for the app's sources (repeatable), as "
                              "an app's Filelists.cmake options give them")
-    parser.add_argument('--build-only', action='store_true',
-                        help='build the program, and do not run it')
+    _add_build_only(parser, "on the board's side of its network")
     parser.add_argument('-v', '--verbose', action='store_true',
                         help='show every compiler command')
     parser.set_defaults(run=_mros2_pc)
+
+
+def _add_mros2_pc_ros(subparsers):
+    parser = subparsers.add_parser(
+        'mros2-pc-ros', help='run a ROS 2 command on the ROS side of the mros2-pc board that '
+                             'runs',
+        description="mros2 (ROS 2): run a ROS 2 command on the ROS side of the network of the "
+                    'board that genmros mros2-pc runs (for this user), with its ROS_DOMAIN_ID, '
+                    'and stop it if the board stops first.',
+        usage='genmros mros2-pc-ros [-h] -- CMD [ARG ...]')
+    parser.add_argument('command', nargs='*', metavar='CMD',
+                        help='the command and its arguments, after --')
+    parser.set_defaults(run=_mros2_pc_ros)
 
 
 def _add_mros2_peer_profile(subparsers):
@@ -512,15 +580,18 @@ def _add_mros2_peer_profile(subparsers):
                     'data-frag-for-best-effort-readers. Give it to the nodes with '
                     'FASTDDS_DEFAULT_PROFILES_FILE (Fast DDS 3) or '
                     'FASTRTPS_DEFAULT_PROFILES_FILE (Fast DDS 2), and the same number to the '
-                    'fit check (--peer-max-message).')
-    parser.add_argument('--max-message', metavar='BYTES', type=int, required=True,
-                        help="the largest datagram the nodes send: the board's receive limit")
+                    'fit check (mros2-fit and mros2-export --peer-max-message).')
+    largest = parser.add_mutually_exclusive_group(required=True)
+    largest.add_argument('--peer-max-message', metavar='BYTES', type=int,
+                         help="the largest datagram the nodes send: the board's receive limit")
+    largest.add_argument('--max-message', dest='peer_max_message', type=int,
+                         action=_OldSpelling, new="'--peer-max-message'")
     parser.add_argument('--receive-buffer', metavar='BYTES', type=int,
                         default=PEER_RECEIVE_BUFFER,
                         help="the nodes' socket receive buffer (default %d: a board's large "
                              'sample comes in fragments of 64 bytes)' % PEER_RECEIVE_BUFFER)
-    parser.add_argument('-o', dest='output', metavar='FILE',
-                        help='the profile to write (default: standard output)')
+    _add_output(parser, 'the profile file to write (default: standard output)',
+                metavar='FILE')
     parser.set_defaults(run=_mros2_peer_profile)
 
 
@@ -538,10 +609,10 @@ def _add_mros2_mend_wheels(subparsers):
     parser.set_defaults(run=_mros2_mend_wheels)
 
 
-SUBCOMMANDS = (_add_generate, _add_export, _add_printers, _add_export_dir_commands,
+SUBCOMMANDS = (_add_generate, _add_mros_v1_export, _add_printers, _add_export_dir_commands,
                _add_mros_v1_pc, _add_mros_v1_fit, _add_mros_v1_harden, _add_mros2_export,
-               _add_mros2_fit, _add_mros2_pc, _add_mros2_harden, _add_mros2_peer_profile,
-               _add_mros2_mend_wheels)
+               _add_mros2_fit, _add_mros2_pc, _add_mros2_pc_ros, _add_mros2_harden,
+               _add_mros2_peer_profile, _add_mros2_mend_wheels)
 
 
 def build_parser():
@@ -578,7 +649,7 @@ def _mros2_board(options):
 
 def _definition_places(options):
     """(workspaces, prefixes or None) of --workspace, --prefix and the
-    hidden --msg-path, which takes either."""
+    old --msg-path, which takes either."""
     from colcon_mros.ros1.workspace import split_msg_paths
     prefixes, workspaces = split_msg_paths(options.msg_paths)
     prefixes = (options.prefixes or []) + prefixes
@@ -620,10 +691,10 @@ def _mros2_peer_profile(options):
     from colcon_mros.core.output import write_files
     from colcon_mros.mros2.render import peer_profile
     from colcon_mros.mros2.rules import discovery_problem
-    problem = discovery_problem('--max-message', options.max_message)
+    problem = discovery_problem('--peer-max-message', options.peer_max_message)
     if problem:
         raise GenmrosError(problem)
-    profile = peer_profile(options.max_message, options.receive_buffer)
+    profile = peer_profile(options.peer_max_message, options.receive_buffer)
     if options.output is None:
         sys.stdout.write(profile)
         return 0
@@ -640,7 +711,7 @@ def _mros2_mend_wheels(options):
     return 0
 
 
-def _export(options):
+def _mros_v1_export(options):
     from colcon_mros.ros1.environment import require_ros_python
     require_ros_python()
     from colcon_mros.export.firmware_export import ExportRequest, export  # needs genmsg and empy
@@ -679,7 +750,7 @@ def _catkin_prefix(options):
     print(os.path.dirname(installed_file(CATKIN_MARKER)))
 
 
-def _prune_export(options):
+def _mros_v1_prune_export(options):
     from colcon_mros.export.export_dir import ExportDir
     from colcon_mros.integrations.installed_files import CMAKE_MODULE, installed_file
     if not os.path.isdir(options.export_dir):
@@ -706,7 +777,7 @@ def _package_paths(options):
 def _mros_v1_pc(options):
     from colcon_mros.library_tools.mros_v1.pc_target import build
     program = build.build(build.PcBuild(
-        app_dir=options.app_dir, mros_root=options.mros_root, target=options.target,
+        app_dir=options.app_dir, mros_root=options.mros_v1_root, target=options.target,
         build_dir=options.build_dir, types=options.types, msg_paths=_package_paths(options),
         storage=options.storage, option_files=options.option_files,
         definition_text=options.definition_text, jobs=options.jobs,
@@ -714,7 +785,7 @@ def _mros_v1_pc(options):
         sanitize=options.sanitize, hardened=options.hardened, verbose=options.verbose))
     print('genmros: built %s\n  run it with ROS_MASTER_URI and ROS_IP set: %s'
           % (program, ' '.join(build.runner(options.target) + [program])))
-    if options.run_program:
+    if not options.build_only:
         sys.stdout.flush()
         build.run_program(program, options.target)
 
@@ -730,7 +801,7 @@ def _mros_v1_fit(options):
         fit, settings = export_dir_fit(options.export_dir, options.types,
                                        options.library_settings, *form)
     elif options.app_dir:
-        fit, settings = app_fit(App(*find_app(options.app_dir, options.mros_root)),
+        fit, settings = app_fit(App(*find_app(options.app_dir, options.mros_v1_root)),
                                 options.types, _package_paths(options), options.library_settings,
                                 *form)
     else:
@@ -758,16 +829,20 @@ def _harden(root, patches, options):
 
 def _mros_v1_harden(options):
     from colcon_mros.library_tools.mros_v1.patches import check_root, mros_v1_patches
-    return _harden(check_root(options.mros_root), mros_v1_patches(), options)
+    return _harden(check_root(options.mros_v1_root), mros_v1_patches(), options)
+
+
+def _mros2_pc_ros(options):
+    from colcon_mros.library_tools.mros2.pc_target import network
+    if not options.command:
+        raise GenmrosError('give the command to run on the ROS side: genmros mros2-pc-ros -- CMD')
+    return network.run_ros_side(options.command)
 
 
 def _mros2_pc(options):
-    from colcon_mros.library_tools.mros2.pc_target import network
     if options.app_dir == 'ros':
-        if not options.command:
-            raise GenmrosError('give the command to run on the ROS side: genmros mros2-pc ros '
-                               '-- CMD')
-        return network.run_ros_side(options.command)
+        _say_renamed('mros2-pc ros', "'mros2-pc-ros'")
+        return _mros2_pc_ros(options)
     if options.command:
         raise GenmrosError('unexpected %s after APP_DIR' % ' '.join(options.command))
     if not options.rtps_config:
@@ -790,6 +865,7 @@ def _mros2_pc(options):
     if options.build_only:
         print('genmros: built %s' % program.path)
         return 0
+    from colcon_mros.library_tools.mros2.pc_target import network
     return network.run_board(program)
 
 
@@ -801,6 +877,9 @@ def _mros2_harden(options):
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else list(argv)
     genmros, subcommands = build_parser()
+    if argv and argv[0] in RENAMED_SUBCOMMANDS:
+        _say_renamed(argv[0], "'%s'" % RENAMED_SUBCOMMANDS[argv[0]])
+        argv[0] = RENAMED_SUBCOMMANDS[argv[0]]
     if argv and not argv[0].startswith('-') and argv[0] not in subcommands:
         genmros.print_usage(sys.stderr)
         print("genmros: error: unknown subcommand '%s' (the subcommands: %s)"

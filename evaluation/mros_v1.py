@@ -43,9 +43,9 @@ def build_app(mros_root, build_root):
                        os.path.join(app, name))
     output = os.path.join(build_root, 'build')
     with open(os.path.join(build_root, 'mros-v1-pc.log'), 'w') as log:
-        result = subprocess.run(['genmros', 'mros-v1-pc', app, '--mros-root', mros_root,
+        result = subprocess.run(['genmros', 'mros-v1-pc', app, '--mros-v1-root', mros_root,
                                  '--workspace', TEST_WS_SRC, '-o', output,
-                                 '--type', 'mros_test/PersonalData', '-j2'],
+                                 '--type', 'mros_test/PersonalData', '-j2', '--build-only'],
                                 stdout=log, stderr=subprocess.STDOUT)
     if result.returncode != 0:
         raise RuntimeError('genmros mros-v1-pc failed: see %s' % log.name)

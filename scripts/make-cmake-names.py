@@ -31,7 +31,7 @@ def cmake_names():
         ('GENMROS_SUPPORT_HEADERS', list(SUPPORT_HEADERS),
          'it and the support headers it includes, all at the include root'),
         ('GENMROS_FIRMWARE_AGGREGATES', list(FIRMWARE_FILES),
-         "the files genmros export writes for one firmware's types"),
+         "the files genmros mros-v1-export writes for one firmware's types"),
         ('GENMROS_SERVICE_HALVES', list(SERVICE_HALVES),
          'a service <Srv> gives <Srv>.h and <Srv><half>.h for each of these'),
     ]

@@ -80,7 +80,8 @@ def prepare_checkout(root, destination, mros2_root=None):
         mros2_dir = os.path.join(destination, 'mros2')
         shutil.rmtree(mros2_dir)
         shutil.copytree(mros2_root, mros2_dir, symlinks=True)
-        run_genmros('mros2-harden', mros2_dir)  # accept-fast-dds-3-discovery among them
+        # accept-fast-dds-3-discovery among them
+        run_genmros('mros2-harden', '--mros2-root', mros2_dir)
         config = os.path.join(destination, 'include', 'rtps', 'config.h')
         with open(config) as stream:
             text = stream.read()

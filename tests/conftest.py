@@ -53,9 +53,10 @@ def empy4_python(tmp_path_factory):
 
 @pytest.fixture(scope='session')
 def debian_export(tmp_path_factory):
-    """genmros export of every Debian message package: the include root."""
+    """genmros mros-v1-export of every Debian message package: the include root."""
     root = str(tmp_path_factory.mktemp('debian_export'))
-    arguments = ['export', '-o', root, *ros_paths.prefix_arguments(ros_paths.ros1_prefixes())]
+    arguments = ['mros-v1-export', '-o', root,
+                 *ros_paths.prefix_arguments(ros_paths.ros1_prefixes())]
     for package in DEBIAN_MESSAGE_PACKAGES:
         arguments += ['--package', package]
     run_genmros(*arguments)
@@ -64,9 +65,9 @@ def debian_export(tmp_path_factory):
 
 @pytest.fixture(scope='session')
 def test_ws_export(tmp_path_factory):
-    """genmros export of test_ws: the include root."""
+    """genmros mros-v1-export of test_ws: the include root."""
     root = str(tmp_path_factory.mktemp('test_ws_export'))
-    run_genmros('export', '--workspace', TEST_WS, '-o', root,
+    run_genmros('mros-v1-export', '--workspace', TEST_WS, '-o', root,
                 *ros_paths.prefix_arguments(ros_paths.ros1_prefixes()))
     return root
 

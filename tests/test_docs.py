@@ -18,7 +18,8 @@ DOCUMENTS = [os.path.join(REPO, 'README.md'), os.path.join(REPO, 'bench', 'READM
     sorted(glob.glob(os.path.join(REPO, 'docs', '*.md')))
 _MODULE_REFERENCE = re.compile(r':mod:`(?:[^`<]*<)?([.\w]+)>?`')
 _CODE = re.compile(r'```.*?```|`[^`\n]+`', re.S)
-_SUBCOMMAND = re.compile(r'\bgenmros ([a-z][a-z0-9]*(?:-[a-z0-9]+)*)\b')
+# "a genmros export dir" (in a header's #error) names the export dir, not a subcommand.
+_SUBCOMMAND = re.compile(r'\bgenmros ([a-z][a-z0-9]*(?:-[a-z0-9]+)*)\b(?! dir\b)')
 # Prose in code: make's "$(error genmros not found: ...)", rosdep's "keys
 # genmros and colcon-mros".
 _NOT_SUBCOMMANDS = {'not', 'and'}

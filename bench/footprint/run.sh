@@ -43,7 +43,7 @@ genmros() { PYTHONPATH="$repo" /usr/bin/python3 -m colcon_mros "$@" >/dev/null; 
 export_type() {  # name type storage definition_text
   local flags=(--definition-text "$4")
   [ "$3" = bounded ] && flags+=(--storage bounded --options "$here/bounds.options")
-  genmros export --workspace "$repo/test_ws" --workspace "$here/msgs" --type "$2" \
+  genmros mros-v1-export --workspace "$repo/test_ws" --workspace "$here/msgs" --type "$2" \
     -o "$work/$1" "${flags[@]}"
   echo "$work/$1"
 }

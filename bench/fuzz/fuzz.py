@@ -66,7 +66,7 @@ def _run(command, **keywords):
 
 
 def export_headers(include_dir):
-    arguments = [sys.executable, '-m', 'colcon_mros', 'export', '--workspace', TEST_WS,
+    arguments = [sys.executable, '-m', 'colcon_mros', 'mros-v1-export', '--workspace', TEST_WS,
                  '-o', include_dir, *ros_paths.prefix_arguments(ros_paths.ros1_prefixes())]
     for package_dir in sorted(glob.glob(os.path.join(TEST_WS, 'src', '*'))):
         if _definitions(package_dir, 'msg') or _definitions(package_dir, 'srv'):

@@ -113,7 +113,8 @@ def build(mros_root, build_root, hardened):
                        os.path.join(app, sample_file))
     output = os.path.join(build_root, 'build-hardened' if hardened else 'build-as-it-is')
     command = [sys.executable, '-m', 'colcon_mros', 'mros-v1-pc', app, '-o', output,
-               '--mros-root', mros_root, '--target', 'native', '--sanitize', '--no-fit-check']
+               '--mros-v1-root', mros_root, '--target', 'native', '--sanitize', '--no-fit-check',
+               '--build-only']
     command += ['--hardened'] if hardened else []
     for datatype in TYPES.values():
         command += ['--type', datatype]

@@ -19,7 +19,7 @@ trap 'rm -rf "$work"' EXIT
 mkdir -p "$work/as_is" "$work/hardened"
 cp -r "$1/mros-lib" "$work/as_is/"
 cp -r "$1/mros-lib" "$work/hardened/"
-(cd "$repo" && /usr/bin/python3 -m colcon_mros mros-v1-harden "$work/hardened" >/dev/null)
+(cd "$repo" && /usr/bin/python3 -m colcon_mros mros-v1-harden --mros-v1-root "$work/hardened" >/dev/null)
 
 target="$repo/colcon_mros/library_tools/mros_v1/pc_target"
 declare -A cpus=(

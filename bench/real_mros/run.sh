@@ -49,7 +49,7 @@ declare -A cpus=(
   [cortex-m4]="-mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16"
 )
 
-# app  genmros export arguments  whether app.cpp builds on the stubs (image_publisher needs the camera library)
+# app  genmros mros-v1-export arguments  whether app.cpp builds on the stubs (image_publisher needs the camera library)
 apps=(
   "custom_pubsub --workspace $mros/ros_catkin_ws --type custom_pubsub/UserTypeTest yes"
   "string_pubsub --type std_msgs/String yes"
@@ -96,7 +96,7 @@ for entry in "${apps[@]}"; do
   app=$1
   builds_app=${!#}
   arguments=("${@:2:$#-2}")
-  PYTHONPATH="$repo" /usr/bin/python3 -m colcon_mros export "${arguments[@]}" -o "$work/export/$app" >/dev/null
+  PYTHONPATH="$repo" /usr/bin/python3 -m colcon_mros mros-v1-export "${arguments[@]}" -o "$work/export/$app" >/dev/null
   # The task IDs ros.cpp names (kernel_cfg.h), from the app's app.cfg as the
   # PC target makes them; from the library's own mros.cfg where the app's
   # includes board libraries the target does not have (image_publisher's camera).

@@ -13,7 +13,7 @@ types=(--type sensor_msgs/Image --type geometry_msgs/PoseStamped --type sensor_m
 # genmros from this checkout, wherever the script is run from; the message
 # packages from the ROS environment (ROS_PACKAGE_PATH, CMAKE_PREFIX_PATH; with
 # nothing sourced, Debian's /usr), as testing/ros_paths.py reads it.
-PYTHONPATH="$here/../.." /usr/bin/python3 -m colcon_mros export -o "$work/include" "${types[@]}" \
+PYTHONPATH="$here/../.." /usr/bin/python3 -m colcon_mros mros-v1-export -o "$work/include" "${types[@]}" \
   >/dev/null
 flags=(-std=c++11 -O2 -Wall -Wextra -pedantic)
 libraries=(-lroscpp_serialization -lrostime -lcpp_common)
@@ -24,7 +24,7 @@ g++ "${flags[@]}" -Werror -DBENCH_BARE_MEMCPY -c -o "$work/memcpy_side.o" "$here
   -I"$work/include" -I"$here"
 # Bounded storage: the same instances in heap-free messages, with bounds that
 # just fit them (bounds.options).
-PYTHONPATH="$here/../.." /usr/bin/python3 -m colcon_mros export -o "$work/bounded" "${types[@]}" \
+PYTHONPATH="$here/../.." /usr/bin/python3 -m colcon_mros mros-v1-export -o "$work/bounded" "${types[@]}" \
   --storage bounded --options "$here/bounds.options" >/dev/null
 g++ "${flags[@]}" -Werror -c -o "$work/bounded_side.o" "$here/mros_side.cpp" -I"$work/bounded" -I"$here"
 # Every side in four code layouts (table.py: layout N is bench_SIDE.N).

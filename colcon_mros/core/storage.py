@@ -3,7 +3,7 @@
 
 Heap storage (the default, and the only one catkin builds write) gives
 ``std::string`` and ``std::vector``, as roscpp does. Bounded storage, chosen
-per firmware (``genmros export --storage bounded``), holds every string and
+per firmware (``genmros mros-v1-export --storage bounded``), holds every string and
 variable array inside the message with a maximum length, so a firmware
 needs no heap; the maxima come from options files in the spirit of nanopb's
 ``.options``::
@@ -12,7 +12,7 @@ needs no heap; the maxima come from options files in the spirit of nanopb's
     PersonalData.first_name  max_size:32
     PersonalData.last_name   max_size:32
 
-    # a firmware's own file (genmros export --options FILE): full type names,
+    # a firmware's own file (genmros mros-v1-export --options FILE): full type names,
     # and '*' for every field that has no bound of its own
     sensor_msgs/JointState.name  max_count:6 max_size:16
     *                            max_size:64 max_count:16

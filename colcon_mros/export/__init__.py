@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""Exports: the headers one firmware needs (``genmros export``,
+"""Exports: the headers one firmware needs (``genmros mros-v1-export``,
 ``genmros mros2-export``), and the export dir catkin and colcon fill, with
 the run record that says when an export is up to date.
 

@@ -9,7 +9,7 @@ reads one. This module is the only code that knows its layout::
                                    MROS_EXPORT_TYPES, the CMake module
     DIR/include/<pkg>/<Type>.h     the headers, and the support headers
     DIR/share/<pkg>/package.xml    the definitions the headers come from, as an
-    DIR/share/<pkg>/msg|srv/...    installed prefix holds them (genmros export
+    DIR/share/<pkg>/msg|srv/...    installed prefix holds them (genmros mros-v1-export
                                    --underlay DIR reads them)
     DIR/COLCON_IGNORE              so no tool takes share/<pkg> for packages
     DIR/.genmros/                  private: which definition put which file here,

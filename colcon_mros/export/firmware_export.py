@@ -103,7 +103,7 @@ class Selection:
 
 
 class ExportRequest:
-    """What one export run is asked for: the command line's ``genmros export``
+    """What one export run is asked for: the command line's ``genmros mros-v1-export``
     and ``colcon build --mros-export`` both make one.
 
     prefixes=None searches the ROS environment for packages; only is 'all',

@@ -2,7 +2,7 @@
 """The run record: the one rule that says whether genmros' output is up to date.
 
 catkin's generator run for a package, ``colcon build --mros-export``, and
-``genmros export --record`` (which the CMake module and the make fragment
+``genmros mros-v1-export --record`` (which the CMake module and the make fragment
 run) each keep one record of their last run and ask it before running
 again. The output is current when
 

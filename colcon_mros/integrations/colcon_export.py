@@ -8,7 +8,7 @@ did not run for (its last install has no marker of it) is named in one line
 with the fix, and exported all the same. For the catkin packages,
 DIR becomes an export dir (:mod:`colcon_mros.export.export_dir`) holding every
 message and service of the built packages and of the installed packages they
-depend on (std_msgs from Debian included): the headers ``genmros export
+depend on (std_msgs from Debian included): the headers ``genmros mros-v1-export
 --only headers`` writes, and the definitions they come from. A second run
 rewrites only what changed and removes what no longer exists; a build of some
 packages (``--packages-select``) adds to the export, never shrinks it. A build

@@ -156,7 +156,7 @@ def find_mros_root(app_dir, given):
     if not os.path.isfile(os.path.join(candidate, 'mros-lib', 'Makefile.m')):
         where = given or os.path.normpath(candidate)
         raise GenmrosError('no mROS v1 checkout here (no mros-lib/Makefile.m)%s'
-                           % ('' if given else '; give --mros-root'), where)
+                           % ('' if given else '; give --mros-v1-root'), where)
     return os.path.abspath(candidate)
 
 

@@ -137,9 +137,10 @@ def installed_packages(prefixes):
 def split_msg_paths(paths):
     """(installed prefixes, source trees) of paths: a directory with share/
     is an installed prefix (an install or devel space, an export dir), any
-    other a source tree searched for package.xml. The one place that decides
-    (genmros export --msg-path, the CMake module's PACKAGE_PATHS, the make
-    fragment's MROS_MSG_PATHS, the PC target)."""
+    other a source tree searched for package.xml (the old --msg-path, the
+    mROS v1 PC target's and fit check's package paths). The CMake module's
+    PACKAGE_PATHS and the make fragment's MROS_MSG_PATHS follow the same
+    rule to pass each path as --prefix or --workspace."""
     for path in paths:
         if not os.path.isdir(path):
             raise GenmrosError('not a directory: a package path is a source tree of packages or '

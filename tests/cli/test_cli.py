@@ -2,6 +2,8 @@
 """colcon_mros.cli: every subcommand the parser has answers --help; a command
 line names its subcommand, and an unknown one is named as unknown."""
 
+import re
+
 import pytest
 
 from colcon_mros.cli import SUBCOMMAND_GROUPS, build_parser, main
@@ -13,8 +15,8 @@ PLUMBING = ['generate', 'catkin-export-dir']
 
 
 def test_the_parser_has_the_subcommands_the_docs_describe():
-    assert len(SUBCOMMANDS) >= 10 and {'generate', 'export', 'mros-v1-pc', 'mros-v1-fit'} <= set(
-        SUBCOMMANDS)
+    assert len(SUBCOMMANDS) >= 10 and {
+        'generate', 'mros-v1-export', 'mros-v1-pc', 'mros-v1-fit'} <= set(SUBCOMMANDS)
 
 
 @pytest.mark.parametrize('subcommand', SUBCOMMANDS)
@@ -42,7 +44,7 @@ def test_top_level_help_groups_the_users_subcommands_and_hides_the_plumbing(caps
 
 
 @pytest.mark.parametrize('subcommand, old, new', [
-    ('export', '--underlay', '--prefix'), ('export', '--msg-path', '--prefix'),
+    ('mros-v1-export', '--underlay', '--prefix'), ('mros-v1-export', '--msg-path', '--prefix'),
     ('mros2-export', '--msg-path', '--prefix'), ('mros-v1-fit', '--underlay', '--prefix')])
 def test_old_option_names_are_hidden_aliases(subcommand, old, new, capsys):
     with pytest.raises(SystemExit):
@@ -57,7 +59,8 @@ def test_old_option_names_are_hidden_aliases(subcommand, old, new, capsys):
 
 
 def test_one_name_for_each_kind_of_place_on_every_subcommand(capsys):
-    for subcommand in ('export', 'mros-v1-fit', 'mros-v1-pc', 'mros2-export', 'mros2-fit'):
+    for subcommand in ('mros-v1-export', 'mros-v1-fit', 'mros-v1-pc', 'mros2-export',
+                       'mros2-fit'):
         with pytest.raises(SystemExit):
             main([subcommand, '--help'])
         help_text = capsys.readouterr().out
@@ -88,15 +91,15 @@ def test_generate_reads_its_files(tmp_path, capsys):
 
 def test_a_misspelt_option_is_refused_with_the_subcommand_s_usage(capsys):
     with pytest.raises(SystemExit) as done:
-        main(['export', '--workspce', 'ws', '-o', 'out'])
+        main(['mros-v1-export', '--workspce', 'ws', '-o', 'out'])
     assert done.value.code == 2
     error = capsys.readouterr().err.splitlines()
-    assert error[0].startswith('usage: genmros export ')
-    assert error[-1] == 'genmros export: error: unrecognized arguments: --workspce ws'
+    assert error[0].startswith('usage: genmros mros-v1-export ')
+    assert error[-1] == 'genmros mros-v1-export: error: unrecognized arguments: --workspce ws'
 
 
 def test_an_option_name_means_one_thing_in_every_subcommand(capsys):
-    # --export-dir names an export dir to read (export, mros-v1-fit);
+    # --export-dir names an export dir to read (mros-v1-export, mros-v1-fit);
     # generate's output dir is --add-to-export-dir, its old name a hidden alias.
     with pytest.raises(SystemExit):
         main(['generate', '--help'])
@@ -106,7 +109,29 @@ def test_an_option_name_means_one_thing_in_every_subcommand(capsys):
     for name in ('--add-to-export-dir', '--export-dir'):
         options = generate.parse_args(['A.msg', '-p', 'demo', '-o', 'out', name, 'exports'])
         assert options.export_dir == 'exports'
-    for subcommand in ('export', 'mros-v1-fit'):
+    for subcommand in ('mros-v1-export', 'mros-v1-fit'):
         with pytest.raises(SystemExit):
             main([subcommand, '--help'])
         assert 'the types come from' in ' '.join(capsys.readouterr().out.split())
+
+
+@pytest.mark.parametrize('flags, runs', [([], True), (['--build-only'], False)])
+def test_mros_v1_pc_builds_and_runs_unless_build_only(flags, runs, monkeypatch, capsys):
+    from colcon_mros.library_tools.mros_v1.pc_target import build
+    ran = []
+    monkeypatch.setattr(build, 'build', lambda request: '/built/%s' % request.app_dir)
+    monkeypatch.setattr(build, 'run_program', lambda *program: ran.append(program))
+    assert main(['mros-v1-pc', 'app', '--target', 'native'] + flags) == 0
+    assert capsys.readouterr().out.startswith('genmros: built /built/app\n')
+    assert ran == ([('/built/app', 'native')] if runs else [])
+
+
+@pytest.mark.parametrize('subcommand, written', [
+    ('generate', "the package's header directory"), ('mros-v1-export', 'the include root'),
+    ('mros2-export', 'the include root'), ('mros-v1-pc', 'the build directory'),
+    ('mros2-pc', 'the build directory'), ('mros2-peer-profile', 'the profile file')])
+def test_output_names_what_the_subcommand_writes(subcommand, written, capsys):
+    with pytest.raises(SystemExit):
+        main([subcommand, '--help'])
+    help_text = ' '.join(capsys.readouterr().out.split())
+    assert re.search(r'-o (DIR|FILE), --output (DIR|FILE) %s' % re.escape(written), help_text)

@@ -350,8 +350,8 @@ def _real_renders(tmp_path, monkeypatch):
     for module in (render, mros_v1_render, aggregates, fit_check_header, mros2_render):
         monkeypatch.setattr(module, 'render_template', recording)
     std_msgs = ros_paths.ros1_package_dir('std_msgs')
-    assert cli.main(['export', '-o', str(tmp_path / 'v1'), '--package', 'std_msgs', '--package',
-                     'std_srvs', '--package', 'geometry_msgs']
+    assert cli.main(['mros-v1-export', '-o', str(tmp_path / 'v1'), '--package', 'std_msgs',
+                     '--package', 'std_srvs', '--package', 'geometry_msgs']
                     + ros_paths.prefix_arguments(ros_paths.ros1_prefixes())) == 0
     assert cli.main(['generate', os.path.join(std_msgs, 'Header.msg'), '-p', 'std_msgs',
                      '-o', str(tmp_path / 'generated'), '-I', 'std_msgs:%s' % std_msgs,

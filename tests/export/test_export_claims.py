@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """What genmros' generator mode leaves in an export dir (export_claims): the
 files of types no definition contains any more go, files genmros did not
-write stay, and `genmros prune-export` does the same after catkin drops a
+write stay, and `genmros mros-v1-prune-export` does the same after catkin drops a
 definition's claim. The catkin side is in test_catkin_incremental.py."""
 
 import os
@@ -50,7 +50,7 @@ def test_prune_export_removes_what_only_a_dropped_claim_named(tmp_path):
     _generate(tmp_path, 'Stamp.msg', 'Header header\n')
     # What catkin does when Stamp.msg leaves its package.
     os.remove(tmp_path / 'export' / '.genmros' / 'claims' / 'demo' / 'msg' / 'Stamp.msg')
-    result = run_genmros('prune-export', str(tmp_path / 'export'))
+    result = run_genmros('mros-v1-prune-export', str(tmp_path / 'export'))
     removed = {line.split('genmros: removed ')[1] for line in result.stdout.splitlines()}
     assert removed == {str(tmp_path / 'export' / relative) for relative in (
         'include/demo/Stamp.h', 'share/demo/msg/Stamp.msg',
@@ -59,11 +59,11 @@ def test_prune_export_removes_what_only_a_dropped_claim_named(tmp_path):
     assert {'include/demo/Lamp.h', 'include/std_msgs/ColorRGBA.h',
             'share/std_msgs/package.xml'} <= exported
     assert not os.path.exists(tmp_path / 'export' / 'include' / 'std_msgs' / 'Header.h')
-    assert run_genmros('prune-export', str(tmp_path / 'export')).stdout == ''
+    assert run_genmros('mros-v1-prune-export', str(tmp_path / 'export')).stdout == ''
 
 
 def test_prune_export_of_a_missing_dir_is_one_line(tmp_path):
-    result = run_genmros('prune-export', str(tmp_path / 'nowhere'), check=False)
+    result = run_genmros('mros-v1-prune-export', str(tmp_path / 'nowhere'), check=False)
     assert result.returncode == 1
     assert result.stderr == 'genmros: error: %s: export dir is not a directory\n' % (
         tmp_path / 'nowhere')

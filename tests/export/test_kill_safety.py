@@ -98,14 +98,15 @@ def exports(tmp_path_factory):
         workspace = root / version / 'ws'
         write_tree(str(workspace / 'src' / 'kill_ws'), _sources(version))
         output = str(root / version / 'out')
-        run_genmros('export', '--workspace', str(workspace), '-o', output,
+        run_genmros('mros-v1-export', '--workspace', str(workspace), '-o', output,
                     *prefix_arguments(ros1_prefixes()))
         states[version] = output
     return str(root / 'new' / 'ws'), states['old'], states['new']
 
 
 def _export_arguments(workspace, output):
-    return ['export', '--workspace', workspace, '-o', output, *prefix_arguments(ros1_prefixes())]
+    return ['mros-v1-export', '--workspace', workspace, '-o', output,
+            *prefix_arguments(ros1_prefixes())]
 
 
 def _median_duration(workspace, old, tmp_path):

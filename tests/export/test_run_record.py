@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """colcon_mros.export.run_record: the one rule for "up to date", the record
-read back, and the same record as make reads it; genmros export --record,
+read back, and the same record as make reads it; genmros mros-v1-export --record,
 which the CMake module and the make fragment run."""
 
 import os
@@ -109,8 +109,9 @@ def test_make_reads_the_record_as_its_rule(tmp_path, monkeypatch):
 
 
 def _export(*arguments, cwd):
-    """genmros export from this checkout, run in cwd."""
-    return subprocess.run([sys.executable, '-m', 'colcon_mros', 'export'] + list(arguments),
+    """genmros mros-v1-export from this checkout, run in cwd."""
+    return subprocess.run([sys.executable, '-m', 'colcon_mros', 'mros-v1-export']
+                          + list(arguments),
                           cwd=cwd, env=dict(os.environ, PYTHONPATH=REPO), stdout=subprocess.PIPE,
                           stderr=subprocess.STDOUT, universal_newlines=True)
 

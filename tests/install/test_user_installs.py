@@ -103,8 +103,9 @@ def test_colcon_export_points_a_firmware_at_the_install(install):
 def test_the_pc_target_builds_and_runs_an_app_from_the_installed_package(venv_install, tmp_path):
     mros_root = MROS_V1_ROOT
     output = str(tmp_path / 'string_pubsub')
-    built = venv_install.run(['genmros', 'mros-v1-pc', '-v', '--target', 'native', '-j2', '-o',
-                              output, os.path.join(mros_root, 'mros_ws', 'string_pubsub')],
+    built = venv_install.run(['genmros', 'mros-v1-pc', '--build-only', '-v', '--target', 'native',
+                              '-j2', '-o', output,
+                              os.path.join(mros_root, 'mros_ws', 'string_pubsub')],
                              venv_install.root)
     # The target's files, and the program, come from the venv's package.
     installed_target = venv_install.run(

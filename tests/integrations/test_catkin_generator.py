@@ -2,7 +2,7 @@
 """genmros as a catkin message generator, with catkin_make, catkin_make_isolated
 and catkin build, on fresh copies of test_ws's message packages.
 
-Each build is checked against what `genmros export` writes for the same
+Each build is checked against what `genmros mros-v1-export` writes for the same
 sources: the headers exist, compile with strict flags, are byte-identical,
 are installed, and are copied to MROS_EXPORT_DIR.
 """
@@ -168,7 +168,7 @@ def test_install_space_holds_the_same_headers(build):
 def test_export_dir_collects_every_package(build):
     exported = headers_under(os.path.join(build.export_dir, 'include'))
     # Every type of the workspace and every type they contain, installed
-    # packages' included: what genmros export writes, less the per-firmware files.
+    # packages' included: what genmros mros-v1-export writes, less the per-firmware files.
     assert exported == {path: text for path, text in headers_under(build.reference).items()
                         if path not in FIRMWARE_FILES}
     assert 'std_msgs/Header.h' in exported

@@ -82,7 +82,9 @@ def test_generate_rebuilds_after_a_msg_change_and_not_otherwise(firmware, worksp
     path = os.path.join(source, 'mros_test', 'msg', 'PersonalData.msg')
     with open(path, 'a') as stream:
         stream.write('float32 height_m\n')
-    assert REGENERATION_LOG_LINE in firmware.build()
+    rebuilt = firmware.build()
+    # The module passes the source tree and the prefixes by their public options.
+    assert REGENERATION_LOG_LINE in rebuilt and 'the old name goes' not in rebuilt
     output = firmware.output()
     assert output['serialized'] == '18'
     assert output['md5'] == genmsg_md5('mros_test/PersonalData', search_path_of(source))
@@ -294,7 +296,7 @@ def test_import_bounded_storage_generates_its_own_headers(firmware, catkin_expor
 
 @pytest.mark.parametrize('cache, expected', [
     ({'MROS_STORAGE': 'stack'},
-     "mros_generate_messages(): genmros export: error: argument "
+     "mros_generate_messages(): genmros mros-v1-export: error: argument "
      "--storage: invalid choice: 'stack' (choose from 'heap', 'bounded')"),
     ({'MROS_STORAGE': 'bounded', 'MROS_OPTIONS': '/nonexistent/firmware.options'},
      "mros_generate_messages(): genmros: error: /nonexistent/firmware.options: cannot read "
@@ -314,7 +316,7 @@ def test_a_package_path_that_is_no_directory_fails_the_configure_step(firmware, 
     result = firmware.configure(check=False, MROS_PACKAGE_PATHS=[os.path.join(workspace, 'src'),
                                                                  '/nonexistent/prefix'])
     assert result.returncode != 0
-    assert ('mros_generate_messages(): genmros: error: /nonexistent/prefix: not a directory: a '
+    assert ('mros_generate_messages(): PACKAGE_PATHS: /nonexistent/prefix: not a directory: a '
             'package path is a source tree of packages or an installed prefix (with '
             'share/<pkg>/msg)') in unwrapped(result.stdout)
 

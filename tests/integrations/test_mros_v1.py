@@ -105,6 +105,8 @@ def test_make_regenerates_headers_when_a_definition_changes(app_dir, tmp_path):
     made = _make(app_dir, paths)
     assert made.returncode == 0, made.stderr[-3000:]
     assert 'genmros: exported 13 message' in made.stdout
+    # The fragment passes the source tree by its public option.
+    assert 'the old name goes' not in made.stderr
     header = app_dir / 'include' / 'mros_test' / 'PersonalData.h'
     assert 'int32_t score;' in header.read_text()
 
@@ -116,7 +118,7 @@ def test_make_regenerates_headers_when_a_definition_changes(app_dir, tmp_path):
     compact = _make(app_dir, paths, 'MROS_MSG_DEFINITION_TEXT=compact')
     assert compact.returncode == 0, compact.stderr[-3000:]
     assert 'genmros: exported 13 message' in compact.stdout
-    assert '(genmros export --definition-text compact)' in header.read_text()
+    assert '(genmros mros-v1-export --definition-text compact)' in header.read_text()
 
     definition = workspace / 'src' / 'mros_test' / 'msg' / 'PersonalData.msg'
     definition.write_text(definition.read_text() + 'float64 height\n')
@@ -141,6 +143,13 @@ def test_make_refuses_bad_input_and_leaves_the_include_dir(app_dir):
     missing = _make(app_dir, 'GENMROS=/nonexistent/genmros', 'MROS_MSG_TYPES=mros_test/Empty')
     assert missing.returncode != 0
     assert "'/nonexistent/genmros' not found: install colcon-mros or set GENMROS" in missing.stderr
+    assert _snapshot(str(app_dir / 'include')) == before
+
+    nowhere = _make(app_dir, 'MROS_MSG_PATHS=/nonexistent/prefix')
+    assert nowhere.returncode != 0
+    assert ('genmros.mk: MROS_MSG_PATHS: /nonexistent/prefix: not a directory: a package path '
+            'is a source tree of packages or an installed prefix (with share/<pkg>/msg)'
+            in nowhere.stderr)
     assert _snapshot(str(app_dir / 'include')) == before
 
 
@@ -179,7 +188,7 @@ def test_genmros_names_its_make_fragment():
 
 
 def test_aggregates_cover_the_named_types_and_headers_their_closure(tmp_path):
-    run_genmros('export', '--workspace', TEST_WS, '--type', 'mros_test/NestedTypes',
+    run_genmros('mros-v1-export', '--workspace', TEST_WS, '--type', 'mros_test/NestedTypes',
                 '-o', str(tmp_path), *prefix_arguments(ros1_prefixes()))
     assert os.path.isfile(str(tmp_path / 'geometry_msgs' / 'Pose.h'))
     with open(str(tmp_path / 'message_class_specialization.h')) as stream:

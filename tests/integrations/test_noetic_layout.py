@@ -97,7 +97,7 @@ def noetic(tmp_path_factory):
 
 
 def test_before_sourcing_genmros_says_to_source_and_writes_nothing(noetic, tmp_path):
-    result = noetic.run('genmros export --type std_msgs/NoeticOnly -o out',
+    result = noetic.run('genmros mros-v1-export --type std_msgs/NoeticOnly -o out',
                         str(tmp_path), sourced=False)
     assert result.returncode == 1
     assert result.stderr == (
@@ -110,7 +110,7 @@ def test_before_sourcing_genmros_says_to_source_and_writes_nothing(noetic, tmp_p
 
 
 def test_sourced_genmros_takes_the_packages_of_the_sourced_prefix(noetic, tmp_path):
-    result = noetic.run('genmros export --type std_msgs/NoeticOnly '
+    result = noetic.run('genmros mros-v1-export --type std_msgs/NoeticOnly '
                         '--type geometry_msgs/PoseStamped -o out', str(tmp_path))
     assert result.returncode == 0, result.stderr
     out = tmp_path / 'out'
@@ -120,7 +120,7 @@ def test_sourced_genmros_takes_the_packages_of_the_sourced_prefix(noetic, tmp_pa
 
 
 def test_sourced_genmros_exports_a_workspace_against_the_prefix(noetic, tmp_path):
-    result = noetic.run('genmros export --workspace %s -o out' % TEST_WS, str(tmp_path))
+    result = noetic.run('genmros mros-v1-export --workspace %s -o out' % TEST_WS, str(tmp_path))
     assert result.returncode == 0, result.stderr
     header = (tmp_path / 'out' / 'std_msgs' / 'Header.h').read_text()
     assert PREFIX_COMMENT.strip() in header

@@ -16,7 +16,7 @@ FAST_DDS = {'dds': 'http://www.eprosima.com'}
 
 def test_the_profile_is_fast_dds_xml_with_the_numbers_given(tmp_path):
     profile = tmp_path / 'board_peer.xml'
-    result = run_genmros('mros2-peer-profile', '--max-message', '1472', '--receive-buffer',
+    result = run_genmros('mros2-peer-profile', '--peer-max-message', '1472', '--receive-buffer',
                          '1048576', '-o', str(profile))
     assert result.stdout == 'genmros: wrote %s\n' % profile
     document = etree.parse(str(profile))
@@ -24,15 +24,15 @@ def test_the_profile_is_fast_dds_xml_with_the_numbers_given(tmp_path):
     assert [document.findtext('.//dds:%s' % name, namespaces=FAST_DDS)
             for name in ('maxMessageSize', 'receiveBufferSize', 'useBuiltinTransports')] == [
         '1472', '1048576', 'false']
-    assert run_genmros('mros2-peer-profile', '--max-message', '1472').stdout == \
+    assert run_genmros('mros2-peer-profile', '--peer-max-message', '1472').stdout == \
         profile.read_text().replace('1048576', '4194304')
 
 
 def test_a_limit_below_the_discovery_announcement_is_refused(tmp_path):
     profile = tmp_path / 'board_peer.xml'
-    result = run_genmros('mros2-peer-profile', '--max-message', '500', '-o', str(profile),
+    result = run_genmros('mros2-peer-profile', '--peer-max-message', '500', '-o', str(profile),
                          check=False)
     assert (result.returncode, result.stderr) == (1, (
-        "genmros: error: --max-message 500: below 572 bytes, a ROS 2 node's SPDP announcement "
-        'as Fast DDS 3 sends it: the board would discover no such node\n'))
+        "genmros: error: --peer-max-message 500: below 572 bytes, a ROS 2 node's SPDP "
+        'announcement as Fast DDS 3 sends it: the board would discover no such node\n'))
     assert not profile.exists()

@@ -32,10 +32,10 @@ def bounded_exports(tmp_path_factory):
     root = tmp_path_factory.mktemp('bounded')
     options = _options(root / 'firmware.options', '* max_size:24 max_count:6\n')
     exports = {'test_ws': str(root / 'test_ws'), 'debian': str(root / 'debian')}
-    run_genmros('export', '--workspace', TEST_WS, '-o', exports['test_ws'],
+    run_genmros('mros-v1-export', '--workspace', TEST_WS, '-o', exports['test_ws'],
                 *prefix_arguments(ros1_prefixes()),
                 '--storage', 'bounded', '--options', options)
-    arguments = ['export', '-o', exports['debian'],
+    arguments = ['mros-v1-export', '-o', exports['debian'],
                  *prefix_arguments(ros1_prefixes()), '--storage', 'bounded',
                  '--options', options]
     for name in DEBIAN_SET:
@@ -177,9 +177,9 @@ def test_bounds_are_exact_and_never_exceeded(tmp_path):
                        'mros_test/PersonalData.first_name max_size:32\n'
                        '* max_size:16 max_count:4\n')
     include = str(tmp_path / 'include')
-    run_genmros('export', '--workspace', TEST_WS, '--type', 'mros_test/PersonalData', '--type',
-                'mros_test_base/Labeled', '-o', include, *prefix_arguments(ros1_prefixes()),
-                '--storage', 'bounded', '--options', options)
+    run_genmros('mros-v1-export', '--workspace', TEST_WS, '--type', 'mros_test/PersonalData',
+                '--type', 'mros_test_base/Labeled', '-o', include,
+                *prefix_arguments(ros1_prefixes()), '--storage', 'bounded', '--options', options)
     source = tmp_path / 'behaviour.cpp'
     source.write_text(BEHAVIOUR)
     program = str(tmp_path / 'behaviour')
@@ -210,8 +210,9 @@ def test_bounds_are_exact_and_never_exceeded(tmp_path):
 
 
 def test_heap_storage_says_which_types_have_no_maximum_and_why(tmp_path):
-    run_genmros('export', '--workspace', TEST_WS, '--type', 'mros_test/NestedTypes', '--type',
-                'mros_test_base/Vector3i', '-o', str(tmp_path), *prefix_arguments(ros1_prefixes()))
+    run_genmros('mros-v1-export', '--workspace', TEST_WS, '--type', 'mros_test/NestedTypes',
+                '--type', 'mros_test_base/Vector3i', '-o', str(tmp_path),
+                *prefix_arguments(ros1_prefixes()))
     with open(str(tmp_path / 'msg_max_size.h')) as stream:
         text = stream.read()
     assert ('//   mros_test/NestedTypes: no maximum, header.frame_id (string) has no bound; '
@@ -227,9 +228,10 @@ def test_package_options_apply_to_bounded_exports_only(tmp_path):
     _options(workspace / 'mros_test_base' / 'msg' / 'genmros.options',
              'Labeled.label max_size:8\nLabeled.weights max_count:3\n')
     firmware = _options(tmp_path / 'firmware.options', '* max_size:40 max_count:9\n')
-    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', str(tmp_path / 'heap'),
-                *prefix_arguments(ros1_prefixes()))
-    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', str(tmp_path / 'bounded'),
+    run_genmros('mros-v1-export', '--workspace', str(tmp_path / 'ws'), '-o',
+                str(tmp_path / 'heap'), *prefix_arguments(ros1_prefixes()))
+    run_genmros('mros-v1-export', '--workspace', str(tmp_path / 'ws'),
+                '-o', str(tmp_path / 'bounded'),
                 *prefix_arguments(ros1_prefixes()), '--storage', 'bounded', '--options', firmware)
     heap = (tmp_path / 'heap' / 'mros_test_base' / 'Labeled.h').read_text()
     bounded = (tmp_path / 'bounded' / 'mros_test_base' / 'Labeled.h').read_text()
@@ -264,8 +266,9 @@ def test_package_options_apply_to_bounded_exports_only(tmp_path):
 def test_bad_options_are_refused_with_their_line(tmp_path, text, line, problem):
     options = _options(tmp_path / 'bad.options', text)
     output = tmp_path / 'include'
-    result = run_genmros('export', '--workspace', TEST_WS, '--type', 'mros_test/PersonalData',
-                         '-o', str(output), *prefix_arguments(ros1_prefixes()),
+    result = run_genmros('mros-v1-export', '--workspace', TEST_WS,
+                         '--type', 'mros_test/PersonalData', '-o', str(output),
+                         *prefix_arguments(ros1_prefixes()),
                          '--storage', 'bounded', '--options', options, check=False)
     assert result.returncode == 1
     assert result.stderr.splitlines() == ['genmros: error: %s:%d: %s' % (options, line, problem)]
@@ -276,8 +279,9 @@ def test_a_field_without_a_bound_is_refused_at_its_definition(tmp_path):
     options = _options(tmp_path / 'partial.options',
                        'mros_test/PersonalData.first_name max_size:8\n')
     output = tmp_path / 'include'
-    result = run_genmros('export', '--workspace', TEST_WS, '--type', 'mros_test/PersonalData',
-                         '-o', str(output), *prefix_arguments(ros1_prefixes()),
+    result = run_genmros('mros-v1-export', '--workspace', TEST_WS,
+                         '--type', 'mros_test/PersonalData', '-o', str(output),
+                         *prefix_arguments(ros1_prefixes()),
                          '--storage', 'bounded', '--options', options, check=False)
     definition = os.path.join(TEST_WS, 'src', 'mros_test', 'msg', 'PersonalData.msg')
     assert result.returncode == 1

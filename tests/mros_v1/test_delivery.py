@@ -39,7 +39,7 @@ def bounded_types(tmp_path_factory):
     options = root / 'bounds.options'
     options.write_text('* max_size:32 max_count:16\n')
     include = str(root / 'include')
-    run_genmros('export', '--type', 'sensor_msgs/JointState', '--type', 'std_msgs/String',
+    run_genmros('mros-v1-export', '--type', 'sensor_msgs/JointState', '--type', 'std_msgs/String',
                 '-o', include, *prefix_arguments(ros1_prefixes()),
                 '--storage', 'bounded', '--options', str(options))
     return include
@@ -170,7 +170,7 @@ def test_delivery_reads_no_further_than_the_frame_size_the_library_gives(tmp_pat
     # (frame-size-to-delivery); without it, delivery believes the length
     # word of a frame it did not write (here a stale 0: nothing decodes).
     include = str(tmp_path / 'include')
-    run_genmros('export', '--type', 'std_msgs/String', '-o', include,
+    run_genmros('mros-v1-export', '--type', 'std_msgs/String', '-o', include,
                 *prefix_arguments(ros1_prefixes()))
     with open(os.path.join(include, 'message_headers.h')) as stream:
         assert '#define MROS_CALL_CALLBACK_TAKES_FRAME_SIZE 1\n' in stream.read()

@@ -31,7 +31,7 @@ def bounded_export(tmp_path_factory):
     options = root / 'bounds.options'
     options.write_text(BOUNDS)
     include = str(root / 'include')
-    arguments = ['export', '-o', include, '--workspace', TEST_WS,
+    arguments = ['mros-v1-export', '-o', include, '--workspace', TEST_WS,
                  *prefix_arguments(ros1_prefixes()),
                  '--storage', 'bounded', '--options', str(options)]
     for type_name in TYPES:

@@ -38,7 +38,7 @@ AGGREGATES = ['message_class_specialization.h', 'message_headers.h', 'msg_max_si
 
 
 def test_export_of_one_type_brings_its_whole_closure(tmp_path):
-    run_genmros('export', '--type', 'geometry_msgs/PoseStamped', '-o', str(tmp_path),
+    run_genmros('mros-v1-export', '--type', 'geometry_msgs/PoseStamped', '-o', str(tmp_path),
                 *prefix_arguments(ros1_prefixes()))
     assert _tree(str(tmp_path)) == sorted(AGGREGATES + [
         'geometry_msgs/Point.h', 'geometry_msgs/Pose.h', 'geometry_msgs/PoseStamped.h',
@@ -120,7 +120,7 @@ def test_the_msg_comments_become_the_type_and_members_comments(tmp_path):
         '</license></package>\n')
     (package / 'msg' / 'Commented.msg').write_text(COMMENTED_MSG)
     include = str(tmp_path / 'include')
-    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', include,
+    run_genmros('mros-v1-export', '--workspace', str(tmp_path / 'ws'), '-o', include,
                 *prefix_arguments(ros1_prefixes()))
     with open(os.path.join(include, 'commented', 'Commented.h')) as stream:
         header = stream.read()
@@ -142,9 +142,9 @@ def test_the_msg_comments_become_the_type_and_members_comments(tmp_path):
 
 
 def test_type_ids_depend_on_the_type_name_only(tmp_path):
-    run_genmros('export', '--type', 'std_msgs/Header', '-o', str(tmp_path / 'a'),
+    run_genmros('mros-v1-export', '--type', 'std_msgs/Header', '-o', str(tmp_path / 'a'),
                 *prefix_arguments(ros1_prefixes()))
-    run_genmros('export', '--package', 'sensor_msgs', '--type', 'std_msgs/Header',
+    run_genmros('mros-v1-export', '--package', 'sensor_msgs', '--type', 'std_msgs/Header',
                 '-o', str(tmp_path / 'b'), *prefix_arguments(ros1_prefixes()))
     assert filecmp.cmp(str(tmp_path / 'a' / 'std_msgs' / 'Header.h'),
                        str(tmp_path / 'b' / 'std_msgs' / 'Header.h'), shallow=False)
@@ -154,7 +154,7 @@ def test_fields_named_like_cpp_keywords_compile_and_round_trip(tmp_path):
     workspace = tmp_path / 'ws' / 'src'
     shutil.copytree(os.path.join(FIXTURES, 'keyword_msgs'), str(workspace / 'keyword_msgs'))
     include = str(tmp_path / 'include')
-    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', include,
+    run_genmros('mros-v1-export', '--workspace', str(tmp_path / 'ws'), '-o', include,
                 *prefix_arguments(ros1_prefixes()))
     output = _build_and_run(tmp_path, [include], r'''
 #include <cstdio>
@@ -213,8 +213,9 @@ int main() {
 
 
 def test_variable_size_budget_sizes_the_publish_buffer(tmp_path):
-    run_genmros('export', '--workspace', TEST_WS, '--type', 'mros_test/PersonalData', '--type',
-                'mros_test_base/Vector3i', '-o', str(tmp_path), *prefix_arguments(ros1_prefixes()),
+    run_genmros('mros-v1-export', '--workspace', TEST_WS, '--type', 'mros_test/PersonalData',
+                '--type', 'mros_test_base/Vector3i', '-o', str(tmp_path),
+                *prefix_arguments(ros1_prefixes()),
                 '--variable-size-budget', '96')
     with open(str(tmp_path / 'msg_max_size.h')) as stream:
         assert '#define PUB_MSG_MAX_SIZE 96' in stream.read()
@@ -233,9 +234,9 @@ def test_template_directory_override(tmp_path):
 
 
 @pytest.mark.parametrize('arguments, expected', [
-    (['--help'], ['genmros export', 'genmros mros2-export']),
-    (['generate', '--help'], ['genmros generate [-h]', '-p PACKAGE', '-o OUTPUT_DIR']),
-    (['export', '--help'],
+    (['--help'], ['genmros mros-v1-export', 'genmros mros2-export']),
+    (['generate', '--help'], ['genmros generate [-h]', '-p PACKAGE', '-o DIR']),
+    (['mros-v1-export', '--help'],
      ['--workspace WS', '--package PKG', '--type PKG/TYPE', '--variable-size-budget']),
 ])
 def test_help_describes_both_modes(arguments, expected):
@@ -279,7 +280,8 @@ def test_catkin_devel_space_underlays_are_found(tmp_path):
         'set(mros_test_base_MSG_INCLUDE_DIRS "%s")\n'
         'set(mros_test_base_MSG_DEPENDENCIES std_msgs)\n'
         % os.path.join(TEST_WS, 'src', 'mros_test_base', 'msg'))
-    run_genmros('export', '--type', 'mros_test_base/Labeled', '-o', str(tmp_path / 'include'),
+    run_genmros('mros-v1-export', '--type', 'mros_test_base/Labeled',
+                '-o', str(tmp_path / 'include'),
                 '--prefix', str(devel), *prefix_arguments(ros1_prefixes()))
     assert _tree(str(tmp_path / 'include')) == sorted(AGGREGATES + [
         'mros_test_base/Labeled.h', 'std_msgs/ColorRGBA.h'] + list(SUPPORT_HEADERS))

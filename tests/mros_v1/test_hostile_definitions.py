@@ -370,7 +370,7 @@ def accepted_export(tmp_path_factory):
     write_tree(str(package), _accepted_files())
     write_tree(str(root / 'ws' / 'src' / 'hostile_ok_b'), GUARD_TWIN)
     output = str(root / 'out')
-    run_genmros('export', '--workspace', str(root / 'ws'), '-o', output,
+    run_genmros('mros-v1-export', '--workspace', str(root / 'ws'), '-o', output,
                 *prefix_arguments(ros1_prefixes()))
     return str(root), str(package), output
 
@@ -544,7 +544,7 @@ def good_export(tmp_path_factory):
                {'package.xml': package_xml('hostile_good'),
                 'msg/Good.msg': 'std_msgs/Header header\nint32 a\n'})
     output = str(root / 'out')
-    run_genmros('export', '--workspace', str(root / 'ws'), '-o', output,
+    run_genmros('mros-v1-export', '--workspace', str(root / 'ws'), '-o', output,
                 *prefix_arguments(ros1_prefixes()))
     return str(root / 'ws'), output
 
@@ -561,7 +561,7 @@ def test_refused_definition(good_export, tmp_path, package_name, files, target, 
     shutil.copytree(good_output, output)
     before = snapshot(output)
     location = os.path.join(package, target) + line
-    result = run_genmros('export', '--workspace', str(workspace), '-o', output,
+    result = run_genmros('mros-v1-export', '--workspace', str(workspace), '-o', output,
                          *prefix_arguments(ros1_prefixes()), check=False)
     assert_one_line_error(result, location, problem)
     assert snapshot(output) == before
@@ -601,7 +601,7 @@ def test_nesting_as_deep_as_gencpp_handles(tmp_path):
     package = str(tmp_path / 'ws' / 'src' / 'hostile_deep')
     write_tree(package, _chain(250))
     output = str(tmp_path / 'out')
-    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', output,
+    run_genmros('mros-v1-export', '--workspace', str(tmp_path / 'ws'), '-o', output,
                 *prefix_arguments(ros1_prefixes()))
     source = tmp_path / 'deep.cpp'
     source.write_text('#include <hostile_deep/D0.h>\nint main() { hostile_deep::D0 d; '
@@ -619,7 +619,7 @@ def test_nesting_as_deep_as_gencpp_handles(tmp_path):
 def test_nesting_beyond_the_limit_is_refused(tmp_path):
     package = str(tmp_path / 'ws' / 'src' / 'hostile_deep')
     write_tree(package, _chain(1002))
-    result = run_genmros('export', '--workspace', str(tmp_path / 'ws'),
+    result = run_genmros('mros-v1-export', '--workspace', str(tmp_path / 'ws'),
                          '-o', str(tmp_path / 'out'),
                          *prefix_arguments(ros1_prefixes()), check=False)
     assert_one_line_error(result, os.path.join(package, 'msg', 'D999.msg') + ':2:',
@@ -643,7 +643,7 @@ def test_diamond_nesting_takes_linear_time(tmp_path):
     write_tree(package, _diamond(40))
     output = str(tmp_path / 'out')
     started = time.monotonic()
-    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', output,
+    run_genmros('mros-v1-export', '--workspace', str(tmp_path / 'ws'), '-o', output,
                 *prefix_arguments(ros1_prefixes()))
     assert time.monotonic() - started < 30
     # genmsg itself, where it still finishes: the last 12 levels.
@@ -663,7 +663,7 @@ def test_error_on_the_last_line_of_a_long_file_is_found_quickly(tmp_path):
     write_tree(package, {'package.xml': package_xml('hostile_long'),
                'msg/Long.msg': '\n'.join(lines) + '\n'})
     started = time.monotonic()
-    result = run_genmros('export', '--workspace', str(tmp_path / 'ws'),
+    result = run_genmros('mros-v1-export', '--workspace', str(tmp_path / 'ws'),
                          '-o', str(tmp_path / 'out'),
                          *prefix_arguments(ros1_prefixes()), check=False)
     assert time.monotonic() - started < 20

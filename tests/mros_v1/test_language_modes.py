@@ -18,8 +18,8 @@ def test_every_type_has_one_definition_in_gnu98_and_cxx11(tmp_path):
     options = tmp_path / 'bounds.options'
     options.write_text('* max_size:8 max_count:4\n')
     export = str(tmp_path / 'include')
-    run_genmros('export', '--workspace', TEST_WS, *prefix_arguments(ros1_prefixes()), '-o', export,
-                '--storage', 'bounded', '--options', str(options))
+    run_genmros('mros-v1-export', '--workspace', TEST_WS, *prefix_arguments(ros1_prefixes()), '-o',
+                export, '--storage', 'bounded', '--options', str(options))
     source = str(tmp_path / 'every_header.cpp')
     assert every_header_translation_unit(export, source) > 10
     main = tmp_path / 'main.cpp'

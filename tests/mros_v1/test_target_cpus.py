@@ -104,7 +104,7 @@ def target_sources(tmp_path_factory):
                 for package, path in cpp_harness.test_ws_definitions('msg')]
     type_set = cpp_harness.TypeSet(search_path, messages + DEBIAN_SET,
                                    list(cpp_harness.test_ws_definitions('srv')))
-    arguments = ['export', '--workspace', TEST_WS, *prefix_arguments(ros1_prefixes())]
+    arguments = ['mros-v1-export', '--workspace', TEST_WS, *prefix_arguments(ros1_prefixes())]
     for package in cpp_harness.TEST_WS_PACKAGES:
         arguments += ['--package', package]
     for name in DEBIAN_SET:

@@ -93,7 +93,7 @@ def workspace(tmp_path):
     package = tmp_path / 'ws' / 'src' / 'mros_bad'
     write_tree(str(package), {'package.xml': PACKAGE_XML, 'msg/Good.msg': GOOD_MESSAGE})
     output = tmp_path / 'out'
-    run_genmros('export', '--workspace', str(tmp_path / 'ws'), '-o', str(output),
+    run_genmros('mros-v1-export', '--workspace', str(tmp_path / 'ws'), '-o', str(output),
                 *prefix_arguments(ros1_prefixes()))
     assert (output / 'mros_bad' / 'Good.h').is_file()
     return str(tmp_path / 'ws'), str(package), str(output)
@@ -105,7 +105,7 @@ def test_bad_definition_in_export(workspace, files, location, problem):
     workspace_dir, package, output = workspace
     write_tree(package, files)
     before = snapshot(output)
-    result = run_genmros('export', '--workspace', workspace_dir, '-o', output,
+    result = run_genmros('mros-v1-export', '--workspace', workspace_dir, '-o', output,
                          *prefix_arguments(ros1_prefixes()),
                          check=False)
     assert_one_line_error(result, os.path.join(package, location), problem)
@@ -147,7 +147,7 @@ ARGUMENT_CASES = [
 def test_bad_export_selection(workspace, arguments, problem):
     workspace_dir, _, output = workspace
     before = snapshot(output)
-    result = run_genmros('export', '--workspace', workspace_dir, '-o', output,
+    result = run_genmros('mros-v1-export', '--workspace', workspace_dir, '-o', output,
                          *prefix_arguments(ros1_prefixes()),
                          *arguments, check=False)
     assert_one_line_error(result, problem)
@@ -158,8 +158,8 @@ def test_output_directory_that_is_a_file(workspace, tmp_path):
     workspace_dir, _, _ = workspace
     blocker = tmp_path / 'blocker'
     blocker.write_text('not a directory')
-    result = run_genmros('export', '--workspace', workspace_dir, '-o', str(blocker / 'include'),
-                         *prefix_arguments(ros1_prefixes()), check=False)
+    result = run_genmros('mros-v1-export', '--workspace', workspace_dir, '-o',
+                         str(blocker / 'include'), *prefix_arguments(ros1_prefixes()), check=False)
     assert_one_line_error(result, str(blocker), 'output directory is not a directory')
     assert blocker.read_text() == 'not a directory'
 
@@ -177,7 +177,7 @@ def test_unwritable_output_directory(workspace, tmp_path):
             target = '/sys/genmros-cannot-create/include'
         else:
             target = str(locked / 'include')
-        result = run_genmros('export', '--workspace', workspace_dir, '-o', target,
+        result = run_genmros('mros-v1-export', '--workspace', workspace_dir, '-o', target,
                              *prefix_arguments(ros1_prefixes()),
                              check=False)
         assert_one_line_error(result, os.path.dirname(target), 'cannot write to output directory',
@@ -205,14 +205,14 @@ def test_bad_include_flag(tmp_path):
 def test_removed_type_leaves_no_header(workspace):
     workspace_dir, package, output = workspace
     write_tree(package, {'msg/Second.msg': 'int8 a\n'})
-    run_genmros('export', '--workspace', workspace_dir, '-o', output,
+    run_genmros('mros-v1-export', '--workspace', workspace_dir, '-o', output,
                 *prefix_arguments(ros1_prefixes()))
     assert os.path.isfile(os.path.join(output, 'mros_bad', 'Second.h'))
     os.remove(os.path.join(package, 'msg', 'Second.msg'))
     # A hand-written header beside the generated ones is not genmros' to remove.
     with open(os.path.join(output, 'mros_bad', 'Handwritten.h'), 'w') as stream:
         stream.write('#pragma once\n')
-    run_genmros('export', '--workspace', workspace_dir, '-o', output,
+    run_genmros('mros-v1-export', '--workspace', workspace_dir, '-o', output,
                 *prefix_arguments(ros1_prefixes()))
     assert not os.path.exists(os.path.join(output, 'mros_bad', 'Second.h'))
     assert os.path.isfile(os.path.join(output, 'mros_bad', 'Good.h'))
@@ -224,7 +224,7 @@ def test_removed_type_leaves_no_header(workspace):
 def test_unchanged_headers_keep_their_mtime(workspace):
     workspace_dir, _, output = workspace
     before = snapshot(output)
-    run_genmros('export', '--workspace', workspace_dir, '-o', output,
+    run_genmros('mros-v1-export', '--workspace', workspace_dir, '-o', output,
                 *prefix_arguments(ros1_prefixes()))
     assert snapshot(output) == before
 
@@ -238,7 +238,7 @@ def test_failed_write_changes_no_file(workspace):
     with open(os.path.join(output, 'std_msgs'), 'w') as stream:
         stream.write('in the way\n')
     before = snapshot(output)
-    result = run_genmros('export', '--workspace', workspace_dir, '-o', output,
+    result = run_genmros('mros-v1-export', '--workspace', workspace_dir, '-o', output,
                          *prefix_arguments(ros1_prefixes()), check=False)
     assert_one_line_error(result, 'cannot write to output directory')
     assert snapshot(output) == before
@@ -248,8 +248,8 @@ def test_failed_write_changes_no_file(workspace):
 def test_relative_output_paths_whose_first_part_is_new(tmp_path, mode):
     # The common call from a build or app directory: genmros ... -o include
     if mode == 'export':
-        arguments = ['export', '--workspace', TEST_WS, '--type', 'mros_test/PersonalData', '-o',
-                     os.path.join('new', 'include'), *prefix_arguments(ros1_prefixes())]
+        arguments = ['mros-v1-export', '--workspace', TEST_WS, '--type', 'mros_test/PersonalData',
+                     '-o', os.path.join('new', 'include'), *prefix_arguments(ros1_prefixes())]
         written = tmp_path / 'new' / 'include' / 'mros_test' / 'PersonalData.h'
     else:
         arguments = ['generate',

@@ -20,6 +20,7 @@ import pytest
 from genpy.dynamic import generate_dynamic
 
 from support import cpp_harness
+from fixtures.build_integration.tools import user_environment
 from support.checkout import REPO, TEST_WS, run_genmros
 from support.debian_messages import DEBIAN_MESSAGE_PACKAGES
 
@@ -157,10 +158,11 @@ def _definition_in_header(header_path):
 
 
 def test_export_writes_the_chosen_text_into_every_header(tmp_path):
-    run_genmros('export', *prefix_arguments(ros1_prefixes()), '--type', 'nav_msgs/Odometry',
-                '-o', str(tmp_path / 'full'))
-    run_genmros('export', *prefix_arguments(ros1_prefixes()), '--type', 'nav_msgs/Odometry',
-                '-o', str(tmp_path / 'compact'), '--definition-text', 'compact')
+    run_genmros('mros-v1-export', *prefix_arguments(ros1_prefixes()), '--type',
+                'nav_msgs/Odometry', '-o', str(tmp_path / 'full'))
+    run_genmros('mros-v1-export', *prefix_arguments(ros1_prefixes()),
+                '--type', 'nav_msgs/Odometry', '-o', str(tmp_path / 'compact'),
+                '--definition-text', 'compact')
     for relative in ('nav_msgs/Odometry.h', 'std_msgs/Header.h',
                      'geometry_msgs/PoseWithCovariance.h'):
         name = relative[:-2]
@@ -170,7 +172,8 @@ def test_export_writes_the_chosen_text_into_every_header(tmp_path):
         assert _class(name, compact)._md5sum == _class(name, full)._md5sum
         with open(str(tmp_path / 'compact' / relative)) as header:
             assert 'without comments and\n// blank lines' in header.read()
-    result = run_genmros('export', *prefix_arguments(ros1_prefixes()), '--type', 'std_msgs/Header',
+    result = run_genmros('mros-v1-export', *prefix_arguments(ros1_prefixes()),
+                         '--type', 'std_msgs/Header',
                          '-o', str(tmp_path / 'bad'), '--definition-text', 'short',
                          check=False)
     assert result.returncode == 2 and "invalid choice: 'short'" in result.stderr
@@ -196,22 +199,25 @@ def test_cmake_module_and_make_fragment_take_the_choice(tmp_path):
         % (REPO, ' '.join(ros1_prefixes()), tmp_path / 'export'))
     # An export dir as colcon writes it: full-text headers and the definitions.
     export = ExportDir(str(tmp_path / 'export'))
-    run_genmros('export', *prefix_arguments(ros1_prefixes()), '--package', 'std_msgs',
+    run_genmros('mros-v1-export', *prefix_arguments(ros1_prefixes()), '--package', 'std_msgs',
                 '--only', 'headers', '-o', export.include_dir)
     export.replace_packages({'std_msgs': installed_packages(ros1_prefixes())['std_msgs']},
                             installed_file(CMAKE_MODULE))
     build = tmp_path / 'build'
+    # The builds run this checkout's genmros, not the one installed on PATH.
+    environment = user_environment()
     subprocess.run(['cmake', '-S', str(project), '-B', str(build)],
-                   check=True, capture_output=True)
-    subprocess.run(['cmake', '--build', str(build)], check=True, capture_output=True)
+                   check=True, capture_output=True, env=environment)
+    subprocess.run(['cmake', '--build', str(build)], check=True, capture_output=True,
+                   env=environment)
     for target in ('generated', 'imported'):
         compact = _definition_in_header(
             str(build / 'mros_messages' / target / 'std_msgs' / 'Header.h'))
         assert compact == 'uint32 seq\ntime stamp\nstring frame_id\n', target
     bad = subprocess.run(['cmake', '-S', str(project), '-B', str(build), '-DBAD=ON'],
-                         capture_output=True, text=True)
+                         capture_output=True, text=True, env=environment)
     assert bad.returncode != 0
-    assert ("mros_generate_messages(): genmros export: error: argument --definition-text: "
+    assert ("mros_generate_messages(): genmros mros-v1-export: error: argument --definition-text: "
             "invalid choice: 'short' (choose from 'full', 'compact')") in ' '.join(
                 bad.stderr.split())
 
@@ -221,6 +227,6 @@ def test_cmake_module_and_make_fragment_take_the_choice(tmp_path):
         'MROS_MSG_TYPES := std_msgs/Header\nMROS_MSG_PATHS := %s\n'
         'MROS_MSG_DEFINITION_TEXT := compact\ninclude %s/cmake/genmros.mk\nall:\n\t@true\n'
         % (' '.join(ros1_prefixes()), REPO))
-    subprocess.run(['make', '-C', str(app)], check=True, capture_output=True)
+    subprocess.run(['make', '-C', str(app)], check=True, capture_output=True, env=environment)
     assert _definition_in_header(str(app / 'include' / 'std_msgs' / 'Header.h')) == \
         'uint32 seq\ntime stamp\nstring frame_id\n'

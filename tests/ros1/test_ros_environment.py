@@ -20,13 +20,13 @@ def _genmros_without_genmsg(*arguments):
 
 def test_help_needs_no_genmsg():
     result = _genmros_without_genmsg('--help')
-    assert result.returncode == 0 and 'genmros export' in result.stdout
-    result = _genmros_without_genmsg('export', '--help')
+    assert result.returncode == 0 and 'genmros mros-v1-export' in result.stdout
+    result = _genmros_without_genmsg('mros-v1-export', '--help')
     assert result.returncode == 0 and '--storage' in result.stdout
 
 
 def test_generating_without_genmsg_says_what_to_do():
-    for arguments in (['export', '--workspace', TEST_WS, '-o', '/tmp/unused'],
+    for arguments in (['mros-v1-export', '--workspace', TEST_WS, '-o', '/tmp/unused'],
                       ['generate', TEST_WS + '/src/mros_test/msg/PersonalData.msg',
                        '-p', 'mros_test', '-o', '/tmp/unused']):
         result = _genmros_without_genmsg(*arguments)

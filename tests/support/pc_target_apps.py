@@ -35,7 +35,7 @@ def build_app(mros_root, build_root, source, target='arm', types=('mros_test/Per
             os.symlink(origin, os.path.join(app, name))
     output = os.path.join(build_root, 'build')
     type_args = [argument for name in types for argument in ('--type', name)]
-    _mros_v1_pc(app, output, ['--mros-root', mros_root, '--workspace',
+    _mros_v1_pc(app, output, ['--mros-v1-root', mros_root, '--workspace',
                               os.path.join(TEST_WS, 'src'), '--target', target]
                 + type_args + list(header_flags))
     return os.path.join(output, 'test_app')
@@ -52,7 +52,8 @@ def build_sample(mros_root, app, output, *flags):
 def _mros_v1_pc(app_dir, output, flags):
     """genmros mros-v1-pc of this checkout; what it printed, or RuntimeError."""
     result = subprocess.run(
-        [sys.executable, '-m', 'colcon_mros', 'mros-v1-pc', app_dir, '-o', output, '-j2']
+        [sys.executable, '-m', 'colcon_mros', 'mros-v1-pc', app_dir, '-o', output, '-j2',
+         '--build-only']
         + list(flags), cwd=REPO, capture_output=True, text=True)
     if result.returncode != 0:
         raise RuntimeError('genmros mros-v1-pc failed:\n' + result.stdout[-3000:]

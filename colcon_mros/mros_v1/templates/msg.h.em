@@ -145,8 +145,9 @@ struct DataTypeId<@(msg.cpp_name)*> {
 
 @[if msg.compact_definition]@
 // Definition text, with the texts of nested types, without comments and
-// blank lines (genmros export --definition-text compact): it declares the
-// same fields and constants as gencpp's text, so the MD5 sum is the same.
+// blank lines (genmros mros-v1-export --definition-text compact): it
+// declares the same fields and constants as gencpp's text, so the MD5 sum
+// is the same.
 @[else]@
 // Full definition text, with the texts of nested types, as gencpp gives it.
 @[end if]@

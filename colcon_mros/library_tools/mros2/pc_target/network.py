@@ -13,7 +13,7 @@ machine's own network namespace are not reached.
 
 :class:`BoardNetwork` sets the arrangement up and takes it down (the host
 namespace is never touched); it writes where its ROS side is to a state
-file that ``genmros mros2-pc ros -- CMD`` (:func:`run_ros_side`) reads.
+file that ``genmros mros2-pc-ros -- CMD`` (:func:`run_ros_side`) reads.
 """
 
 import ipaddress
@@ -207,7 +207,7 @@ def run_board(program):
     ends or is stopped (Ctrl-C, SIGTERM); returns its exit status."""
     with BoardNetwork(program.board_address, program.domain_id) as network:
         print('genmros: the board runs at %s, the ROS side at %s (ROS_DOMAIN_ID=%d); from '
-              'another shell, ROS 2 commands reach it with: genmros mros2-pc ros -- ros2 topic '
+              'another shell, ROS 2 commands reach it with: genmros mros2-pc-ros -- ros2 topic '
               'list' % (network.board_address, network.ros_address, network.domain_id),
               flush=True)
         board = subprocess.Popen(network.board_command(program.command))

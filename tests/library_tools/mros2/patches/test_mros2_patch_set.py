@@ -46,7 +46,7 @@ def _differing(left, right):
 
 def test_apply_check_revert_on_a_checkout(tmp_path):
     checkout = _copy(tmp_path / 'mros2')
-    before = run_genmros('mros2-harden', str(checkout), '--check', check=False)
+    before = run_genmros('mros2-harden', '--mros2-root', str(checkout), '--check', check=False)
     assert before.returncode == 1
     assert [line.split(':')[0] for line in before.stdout.splitlines()] == [
         'not applied   one-writer-per-publisher', 'not applied   checked-receive',
@@ -57,7 +57,7 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
         'not applied   data-holds-its-fields',
         'not applied   data-frag-for-best-effort-readers',
         'not applied   reader-catches-up-at-once']
-    applied = run_genmros('mros2-harden', str(checkout))
+    applied = run_genmros('mros2-harden', '--mros2-root', str(checkout))
     assert applied.stdout == ('genmros: applied one-writer-per-publisher, checked-receive, '
                               'publish-keeps-a-copy, accept-fast-dds-3-discovery, '
                               'checked-acknack, full-participant-table-refuses, '
@@ -80,10 +80,10 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
                                 'src/messages/MessageTypes.cpp']}
     for part in LIBRARY_DIRS:
         assert _differing(os.path.join(MROS2_ROOT, part), str(checkout / part)) == changed[part]
-    assert run_genmros('mros2-harden', str(checkout), '--check').returncode == 0
-    assert run_genmros('mros2-harden', str(checkout)).stdout == \
+    assert run_genmros('mros2-harden', '--mros2-root', str(checkout), '--check').returncode == 0
+    assert run_genmros('mros2-harden', '--mros2-root', str(checkout)).stdout == \
         'genmros: nothing to do: the patches are in\n'
-    run_genmros('mros2-harden', str(checkout), '--revert')
+    run_genmros('mros2-harden', '--mros2-root', str(checkout), '--revert')
     for part in LIBRARY_DIRS:
         assert _differing(os.path.join(MROS2_ROOT, part), str(checkout / part)) == []
 
@@ -125,7 +125,7 @@ def test_as_it_is_one_publisher_sends_for_both_and_bad_samples_are_delivered(tmp
 
 def test_patched_each_publisher_has_its_topic_and_bad_samples_are_dropped(tmp_path, export):
     checkout = _copy(tmp_path / 'mros2')
-    run_genmros('mros2-harden', str(checkout))
+    run_genmros('mros2-harden', '--mros2-root', str(checkout))
     lines = _run_check(checkout, export, tmp_path, patched=True)
     assert _sent(lines) == [('rt/alpha', 'test_interface_files::msg::dds_::BasicTypes_'),
                             ('rt/beta', 'test_interface_files::msg::dds_::Strings_')]
@@ -146,5 +146,5 @@ def test_the_fit_check_reads_the_checkouts_publisher(tmp_path, export):
     assert as_it_is.returncode == 1
     assert ('error: %s:66: the firmware: its 2 publishers need a Publisher with a writer of its '
             'own' % (checkout / 'include' / 'mros2.h')) in as_it_is.stdout
-    run_genmros('mros2-harden', str(checkout))
+    run_genmros('mros2-harden', '--mros2-root', str(checkout))
     assert 'Every endpoint fits.' in run_genmros(*arguments).stdout

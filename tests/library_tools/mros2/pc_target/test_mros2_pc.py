@@ -248,7 +248,7 @@ def test_a_sample_over_the_receive_limit(apps, posix_root, tmp_path, typestore, 
 @pytest.mark.parametrize('uid', [None, 65534], ids=['as-root', 'as-nobody'])
 def test_the_command_runs_the_board_and_ros_commands_reach_it(posix_root, typestore, uid):
     """genmros mros2-pc as a user runs it (docs/mros2.md's example): the board on its
-    network, a ROS 2 command on the ROS side through `genmros mros2-pc ros --`, Ctrl-C, and
+    network, a ROS 2 command on the ROS side through `genmros mros2-pc-ros --`, Ctrl-C, and
     the host as it was."""
     if uid is not None and (os.geteuid() != 0 or shutil.which('setpriv') is None):
         pytest.skip('runs genmros as another uid: needs root and setpriv')
@@ -262,11 +262,11 @@ def test_the_command_runs_the_board_and_ros_commands_reach_it(posix_root, typest
             as_user = ['setpriv', '--reuid', str(uid), '--regid', str(uid), '--clear-groups']
         env = dict(mros2_pc.peer_environment(work), HOME=work, XDG_RUNTIME_DIR=work,
                    PYTHONPATH=REPO)
-        genmros = as_user + [sys.executable, '-m', 'colcon_mros', 'mros2-pc']
+        genmros = as_user + [sys.executable, '-m', 'colcon_mros']
         log_path = os.path.join(work, 'genmros.log')
         with open(log_path, 'w') as log:
             board = subprocess.Popen(
-                genmros + [app, '--rtps-config', config_of(posix_root), '--mros2-root',
+                genmros + ['mros2-pc', app, '--rtps-config', config_of(posix_root), '--mros2-root',
                            MROS2_ROOT, '--prefix', mros2_pc.WHEELS_VENV, '--target', 'native',
                            '--hardened', '-j2'],
                 stdout=log, stderr=subprocess.STDOUT, env=env)
@@ -278,10 +278,11 @@ def test_the_command_runs_the_board_and_ros_commands_reach_it(posix_root, typest
                 time.sleep(0.05)
             assert ('genmros: the board runs at 192.168.11.3, the ROS side at 192.168.11.2 '
                     '(ROS_DOMAIN_ID=0); from another shell, ROS 2 commands reach it with: '
-                    'genmros mros2-pc ros -- ros2 topic list') in open(log_path).read()
+                    'genmros mros2-pc-ros -- ros2 topic list') in open(log_path).read()
             texts = ['hello %d' % index for index in range(5)]
             peer = subprocess.run(
-                genmros + ['ros', '--', os.path.join(mros2_pc.WHEELS_VENV, 'bin', 'python'),
+                genmros + ['mros2-pc-ros', '--',
+                           os.path.join(mros2_pc.WHEELS_VENV, 'bin', 'python'),
                            mros2_pc.PEER_SCRIPT], input=json.dumps(echo_job(typestore, texts)),
                 capture_output=True, text=True, env=env, timeout=mros2_pc.EVENT_CAP)
             assert peer.returncode == 0, peer.stderr[-3000:]
@@ -291,7 +292,7 @@ def test_the_command_runs_the_board_and_ros_commands_reach_it(posix_root, typest
             check_echoes(report, typestore, texts)
             # A ROS-side command still running when the board stops is stopped, saying why.
             lingering = subprocess.Popen(
-                genmros + ['ros', '--', 'sh', '-c', 'echo started; exec sleep 600'],
+                genmros + ['mros2-pc-ros', '--', 'sh', '-c', 'echo started; exec sleep 600'],
                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
             assert lingering.stdout.readline() == 'started\n'
             board.send_signal(signal.SIGINT)
@@ -302,7 +303,7 @@ def test_the_command_runs_the_board_and_ros_commands_reach_it(posix_root, typest
             if board.poll() is None:
                 board.kill()
                 board.wait()
-        # The state file `genmros mros2-pc ros` reads goes with the board.
+        # The state file `genmros mros2-pc-ros` reads goes with the board.
         assert not [name for name in os.listdir(work) if name.startswith('genmros-mros2-pc')]
     assert mros2_pc.host_network() == before
 

@@ -46,12 +46,12 @@ def _touched_files():
 def test_apply_check_revert_on_a_checkout(checkout):
     names = [patch.name for patch in mros_v1_patches()]
     assert names and all(patch.description for patch in mros_v1_patches())
-    before = run_genmros('mros-v1-harden', str(checkout), '--check', check=False)
+    before = run_genmros('mros-v1-harden', '--mros-v1-root', str(checkout), '--check', check=False)
     assert before.returncode == 1
     assert before.stdout.splitlines() == [
         'not applied   %s: %s' % (patch.name, patch.description) for patch in mros_v1_patches()]
 
-    applied = run_genmros('mros-v1-harden', str(checkout))
+    applied = run_genmros('mros-v1-harden', '--mros-v1-root', str(checkout))
     assert applied.stdout == 'genmros: applied %s\n' % ', '.join(names)
     # Exactly the files the patches name changed, each containing its new lines.
     changed = sorted(os.path.join('mros-lib', path) for path in _same_as_original(checkout))
@@ -67,13 +67,14 @@ def test_apply_check_revert_on_a_checkout(checkout):
                               str(checkout / 'mros_ws' / 'string_pubsub')).diff_files
 
     times = {path: os.stat(checkout / path).st_mtime_ns for path in _touched_files()}
-    again = run_genmros('mros-v1-harden', str(checkout))
+    again = run_genmros('mros-v1-harden', '--mros-v1-root', str(checkout))
     assert again.stdout == 'genmros: nothing to do: the patches are in\n'
     assert times == {path: os.stat(checkout / path).st_mtime_ns for path in _touched_files()}
-    assert run_genmros('mros-v1-harden', str(checkout), '--check').stdout.splitlines() == [
+    checked = run_genmros('mros-v1-harden', '--mros-v1-root', str(checkout), '--check')
+    assert checked.stdout.splitlines() == [
         'applied       %s: %s' % (patch.name, patch.description) for patch in mros_v1_patches()]
 
-    reverted = run_genmros('mros-v1-harden', str(checkout), '--revert')
+    reverted = run_genmros('mros-v1-harden', '--mros-v1-root', str(checkout), '--revert')
     assert reverted.stdout == 'genmros: took out %s\n' % ', '.join(reversed(names))
     assert _same_as_original(checkout) == []
 
@@ -103,7 +104,7 @@ def test_a_checkout_that_differs_is_refused_and_left_as_it_is(checkout):
     changed = start + next(index for index, line in enumerate(expected) if line.strip())
     lines[changed - 1] = '/* changed by hand */\n'
     (checkout / path).write_text(''.join(lines))
-    result = run_genmros('mros-v1-harden', str(checkout), check=False)
+    result = run_genmros('mros-v1-harden', '--mros-v1-root', str(checkout), check=False)
     assert result.returncode == 1 and result.stdout == ''
     assert result.stderr == (
         'genmros: error: %s:%d: differs from what hunk #1 of patch %s expects from here on '
@@ -111,11 +112,12 @@ def test_a_checkout_that_differs_is_refused_and_left_as_it_is(checkout):
         % (checkout / path, start, patch.name))
     # The other patches, which would apply, were not applied either.
     assert _same_as_original(checkout) == [os.path.basename(path)]
-    assert run_genmros('mros-v1-harden', str(checkout), '--check', check=False).returncode == 1
+    assert run_genmros('mros-v1-harden', '--mros-v1-root', str(checkout), '--check',
+                       check=False).returncode == 1
 
 
 def test_not_a_checkout(tmp_path):
-    result = run_genmros('mros-v1-harden', str(tmp_path), check=False)
+    result = run_genmros('mros-v1-harden', '--mros-v1-root', str(tmp_path), check=False)
     assert result.returncode == 1
     assert result.stderr == 'genmros: error: %s: no mros-lib/ here: not an mROS v1 checkout\n' \
         % tmp_path

@@ -38,9 +38,10 @@ def _full_text_size(type_name):
 def test_a_frame_over_the_largest_pool_is_refused_before_the_build(tmp_path):
     options = tmp_path / 'bounds.options'
     options.write_text('std_msgs/String.data max_size:2000\n')
-    result = run_genmros('mros-v1-pc', CUSTOM_PUBSUB, '-o', str(tmp_path / 'build'), '--type',
-                         'std_msgs/String', '--storage', 'bounded', '--options', str(options),
-                         check=False)
+    result = run_genmros('mros-v1-pc', CUSTOM_PUBSUB, '--build-only', '-o',
+                         str(tmp_path / 'build'),
+                         '--type', 'std_msgs/String', '--storage', 'bounded',
+                         '--options', str(options), check=False)
     assert result.returncode == 1
     frame = 4 + 2000  # the string's length, then its bytes
     lines = []
@@ -143,7 +144,7 @@ def test_ros_cpp_refuses_to_compile_where_no_genmros_check_ran(tmp_path, compile
     # aggregate it includes stops the compile, also with a compiler that has
     # no __has_include (gcc-arm-none-eabi 4.9, which mROS v1's README lists).
     include = str(tmp_path / 'include')
-    run_genmros('export', '--type', 'sensor_msgs/JointState', '-o', include,
+    run_genmros('mros-v1-export', '--type', 'sensor_msgs/JointState', '-o', include,
                 *prefix_arguments(ros1_prefixes()))
     source = tmp_path / 'ros_like.cpp'
     # ros.cpp's first two lines.

@@ -58,7 +58,7 @@ def test_the_hardened_build_leaves_the_checkout_as_it_is_and_declares_strtol(har
     assert not STRTOL_WARNING.search(output), output
     _, unpatched_output = as_it_is
     assert STRTOL_WARNING.search(unpatched_output), unpatched_output
-    check = run_genmros('mros-v1-harden', MROS_V1_ROOT, '--check', check=False)
+    check = run_genmros('mros-v1-harden', '--mros-v1-root', MROS_V1_ROOT, '--check', check=False)
     assert check.returncode == 1 and check.stdout
     assert all(line.startswith('not applied') for line in check.stdout.splitlines())
 

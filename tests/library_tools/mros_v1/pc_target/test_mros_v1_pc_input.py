@@ -13,7 +13,7 @@ from support.user_checkouts import MROS_V1_ROOT
 
 
 def _error_line(*arguments):
-    result = run_genmros('mros-v1-pc', *arguments, check=False)
+    result = run_genmros('mros-v1-pc', '--build-only', *arguments, check=False)
     assert result.returncode == 1, result.stdout + result.stderr
     # The compiler's own lines (the library's warnings) may come before it.
     lines = [line for line in result.stderr.splitlines() if line.startswith('genmros:')]
@@ -41,11 +41,11 @@ def test_a_directory_without_app_cfg_is_not_an_app(tmp_path):
     assert _error_line(str(tmp_path)) == '%s: no app.cfg: not an mROS v1 app' % tmp_path
 
 
-def test_an_app_outside_a_checkout_needs_mros_root(tmp_path):
+def test_an_app_outside_a_checkout_needs_mros_v1_root(tmp_path):
     app = _app(tmp_path, '')
     assert _error_line(app) == ('%s: no mROS v1 checkout here (no mros-lib/Makefile.m); give '
-                                '--mros-root' % os.path.normpath(os.path.join(app, '..', '..')))
-    assert _error_line(app, '--mros-root', str(tmp_path)) == (
+                                '--mros-v1-root' % os.path.normpath(os.path.join(app, '..', '..')))
+    assert _error_line(app, '--mros-v1-root', str(tmp_path)) == (
         '%s: no mROS v1 checkout here (no mros-lib/Makefile.m)' % tmp_path)
 
 
@@ -68,7 +68,7 @@ def test_a_task_the_app_does_not_define(tmp_path):
                makefile='APPLDIR = app %s %s/os/target/os_asp\n'
                         'APPL_COBJS = mros_sys_config.o mros_usr_config.o mros_os_config.o\n'
                         % (sample_config, sample_config))
-    assert _error_line(app, '--mros-root', MROS_V1_ROOT, '--type', 'std_msgs/String') == (
+    assert _error_line(app, '--mros-v1-root', MROS_V1_ROOT, '--type', 'std_msgs/String') == (
         "%s:4: USR_TASK1 runs usr_task1(), which no source of the app defines (the linker "
         "found no definition)" % os.path.join(app, 'app.cfg'))
 
@@ -76,6 +76,6 @@ def test_a_task_the_app_does_not_define(tmp_path):
 @pytest.mark.needs_mros_v1
 def test_an_unsupported_static_api(tmp_path):
     app = _app(tmp_path, '\nCRE_MBX(BOX, { TA_NULL, 0, NULL });\n')
-    problem = _error_line(app, '--mros-root', MROS_V1_ROOT)
+    problem = _error_line(app, '--mros-v1-root', MROS_V1_ROOT)
     assert problem.startswith('%s:2: CRE_MBX is not supported by the PC target'
                               % os.path.join(app, 'app.cfg'))
