@@ -20,7 +20,7 @@ import pytest
 from genpy.dynamic import generate_dynamic
 
 from support import cpp_harness
-from fixtures.build_integration.tools import user_environment
+from support.build_integration import user_environment
 from support.checkout import REPO, TEST_WS, run_genmros
 from support.debian_messages import DEBIAN_MESSAGE_PACKAGES
 
