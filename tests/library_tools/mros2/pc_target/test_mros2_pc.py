@@ -296,7 +296,11 @@ def test_the_command_runs_the_board_and_ros_commands_reach_it(posix_root, typest
                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
             assert lingering.stdout.readline() == 'started\n'
             board.send_signal(signal.SIGINT)
-            assert board.wait(timeout=mros2_pc.EVENT_CAP) == 0
+            try:
+                assert board.wait(timeout=mros2_pc.EVENT_CAP) == 0
+            except subprocess.TimeoutExpired:
+                pytest.fail('the board did not stop on SIGINT; its log ends:\n%s'
+                            % open(log_path).read()[-3000:])
             assert lingering.wait(timeout=mros2_pc.EVENT_CAP) == 128 + signal.SIGTERM
             assert lingering.stderr.read() == 'genmros: the board stopped: stopping sh\n'
         finally:
