@@ -41,7 +41,7 @@ from colcon_mros.core.storage import HeapStorage
 from colcon_mros.errors import GenmrosError
 from colcon_mros.export.mros2_export import render_types
 from colcon_mros.mros2 import render
-from colcon_mros.mros2.cpp import type_file_stem
+from colcon_mros.mros2.cpp import header_path
 from colcon_mros.ros2.environment import require_rosidl
 from colcon_mros.ros2.interfaces import Package, interface_of_file
 from colcon_mros.ros2.model import ModelBuilder, UncarriableType
@@ -128,7 +128,7 @@ def generate(arguments):
             models[kind].append(builder.message(full_name) if kind == 'msg'
                                 else builder.service(full_name))
         except UncarriableType as error:
-            uncarried.append('%s/%s.hpp' % (os.path.dirname(full_name), type_file_stem(stem)))
+            uncarried.append(header_path(name, kind, stem))
             notices.append('%s: skipped %s: %s' % (PROGRAM, full_name, _why_uncarriable(
                 full_name, error)))
     # The support headers are not the package's: the generator's install

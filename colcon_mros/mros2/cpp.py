@@ -141,9 +141,9 @@ class CppMessageName:
         # What embeddedRTPS' type name field needs: the name and its terminating NUL.
         self.dds_type_name_size = len(self.dds_type_name) + 1
         # A service's halves live in the service's header.
-        stem = type_file_stem(message.name.rpartition('_')[0] if message.kind == 'srv'
-                              else message.name)
-        self.header = '%s/%s/%s.hpp' % (message.package, message.kind, stem)
+        self.header = header_path(message.package, message.kind,
+                                  message.name.rpartition('_')[0] if message.kind == 'srv'
+                                  else message.name)
 
 
 class CppMessage(CppMessageName):
@@ -169,7 +169,7 @@ class CppService:
         self.kind = 'srv'
         self.name = service.name
         self.cpp_name = '%s::srv::%s' % (service.package, service.name)
-        self.header = '%s/srv/%s.hpp' % (service.package, type_file_stem(service.name))
+        self.header = header_path(service.package, 'srv', service.name)
         self.guard = header_guard(self.header)
         self.source = _source(service)
         self.request = CppMessage(service.request)
@@ -177,6 +177,12 @@ class CppService:
         self.summary = 'mros2 service %s: %s and %s.' % (self.cpp_name, self.request.cpp_name,
                                                          self.response.cpp_name)
         self.includes = sorted(set(self.request.includes + self.response.includes))
+
+
+def header_path(package, kind, name):
+    """The header of a message or service below an include root, by rosidl's
+    name rule: ('pkg', 'msg', 'TypeName') -> 'pkg/msg/type_name.hpp'."""
+    return '%s/%s/%s.hpp' % (package, kind, type_file_stem(name))
 
 
 def header_guard(header):
