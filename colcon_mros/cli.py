@@ -688,7 +688,7 @@ def _mros2_fit(options):
 
 
 def _mros2_peer_profile(options):
-    from colcon_mros.core.output import write_files
+    from colcon_mros.core.output import write_file
     from colcon_mros.mros2.render import peer_profile
     from colcon_mros.mros2.rules import discovery_problem
     problem = discovery_problem('--peer-max-message', options.peer_max_message)
@@ -698,8 +698,7 @@ def _mros2_peer_profile(options):
     if options.output is None:
         sys.stdout.write(profile)
         return 0
-    directory, name = os.path.split(os.path.abspath(options.output))
-    write_files(directory, {name: profile})
+    write_file(options.output, profile)
     print('genmros: wrote %s' % options.output)
     return 0
 

@@ -154,6 +154,12 @@ def write_files(root, files):
     return list(staged)
 
 
+def write_file(path, text):
+    """Write one file as write_files() does; returns whether it changed."""
+    directory, name = os.path.split(os.path.abspath(path))
+    return bool(write_files(directory, {name: text}))
+
+
 def is_generated(path):
     try:
         with open(path, encoding='utf-8', errors='replace') as stream:

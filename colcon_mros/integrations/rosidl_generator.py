@@ -36,7 +36,7 @@ import os
 import sys
 
 from colcon_mros.core import render as core_render
-from colcon_mros.core.output import write_files
+from colcon_mros.core.output import write_file, write_files
 from colcon_mros.core.storage import HeapStorage
 from colcon_mros.errors import GenmrosError
 from colcon_mros.export.mros2_export import render_types
@@ -180,7 +180,7 @@ def write_dependency_file(path, target):
     """The depfile at path: target depends on generator_files()."""
     text = '%s: %s\n' % (_make_path(target), ' \\\n  '.join(
         _make_path(name) for name in generator_files()))
-    write_files(os.path.dirname(os.path.abspath(path)), {os.path.basename(path): text})
+    write_file(path, text)
 
 
 def main(argv=None):
@@ -204,8 +204,7 @@ def main(argv=None):
         require_rosidl()
         _, headers, notices = generate(_read_arguments(options.generator_arguments_file))
         if options.header_list:
-            directory, name = os.path.split(os.path.abspath(options.header_list))
-            write_files(directory, {name: ''.join(header + '\n' for header in headers)})
+            write_file(options.header_list, ''.join(header + '\n' for header in headers))
         if options.dependency_file:
             write_dependency_file(options.dependency_file, options.dependency_target)
     except GenmrosError as error:
