@@ -51,7 +51,7 @@ def jazzy_build(tmp_path_factory):
     for package in PACKAGES:
         builds[package] = build_interface_package(
             os.path.join(TEST_WS_ROS2, 'src', package), root / package, VENV,
-            prefixes=[install for _, install in builds.values()])
+            prefixes=[built.install for built in builds.values()])
     return builds
 
 
@@ -61,8 +61,8 @@ def _files(root):
 
 
 def test_the_build_used_jazzys_rosidl(jazzy_build):
-    for build, _ in jazzy_build.values():
-        with open(os.path.join(build, 'CMakeCache.txt')) as stream:
+    for built in jazzy_build.values():
+        with open(os.path.join(built.build, 'CMakeCache.txt')) as stream:
             assert 'rosidl_cmake_DIR:PATH=%s' % os.path.join(
                 VENV, 'share', 'rosidl_cmake', 'cmake') in stream.read()
     assert installed_version(VENV, 'ros-rosidl-pycommon').startswith('4.6.')
@@ -73,8 +73,8 @@ def test_its_headers_are_those_debians_rosidl_gives(jazzy_build, tmp_path):
     generator's CMake package's, not an interface package's)."""
     run_genmros('mros2-export', '--workspace', TEST_WS_ROS2, '-o', str(tmp_path))
     compared = []
-    for package, (_, install) in jazzy_build.items():
-        installed = mros2_include(install, package)
+    for package, built in jazzy_build.items():
+        installed = mros2_include(built.install, package)
         headers = _files(installed)
         _, differing, errors = filecmp.cmpfiles(installed, str(tmp_path), headers, shallow=False)
         assert (differing, errors) == ([], []), package

@@ -17,17 +17,18 @@ import subprocess
 
 import pytest
 
-from support.checkout import REPO
-from support.checkout_install import checkout_install
+from support.file_trees import write_tree
+from support.rosidl_wheels import build_interface_package, require_venv
 from testing.ros_paths import KILTED_WHEELS
 
 pytestmark = pytest.mark.slow
 
-WHEELS = KILTED_WHEELS
 # What each rosidl offers an interface package for C++: Debian 12 has
 # rosidl_generator_cpp alone; a ROS 2 distribution and its wheels have
 # rosidl_default_generators.
 ROSIDL_GENERATORS = {'debian': 'rosidl_generator_cpp', 'wheels': 'rosidl_default_generators'}
+# Where each rosidl is: Debian's in /usr, the wheels' in their venv.
+VENVS = {'debian': None, 'wheels': KILTED_WHEELS}
 INTERFACE_CMAKE = '''cmake_minimum_required(VERSION 3.16)
 project(spot_msgs)
 find_package(ament_cmake REQUIRED)
@@ -98,65 +99,41 @@ NODE_TARGETS = ('node_by_targets', 'node_by_ament')
 FIRMWARE_TARGETS = ('firmware_by_name', 'firmware_by_variable')
 
 
-def _run(argv, env, cwd=None):
-    result = subprocess.run(argv, env=env, cwd=cwd, stdout=subprocess.PIPE,
-                            stderr=subprocess.STDOUT, text=True)
+def _run(argv, env):
+    result = subprocess.run(argv, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                            text=True)
     assert result.returncode == 0, ' '.join(argv) + '\n' + result.stdout[-6000:]
     return result.stdout
-
-
-def _environment(rosidl):
-    """The build's environment and CMake arguments: Debian's ROS 2 packages
-    in /usr, or the wheels' venv first."""
-    env = {key: value for key, value in os.environ.items()
-           if key not in ('AMENT_PREFIX_PATH', 'CMAKE_PREFIX_PATH', 'PYTHONPATH')}
-    env['PATH'] = '/usr/bin:/bin'
-    if rosidl == 'debian':
-        return env, [], '/usr/bin/python3'
-    if not os.path.isfile(os.path.join(WHEELS, 'bin', 'python')):
-        pytest.fail('no %s: run scripts/setup.sh --tests' % WHEELS)
-    env.update(PATH='%s:/usr/bin:/bin' % os.path.join(WHEELS, 'bin'), AMENT_PREFIX_PATH=WHEELS)
-    python = os.path.join(WHEELS, 'bin', 'python')
-    return env, [WHEELS], python
 
 
 class Build:
     """The interface package and its consumer, built and installed."""
 
     def __init__(self, root, rosidl, mros2_first):
-        env, prefixes, python = _environment(rosidl)
-        generator = os.path.join(root, 'rosidl_generator_mros2')
-        with open(generator, 'w') as stream:
-            stream.write('#!/bin/sh\nPYTHONPATH=%s exec %s -m colcon_mros.integrations.'
-                         'rosidl_generator "$@"\n' % (REPO, python))
-        os.chmod(generator, 0o755)
+        venv = VENVS[rosidl]
+        if venv is not None:
+            require_venv(venv)
         finds = ['rosidl_generator_mros2', ROSIDL_GENERATORS[rosidl]]
-        source = os.path.join(root, 'spot_msgs')
-        self.sources = {
+        self.source = os.path.join(root, 'spot_msgs')
+        write_tree(self.source, {
             'CMakeLists.txt': INTERFACE_CMAKE % tuple(finds if mros2_first else finds[::-1]),
             'package.xml': INTERFACE_PACKAGE,
             'msg/Spot.msg': 'float64 x\nfloat64 y\n',
             'msg/Wide.idl': WIDE_IDL,
             'msg/Marks.msg': MARKS_MSG,
-        }
-        for relative, text in self.sources.items():
-            os.makedirs(os.path.dirname(os.path.join(source, relative)), exist_ok=True)
-            with open(os.path.join(source, relative), 'w') as stream:
-                stream.write(text)
-        self.source = source
-        self.install = os.path.join(root, 'install')
-        build = os.path.join(root, 'build')
-        extension_dir = os.path.join(checkout_install().prefix, 'share',
-                                     'rosidl_generator_mros2', 'cmake')
-        _run(['cmake', '-S', source, '-B', build,
-              '-DCMAKE_PREFIX_PATH=%s' % ';'.join(prefixes),
-              '-DPython3_EXECUTABLE=%s' % python,
-              '-Drosidl_generator_mros2_DIR=%s' % extension_dir,
-              '-Drosidl_generator_mros2_BIN=%s' % generator,
-              '-DCMAKE_INSTALL_PREFIX=%s' % self.install], env)
-        self.interface_log = _run(['cmake', '--build', build, '-j2'], env)
-        _run(['cmake', '--install', build], env)
+        })
+        interface = build_interface_package(self.source, os.path.join(root, 'interface'), venv)
+        self.install, self.interface_log = interface.install, interface.log
 
+        # The consumer sees what a user of that rosidl sees: the venv's first.
+        env = {key: value for key, value in os.environ.items()
+               if key not in ('AMENT_PREFIX_PATH', 'CMAKE_PREFIX_PATH', 'PYTHONPATH')}
+        env['PATH'] = '/usr/bin:/bin'
+        prefixes = [self.install]
+        if venv is not None:
+            env.update(PATH='%s:/usr/bin:/bin' % os.path.join(venv, 'bin'),
+                       AMENT_PREFIX_PATH=venv)
+            prefixes.insert(0, venv)
         consumer = os.path.join(root, 'spot_consumer')
         os.makedirs(consumer)
         for name, text in (('CMakeLists.txt', CONSUMER_CMAKE), ('node.cpp', NODE_CPP),
@@ -166,7 +143,7 @@ class Build:
         self.consumer_build = os.path.join(root, 'consumer_build')
         self.consumer_configure = _run(
             ['cmake', '-S', consumer, '-B', self.consumer_build,
-             '-DCMAKE_PREFIX_PATH=%s' % ';'.join(prefixes + [self.install]),
+             '-DCMAKE_PREFIX_PATH=%s' % ';'.join(prefixes),
              '-DCMAKE_EXPORT_COMPILE_COMMANDS=ON'], env)
         _run(['cmake', '--build', self.consumer_build, '-j2'], env)
 

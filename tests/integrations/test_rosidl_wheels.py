@@ -33,7 +33,7 @@ def wheel_build(tmp_path_factory):
 
 
 def test_the_build_used_the_wheels_rosidl(wheel_build):
-    build, _ = wheel_build
+    build = wheel_build.build
     with open(os.path.join(build, 'CMakeCache.txt')) as stream:
         cache = stream.read()
     assert 'rosidl_cmake_DIR:PATH=%s' % os.path.join(VENV, 'share', 'rosidl_cmake', 'cmake') \
@@ -42,7 +42,7 @@ def test_the_build_used_the_wheels_rosidl(wheel_build):
 
 
 def test_its_header_is_the_one_debians_rosidl_gives(wheel_build, tmp_path):
-    _, install = wheel_build
+    install = wheel_build.install
     run_genmros('mros2-export', '--workspace', os.path.join(REPO, 'test_ws_ros2'),
                 '--type', 'mros2_base_msgs/msg/Stamp', '-o', str(tmp_path))
     with open(os.path.join(mros2_include(install, 'mros2_base_msgs'), STAMP)) as wheels, \

@@ -6,6 +6,7 @@ CMake package and support headers of its install
 (support/checkout_install.py), and the checkout's entry point run by the
 venv's Python."""
 
+import collections
 import os
 import subprocess
 
@@ -37,38 +38,47 @@ def mros2_include(install, package):
     return os.path.join(str(install), 'include', package, 'mros2')
 
 
+# An interface package built: its build and install dirs, and what its
+# build step printed (the generator's notices among it).
+InterfaceBuild = collections.namedtuple('InterfaceBuild', 'build install log')
+
+
 def _run(argv, env):
     result = subprocess.run(argv, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                             text=True)
     assert result.returncode == 0, ' '.join(argv) + '\n' + result.stdout[-6000:]
+    return result.stdout
 
 
 def build_interface_package(source, root, venv, prefixes=()):
     """source configured, built and installed with CMake in root (root/build,
     root/install), the venv first on CMAKE_PREFIX_PATH and AMENT_PREFIX_PATH
-    and prefixes after it (the installs of the packages it depends on, a
-    prefix with the generator's ament index entry); (build, install)."""
+    (venv None: Debian's rosidl, in /usr) and prefixes after it (the
+    installs of the packages it depends on, a prefix with the generator's
+    ament index entry); an InterfaceBuild."""
+    python = '/usr/bin/python3' if venv is None else venv_python(venv)
     generator = os.path.join(str(root), 'rosidl_generator_mros2')
     os.makedirs(str(root), exist_ok=True)
     with open(generator, 'w') as stream:
         stream.write('#!/bin/sh\nPYTHONPATH=%s exec %s -m '
-                     'colcon_mros.integrations.rosidl_generator "$@"\n'
-                     % (REPO, venv_python(venv)))
+                     'colcon_mros.integrations.rosidl_generator "$@"\n' % (REPO, python))
     os.chmod(generator, 0o755)
-    search_path = [venv] + [str(prefix) for prefix in prefixes]
+    search_path = ([] if venv is None else [venv]) + [str(prefix) for prefix in prefixes]
     env = {key: value for key, value in os.environ.items()
            if key not in ('AMENT_PREFIX_PATH', 'CMAKE_PREFIX_PATH', 'PYTHONPATH')}
-    env.update(PATH='%s:/usr/bin:/bin' % os.path.join(venv, 'bin'),
-               AMENT_PREFIX_PATH=':'.join(search_path))
+    env['PATH'] = '/usr/bin:/bin' if venv is None else '%s:/usr/bin:/bin' % os.path.join(
+        venv, 'bin')
+    if search_path:
+        env['AMENT_PREFIX_PATH'] = ':'.join(search_path)
     extension_dir = os.path.join(checkout_install().prefix, 'share', 'rosidl_generator_mros2',
                                  'cmake')
     build, install = os.path.join(str(root), 'build'), os.path.join(str(root), 'install')
     _run(['cmake', '-S', str(source), '-B', build,
           '-DCMAKE_PREFIX_PATH=%s' % ';'.join(search_path),
-          '-DPython3_EXECUTABLE=%s' % venv_python(venv),
+          '-DPython3_EXECUTABLE=%s' % python,
           '-Drosidl_generator_mros2_DIR=%s' % extension_dir,
           '-Drosidl_generator_mros2_BIN=%s' % generator, '-DCMAKE_INSTALL_PREFIX=%s' % install],
          env)
-    _run(['cmake', '--build', build, '-j2'], env)
+    log = _run(['cmake', '--build', build, '-j2'], env)
     _run(['cmake', '--install', build], env)
-    return build, install
+    return InterfaceBuild(build, install, log)
