@@ -43,14 +43,19 @@ REPLY_WAIT = 30.0
 
 
 def plain_job(publish=(), subscribe=(), expect=None, period=PERIOD, settle=SETTLE,
-              reply_wait=REPLY_WAIT, match_wait=EVENT_CAP):
+              reply_wait=REPLY_WAIT, match_wait=EVENT_CAP, qos=None):
     """The plain node's job: publish, [(topic, type, [serialized samples])]; subscribe,
     [(topic, type)]; expect, {topic: count} (its wait for replies ends once they came);
-    match_wait, its cap on the wait for matching."""
+    match_wait, its cap on the wait for matching; qos, {topic: the plain node's QoS name}
+    (best_effort where a topic is not named)."""
+    qos = qos or {}
     return {'publish': [{'topic': topic, 'type': type_name,
+                         'qos': qos.get(topic, 'best_effort'),
                          'samples': [sample.hex() for sample in samples]}
                         for topic, type_name, samples in publish],
-            'subscribe': [{'topic': topic, 'type': type_name} for topic, type_name in subscribe],
+            'subscribe': [{'topic': topic, 'type': type_name,
+                           'qos': qos.get(topic, 'best_effort')}
+                          for topic, type_name in subscribe],
             'expect': dict(expect or {}), 'period': period, 'settle': settle,
             'reply_wait': reply_wait, 'match_wait': match_wait}
 

@@ -3,20 +3,22 @@
 ROS side of a genmros mros2-pc board (or of its control, testing/mros2_pc_control.py), for
 the tests, the main job and the bench (testing/mros2_pc.py runs it in the ROS 2 wheels' venv).
 
-It makes one publisher and one subscription per topic, best-effort as mros2's endpoints are,
-and waits through the graph API until every one of them sees the other side
-(``get_subscription_count()``, ``count_publishers()``); then waits ``settle`` seconds more;
-then publishes each sample once, ``period`` seconds apart (one sample of each topic in turn);
-then waits up to ``reply_wait`` seconds for what comes back, ending that wait early once each
-topic of ``expect`` has taken its count. Nothing is sent again: a sample lost is lost.
+It makes one publisher and one subscription per topic, each with its QoS: best-effort as
+mros2's endpoints are unless told (``qos``: ``best_effort``; ``default``, rclpy's default QoS,
+reliable and keeping the last 10; ``keep_all``, reliable and keeping all), and waits through
+the graph API until every one of them sees the other side (``get_subscription_count()``,
+``count_publishers()``); then waits ``settle`` seconds more; then publishes each sample once,
+``period`` seconds apart (one sample of each topic in turn); then waits up to ``reply_wait``
+seconds for what comes back, ending that wait early once each topic of ``expect`` has taken
+its count. Nothing is sent again: a sample lost is lost.
 
-stdin: JSON {"publish": [{"topic", "type" (pkg/msg/Type), "samples": [hex of serialized
-messages]}], "subscribe": [{"topic", "type"}], "expect": {topic: count}, "period",
+stdin: JSON {"publish": [{"topic", "type" (pkg/msg/Type), "qos", "samples": [hex of serialized
+messages]}], "subscribe": [{"topic", "type", "qos"}], "expect": {topic: count}, "period",
 "settle", "reply_wait", "match_wait": seconds}. Writes "peer ready" to stderr once its
 endpoints exist, and "peer matched" once the graph shows them matched. stdout: JSON
 {"received": {topic: [hex of each sample as it came]}, "sent": count, "matched": whether the
-graph showed every endpoint matched, "matched_after": seconds from the node's start until
-it did}. SIGTERM ends any wait, and it reports.
+graph showed every endpoint matched, "matched_after": seconds from the node's start until it
+did}. SIGTERM ends any wait, and it reports.
 """
 
 import importlib
@@ -26,12 +28,18 @@ import sys
 import time
 
 import rclpy
-from rclpy.qos import QoSProfile, ReliabilityPolicy
+from rclpy.qos import HistoryPolicy, QoSProfile, ReliabilityPolicy, qos_profile_default
 from rclpy.signals import SignalHandlerOptions
 
 
-# mros2's endpoints are best-effort.
-BEST_EFFORT = QoSProfile(depth=100, reliability=ReliabilityPolicy.BEST_EFFORT)
+QOS = {
+    # mros2's endpoints as they are.
+    'best_effort': QoSProfile(depth=100, reliability=ReliabilityPolicy.BEST_EFFORT),
+    # What a node gets that names a depth alone, as most do.
+    'default': qos_profile_default,
+    'keep_all': QoSProfile(history=HistoryPolicy.KEEP_ALL,
+                           reliability=ReliabilityPolicy.RELIABLE),
+}
 
 
 def message_class(type_name):
@@ -51,9 +59,9 @@ class PlainNode:
             self.node.create_subscription(
                 message_class(entry['type']), entry['topic'],
                 lambda raw, topic=entry['topic']: self.received[topic].append(bytes(raw).hex()),
-                BEST_EFFORT, raw=True)
+                QOS[entry['qos']], raw=True)
         self.publishers = [self.node.create_publisher(message_class(entry['type']),
-                                                      entry['topic'], BEST_EFFORT)
+                                                      entry['topic'], QOS[entry['qos']])
                            for entry in job['publish']]
 
     def spin_until(self, deadline, done=lambda: False):

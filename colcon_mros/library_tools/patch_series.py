@@ -12,7 +12,9 @@ user's checkout is written, file by file and each one atomically, only once
 the whole series has gone through on the copy; a refusal names the patch,
 the file and the hunk that does not apply, and leaves the checkout as it
 was. A patch whose reverse applies (a reverse dry run) is already in and is
-not applied twice. Taking a series out goes the same way, in reverse order.
+not applied twice: which are in is found from the last patch back, each one
+found in taken out of the copy before the one before it is tried. Taking a
+series out goes the same way, in reverse order.
 """
 
 import dataclasses
@@ -227,21 +229,29 @@ class _Copy:
 
 
 def _go_through(copy, patches, revert):
-    """[(patch, was it in)] for patches in series order, each put in (or,
-    with revert, taken out in reverse order) on the copy where it is not
-    there yet; a GenmrosError for the first that neither way applies."""
+    """[(patch, was it in)] for patches in series order, leaving the copy with
+    every patch in (with revert, every patch out); a GenmrosError for the first
+    that does not apply.
+
+    Which are in is found from the last back: one whose reverse applies is in,
+    and is taken out of the copy, so that each patch before it is tried on the
+    library as that patch left it (a later patch may change lines an earlier
+    one's hunks hold as context). Then every patch goes in, in series order,
+    which checks that those not in apply, and with revert all go out again."""
     states = []
-    for patch in reversed(patches) if revert else patches:
+    for patch in reversed(patches):
         is_in = copy.is_in(patch)
-        if is_in == revert:
-            refusal = copy.apply(patch, reverse=revert)
-        else:
-            # Neither to do nor undone: it must apply where it is not in.
-            refusal = None if is_in else copy.apply(patch, dry_run=True)
+        if is_in:
+            copy.apply(patch, reverse=True)
+        states.append((patch, is_in))
+    for patch in patches:
+        refusal = copy.apply(patch)
         if refusal is not None:
             raise refusal
-        states.append((patch, is_in))
-    return list(reversed(states)) if revert else states
+    if revert:
+        for patch in reversed(patches):
+            copy.apply(patch, reverse=True)
+    return list(reversed(states))
 
 
 def patch_states(root, patches):

@@ -3,7 +3,8 @@
 // StatefulReader.tpp and WriterProxy.h), as it is or with genmros' patches:
 // one reader, matched with one remote writer, whose network driver records
 // the ACKNACKs it is given. Each line of stdin is a step:
-//   data SN                     a sample of the writer, to newChange
+//   data SN [SIZE]              a sample of the writer (4 bytes unless SIZE),
+//                               to newChange
 //   heartbeat FIRST LAST COUNT  a HEARTBEAT of the writer, to onNewHeartbeat
 // The reader prints "took SN" for each sample it delivers and "asks SN ..."
 // (the sequence numbers an ACKNACK requests, none for an acknowledgement
@@ -82,17 +83,21 @@ int main() {
   rtps::Guid_t writer{remote, writer_id};
   reader.addNewMatchedWriter(rtps::WriterProxy(writer, rtps::LocatorIPv4()));
 
-  const uint8_t sample[4] = {0, 1, 0, 0};
+  // A sample's encapsulation (CDR, little-endian), then zeros up to its size.
+  std::vector<uint8_t> sample;
   std::string line;
   while (std::getline(std::cin, line)) {
     std::istringstream step(line);
     std::string kind;
     step >> kind;
     if (kind == "data") {
-      uint32_t sn;
+      uint32_t sn, size;
       step >> sn;
+      if (!(step >> size) || size < 4) size = 4;
+      sample.assign(size, 0);
+      sample[1] = 1;
       rtps::ReaderCacheChange change(rtps::ChangeKind_t::ALIVE, writer, rtps::SequenceNumber_t{0, sn},
-                                     sample, sizeof sample);
+                                     sample.data(), static_cast<rtps::DataSize_t>(size));
       reader.newChange(change);
     } else if (kind == "heartbeat") {
       uint32_t first, last;

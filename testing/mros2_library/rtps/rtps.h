@@ -32,6 +32,7 @@ const uint8_t NUM_READERS_PER_PARTICIPANT = 16;
 const uint8_t NUM_STATELESS_WRITERS = 16;
 const uint8_t NUM_STATELESS_READERS = 16;
 const int THREAD_POOL_READER_STACKSIZE = 8192;
+const uint8_t HISTORY_SIZE_STATEFUL = 10;
 }  // namespace Config
 
 struct CacheChange {
@@ -76,6 +77,13 @@ class Writer {
   }
   std::string topic_;
   std::string type_name_;
+};
+
+// A reliable writer (the patch reliable-where-asked sets how many samples it keeps).
+class StatefulWriter : public Writer {
+ public:
+  using Writer::Writer;
+  bool keepLast(uint16_t depth, uint32_t) { return depth != 0 && depth <= Config::HISTORY_SIZE_STATEFUL; }
 };
 
 class ReaderCacheChange {
@@ -126,8 +134,9 @@ class Domain {
  public:
   bool completeInit() { return true; }
   Participant* createParticipant() { return &participant_; }
-  Writer* createWriter(Participant&, const char* topic, const char* type_name, bool) {
-    writers_.push_back(new Writer(topic, type_name));
+  Writer* createWriter(Participant&, const char* topic, const char* type_name, bool reliable) {
+    writers_.push_back(reliable ? new StatefulWriter(topic, type_name)
+                                : new Writer(topic, type_name));
     return writers_.back();
   }
   Reader* createReader(Participant&, const char*, const char*, bool) {

@@ -57,7 +57,11 @@ STEPS = (('library', 'mros2 of %(root)s and the PC target\'s stand-ins'),
          ('program', 'link %(program)s'))
 _SOURCE = re.compile(r'\$\{PROJECT_SOURCE_DIR\}/([^\s)]+)')
 _ENDPOINT = re.compile(r'\bcreate_(publisher|subscription)\s*<\s*([A-Za-z_][\w:]*)\s*>\s*'
-                       r'\(\s*"([^"]*)"')
+                       r'\(\s*"([^"]*)"\s*(?:,\s*((?:mros2::)?QoS\s*\([^()]*\)'
+                       r'(?:\s*\.\s*\w+\s*\([^()]*\))*))?')
+# A QoS as the patch reliable-where-asked spells it: QoS(depth), then calls in a chain.
+_QOS_DEPTH = re.compile(r'QoS\s*\(\s*(\d+)\s*\)')
+_QOS_CALL = re.compile(r'\.\s*(reliable|best_effort|keep_last)\s*\(\s*(\d*)\s*\)')
 _UNDEFINED = re.compile(r"undefined reference to `([^']+)'")
 # mros2 >= 0.5 defines the address embeddedRTPS announces (src/mros2.cpp).
 _MROS2_ADDRESS = re.compile(r'^\s*std::array<uint8_t,\s*4>\s+IP_ADDRESS\s*;', re.M)
@@ -155,13 +159,28 @@ def app_sources(app_dir):
     return sources
 
 
+def _qos_suffix(qos):
+    """The endpoint text's QoS for an app's QoS argument: ':reliable:DEPTH' where its calls
+    end reliable, '' where best-effort (mros2's int, too)."""
+    depth = _QOS_DEPTH.search(qos)
+    depth = depth.group(1) if depth else ''
+    reliable = False
+    for call, argument in _QOS_CALL.findall(qos):
+        if call == 'keep_last':
+            depth = argument
+        else:
+            reliable = call == 'reliable'
+    return ':reliable:%s' % depth if reliable and depth else ''
+
+
 def app_endpoints(sources):
-    """(publish, subscribe) as TOPIC:PKG/msg/TYPE texts, from the app's
-    create_publisher<T>("topic") and create_subscription<T>("topic") calls."""
+    """(publish, subscribe) as TOPIC:PKG/msg/TYPE[:reliable:DEPTH] texts, from the app's
+    create_publisher<T>("topic", qos) and create_subscription<T>("topic", qos) calls."""
     found = {'publisher': [], 'subscription': []}
     for path in sources:
-        for kind, cpp_type, topic in _ENDPOINT.findall(_read(path, 'an app source')):
-            endpoint = '%s:%s' % (topic, cpp_type.lstrip(':').replace('::', '/'))
+        for kind, cpp_type, topic, qos in _ENDPOINT.findall(_read(path, 'an app source')):
+            endpoint = '%s:%s%s' % (topic, cpp_type.lstrip(':').replace('::', '/'),
+                                    _qos_suffix(qos))
             if endpoint not in found[kind]:
                 found[kind].append(endpoint)
     return found['publisher'], found['subscription']

@@ -56,7 +56,8 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
         'not applied   acknack-within-the-history', 'not applied   lease-in-milliseconds',
         'not applied   data-holds-its-fields',
         'not applied   data-frag-for-best-effort-readers',
-        'not applied   reader-catches-up-at-once']
+        'not applied   reader-catches-up-at-once',
+        'not applied   acknacks-on-the-writer-threads', 'not applied   reliable-where-asked']
     applied = run_genmros('mros2-harden', '--mros2-root', str(checkout))
     assert applied.stdout == ('genmros: applied one-writer-per-publisher, checked-receive, '
                               'publish-keeps-a-copy, accept-fast-dds-3-discovery, '
@@ -64,18 +65,28 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
                               'large-acknack-counts, bounded-submessage-lengths, '
                               'acknack-within-the-history, lease-in-milliseconds, '
                               'data-holds-its-fields, data-frag-for-best-effort-readers, '
-                              'reader-catches-up-at-once\n')
+                              'reader-catches-up-at-once, acknacks-on-the-writer-threads, '
+                              'reliable-where-asked\n')
     changed = {'include': ['mros2.h'], 'src': ['mros2.cpp'],
-               'embeddedRTPS': ['include/rtps/discovery/ParticipantProxyData.h',
+               'embeddedRTPS': ['include/rtps/ThreadPool.h',
+                                'include/rtps/discovery/ParticipantProxyData.h',
                                 'include/rtps/discovery/SEDPAgent.h',
                                 'include/rtps/discovery/SPDPAgent.h',
+                                'include/rtps/entities/Domain.h',
+                                'include/rtps/entities/Participant.h',
+                                'include/rtps/entities/ReaderProxy.h',
                                 'include/rtps/entities/StatefulReader.h',
                                 'include/rtps/entities/StatefulReader.tpp',
+                                'include/rtps/entities/StatefulWriter.h',
                                 'include/rtps/entities/StatefulWriter.tpp',
                                 'include/rtps/entities/WriterProxy.h',
                                 'include/rtps/messages/MessageReceiver.h',
+                                'include/rtps/storages/SimpleHistoryCache.h',
+                                'src/ThreadPool.cpp',
                                 'src/discovery/ParticipantProxyData.cpp',
                                 'src/discovery/SPDPAgent.cpp',
+                                'src/entities/Domain.cpp',
+                                'src/entities/Participant.cpp',
                                 'src/messages/MessageReceiver.cpp',
                                 'src/messages/MessageTypes.cpp']}
     for part in LIBRARY_DIRS:

@@ -78,17 +78,17 @@ class Reader:
         assert self.process.wait(timeout=60) == 0
 
 
-def _node_start(program, heartbeat_periods=30, answered=None):
+def _node_start(program, heartbeat_periods=30, answered=None, size=4):
     """The simulated writer against the reader until it has taken every sample: (the heartbeat
     periods that took, the samples in the order taken, the ACKNACKs' requests). answered: how
     many of the samples asked for an answer brings (a board cuts a datagram at its receive
-    limit); all by default."""
+    limit); all by default. size: each sample's, in bytes."""
     reader = Reader(program)
     taken, requests = [], []
     count = 1
     pending = reader.step('heartbeat 1 %d %d' % (ANNOUNCED, count))[1]
     for sn in range(ANNOUNCED + 1, SAMPLES + 1):  # made after the match: sent at once
-        got, asked = reader.step('data %d' % sn)
+        got, asked = reader.step('data %d %d' % (sn, size))
         taken += got
         pending += asked
     periods = 0
@@ -97,7 +97,7 @@ def _node_start(program, heartbeat_periods=30, answered=None):
             request = pending.pop(0)
             requests.append(request)
             for sn in request[:answered]:
-                got, asked = reader.step('data %d' % sn)
+                got, asked = reader.step('data %d %d' % (sn, size))
                 taken += got
                 pending += asked
         if len(taken) < SAMPLES:
@@ -118,8 +118,30 @@ def test_a_node_start_is_caught_up_with_before_the_next_heartbeat(reader):
         assert all(len(request) == 1 for request in requests)
     else:
         assert periods == 0
-        # Never more than 4 at a time: Fast DDS answers in one datagram.
+        # 4 at first, then twice as many after each answer taken whole: the samples are
+        # small (4 bytes), so many fit the datagram Fast DDS answers in.
+        assert requests == [[1, 2], [3, 4, 5, 6, 7, 8, 9, 10], [11, 12, 13]]
+
+
+def test_discovery_samples_are_asked_for_4_at_a_time(reader):
+    """4 SEDP samples of about 700 bytes fill what an answer may hold: no more are asked."""
+    version, program = reader
+    periods, taken, requests = _node_start(program, size=700)
+    assert taken == list(range(1, SAMPLES + 1))
+    if version != 'as-it-is':
+        assert periods == 0
         assert requests == [[1, 2], [3, 4, 5, 6], [7, 8, 9, 10], [11, 12, 13]]
+
+
+def test_a_lost_answer_is_asked_for_again_as_it_was(reader):
+    version, program = reader
+    checked = Reader(program)
+    assert checked.step('heartbeat 1 8 1')[1] == ([[1]] if version == 'as-it-is' else
+                                                  [[1, 2, 3, 4]])
+    # Nothing of the answer came: the next heartbeat asks for the same, not for fewer.
+    assert checked.step('heartbeat 1 8 2')[1] == ([[1]] if version == 'as-it-is' else
+                                                  [[1, 2, 3, 4]])
+    checked.close()
 
 
 def test_answers_cut_to_one_sample_make_the_requests_smaller(reader):

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // lwIP's pbufs (lwip/pbuf.h): each allocation one heap buffer, with lwIP's
-// reference counting and chaining.
+// reference counting and chaining. The counts change atomically, as lwIP's
+// do under SYS_ARCH_PROTECT: two threads may hold one pbuf.
 #include <stdlib.h>
 #include <string.h>
 
@@ -22,7 +23,7 @@ struct pbuf* pbuf_alloc(pbuf_layer, u16_t length, pbuf_type) {
 
 u8_t pbuf_free(struct pbuf* p) {
   u8_t freed = 0;
-  while (p != NULL && --p->ref == 0) {
+  while (p != NULL && __atomic_sub_fetch(&p->ref, 1, __ATOMIC_ACQ_REL) == 0) {
     struct pbuf* next = p->next;
     free(p);
     freed++;
@@ -32,7 +33,7 @@ u8_t pbuf_free(struct pbuf* p) {
 }
 
 void pbuf_ref(struct pbuf* p) {
-  if (p != NULL) p->ref++;
+  if (p != NULL) __atomic_add_fetch(&p->ref, 1, __ATOMIC_ACQ_REL);
 }
 
 void pbuf_cat(struct pbuf* head, struct pbuf* tail) {
