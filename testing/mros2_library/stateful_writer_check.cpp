@@ -1,0 +1,203 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// A unit check of embeddedRTPS' real StatefulWriter (include/rtps/entities/
+// StatefulWriter.tpp) with genmros' patch reliable-where-asked: one writer,
+// whose network driver records what it sends, and no thread pool (samples
+// are kept, not sent, unless a reader asks). Each line of stdin is a step:
+//   keep DEPTH WAIT_MS           keepLast(DEPTH, WAIT_MS); prints "kept" or "refused"
+//   reader ID                    a matched reader (entity key ID)
+//   publish                      newChange of a 4-byte sample; prints "published SN"
+//                                or "refused", and "waited MS"
+//   acknack ID BASE COUNT        the reader's ACKNACK: it has every sample below BASE
+//   acknack-later MS ID BASE COUNT  the same, from another thread MS milliseconds on
+//   gone ID                      the reader removed
+// The driver prints "heartbeat FIRST LAST" and "data SN" for what the writer
+// sends; the check prints "done" after each step.
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "rtps/entities/StatefulWriter.h"
+
+// lwIP's system calls, on host threads: the writer's mutex and semaphore work
+// across the check's threads; its heartbeat thread is not started.
+extern "C" {
+err_t sys_mutex_new(sys_mutex_t* mutex) {
+  mutex->handle = new pthread_mutex_t(PTHREAD_MUTEX_INITIALIZER);
+  return ERR_OK;
+}
+void sys_mutex_lock(sys_mutex_t* mutex) { pthread_mutex_lock(static_cast<pthread_mutex_t*>(mutex->handle)); }
+void sys_mutex_unlock(sys_mutex_t* mutex) {
+  pthread_mutex_unlock(static_cast<pthread_mutex_t*>(mutex->handle));
+}
+void sys_mutex_free(sys_mutex_t* mutex) { delete static_cast<pthread_mutex_t*>(mutex->handle); }
+
+struct Semaphore {
+  pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
+  pthread_cond_t signalled = PTHREAD_COND_INITIALIZER;
+  unsigned count = 0;
+};
+err_t sys_sem_new(sys_sem_t* sem, u8_t count) {
+  Semaphore* made = new Semaphore;
+  made->count = count;
+  sem->handle = made;
+  return ERR_OK;
+}
+void sys_sem_signal(sys_sem_t* sem) {
+  Semaphore* semaphore = static_cast<Semaphore*>(sem->handle);
+  pthread_mutex_lock(&semaphore->lock);
+  semaphore->count++;
+  pthread_cond_signal(&semaphore->signalled);
+  pthread_mutex_unlock(&semaphore->lock);
+}
+u32_t sys_now(void) {
+  struct timespec now;
+  clock_gettime(CLOCK_REALTIME, &now);
+  return static_cast<u32_t>(now.tv_sec * 1000 + now.tv_nsec / 1000000);
+}
+u32_t sys_arch_sem_wait(sys_sem_t* sem, u32_t timeout) {
+  Semaphore* semaphore = static_cast<Semaphore*>(sem->handle);
+  struct timespec deadline;
+  clock_gettime(CLOCK_REALTIME, &deadline);
+  deadline.tv_sec += timeout / 1000;
+  deadline.tv_nsec += static_cast<long>(timeout % 1000) * 1000000;
+  if (deadline.tv_nsec >= 1000000000) {
+    deadline.tv_sec++;
+    deadline.tv_nsec -= 1000000000;
+  }
+  pthread_mutex_lock(&semaphore->lock);
+  while (semaphore->count == 0) {
+    if (pthread_cond_timedwait(&semaphore->signalled, &semaphore->lock, &deadline) != 0) {
+      pthread_mutex_unlock(&semaphore->lock);
+      return SYS_ARCH_TIMEOUT;
+    }
+  }
+  semaphore->count--;
+  pthread_mutex_unlock(&semaphore->lock);
+  return 0;
+}
+sys_thread_t sys_thread_new(const char*, lwip_thread_fn, void*, int, int) { return sys_thread_t(); }
+void sys_msleep(u32_t milliseconds) { std::this_thread::sleep_for(std::chrono::milliseconds(milliseconds)); }
+}
+
+// The writer is given no thread pool: it never calls one.
+bool rtps::ThreadPool::addWorkload(rtps::Writer*) { abort(); }
+
+namespace {
+
+// The RTPS header (20 bytes) and INFO_TS (12) come before the submessage the
+// writer sends; in it, its header (4) and the reader and writer ids (8).
+const size_t kSubmessage = 20 + 12;
+
+uint32_t word_at(const std::vector<uint8_t>& bytes, size_t offset) {
+  uint32_t word;
+  memcpy(&word, bytes.data() + offset, sizeof word);
+  return word;
+}
+
+struct RecordingDriver {
+  void sendPacket(rtps::PacketInfo& packet) {
+    std::vector<uint8_t> datagram;
+    for (const pbuf* part = packet.buffer.firstElement; part != NULL; part = part->next) {
+      const uint8_t* bytes = static_cast<const uint8_t*>(part->payload);
+      datagram.insert(datagram.end(), bytes, bytes + part->len);
+    }
+    // A heartbeat goes out without INFO_TS.
+    if (datagram[20] == static_cast<uint8_t>(rtps::SubmessageKind::HEARTBEAT)) {
+      printf("heartbeat %u %u\n", word_at(datagram, 20 + 12 + 4), word_at(datagram, 20 + 12 + 12));
+    } else {
+      // DATA: extra flags and octets to inline QoS (4), the ids (8), the sequence number.
+      printf("data %u\n", word_at(datagram, kSubmessage + 4 + 4 + 8 + 4));
+    }
+    fflush(stdout);
+  }
+};
+
+rtps::StatefulWriterT<RecordingDriver> writer;
+const rtps::GuidPrefix_t local = {{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}};
+const rtps::GuidPrefix_t remote = {{0x11, 0x11, 0x11, 0x11, 0x11, 0x11, 0x11, 0x11, 0x11, 0x11,
+                                    0x11, 0x11}};
+
+rtps::EntityId_t reader_id(int key) {
+  return rtps::EntityId_t{{0, 0, static_cast<uint8_t>(key)},
+                          rtps::EntityKind_t::USER_DEFINED_READER_WITHOUT_KEY};
+}
+
+void acknack(int key, uint32_t base, int32_t count) {
+  rtps::SubmessageAckNack message;
+  message.readerId = reader_id(key);
+  message.writerId = writer.m_attributes.endpointGuid.entityId;
+  message.readerSNState = rtps::SequenceNumberSet(rtps::SequenceNumber_t{0, base});
+  message.readerSNState.numBits = 0;
+  message.count = rtps::Count_t{count};
+  writer.onNewAckNack(message, remote);
+}
+
+}  // namespace
+
+int main() {
+  rtps::TopicData attributes;
+  attributes.endpointGuid = rtps::Guid_t{
+      local, rtps::EntityId_t{{0, 0, 1}, rtps::EntityKind_t::USER_DEFINED_WRITER_WITHOUT_KEY}};
+  RecordingDriver driver;
+  writer.init(attributes, rtps::TopicKind_t::NO_KEY, nullptr, driver);
+  const uint8_t sample[4] = {0, 1, 0, 0};
+  std::vector<std::thread> later;
+  std::string line;
+  while (std::getline(std::cin, line)) {
+    std::istringstream step(line);
+    std::string kind;
+    step >> kind;
+    if (kind == "keep") {
+      unsigned depth, wait;
+      step >> depth >> wait;
+      printf(writer.keepLast(static_cast<uint16_t>(depth), wait) ? "kept\n" : "refused\n");
+    } else if (kind == "reader") {
+      int key;
+      step >> key;
+      writer.addNewMatchedReader(rtps::ReaderProxy(rtps::Guid_t{remote, reader_id(key)},
+                                                   rtps::LocatorIPv4()));
+    } else if (kind == "publish") {
+      uint32_t start = sys_now();
+      const rtps::CacheChange* change = writer.newChange(rtps::ChangeKind_t::ALIVE, sample,
+                                                         sizeof sample);
+      if (change != nullptr) {
+        printf("published %u\n", static_cast<unsigned>(change->sequenceNumber.low));
+      } else {
+        printf("refused (%u so far)\n", static_cast<unsigned>(writer.refusedSamples()));
+      }
+      printf("waited %u\n", static_cast<unsigned>(sys_now() - start));
+    } else if (kind == "acknack") {
+      int key;
+      uint32_t base;
+      int32_t count;
+      step >> key >> base >> count;
+      acknack(key, base, count);
+    } else if (kind == "acknack-later") {
+      unsigned milliseconds;
+      int key;
+      uint32_t base;
+      int32_t count;
+      step >> milliseconds >> key >> base >> count;
+      later.emplace_back([=] {
+        sys_msleep(milliseconds);
+        acknack(key, base, count);
+      });
+    } else if (kind == "gone") {
+      int key;
+      step >> key;
+      writer.removeReader(rtps::Guid_t{remote, reader_id(key)});
+    }
+    printf("done\n");
+    fflush(stdout);
+  }
+  for (std::thread& thread : later) thread.join();
+  return 0;
+}

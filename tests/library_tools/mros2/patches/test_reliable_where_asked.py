@@ -1,0 +1,127 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""The patch reliable-where-asked, unit-tested: embeddedRTPS' real StatefulWriter of a copy
+of MROS2_ROOT with the whole series, driven by the stateful writer check of
+testing/mros2_library: a writer that keeps its last samples, its readers' ACKNACKs given by
+hand (one from another thread while a publish waits), and what it sends recorded."""
+
+import os
+import shutil
+import subprocess
+
+import pytest
+
+from colcon_mros.library_tools.mros2.patches import LIBRARY_DIRS, mros2_patches
+from colcon_mros.library_tools.mros2.pc_target.build import TARGET_DIR
+from colcon_mros.library_tools.patch_series import apply_patches
+from support.checkout import REPO
+from support.user_checkouts import MROS2_ROOT
+
+pytestmark = [pytest.mark.needs_mros2]
+
+STAND_IN = os.path.join(REPO, 'testing', 'mros2_library')
+# The wait for room: long beside an ACKNACK's 50 ms, even on a busy machine.
+WAIT = 1000
+
+
+@pytest.fixture(scope='module')
+def program(tmp_path_factory):
+    work = tmp_path_factory.mktemp('stateful_writer')
+    checkout = work / 'mros2'
+    for part in LIBRARY_DIRS:
+        shutil.copytree(os.path.join(MROS2_ROOT, part), str(checkout / part))
+    apply_patches(str(checkout), mros2_patches())
+    rtps = checkout / 'embeddedRTPS'
+    program = str(work / 'stateful_writer_check')
+    command = ['g++', '-std=gnu++14', '-g', '-fsanitize=address,undefined',
+               '-fno-sanitize-recover=all', '-I', os.path.join(STAND_IN, 'writer'),
+               '-I', os.path.join(TARGET_DIR, 'include'), '-I', str(rtps / 'include'),
+               '-I', str(rtps / 'thirdparty' / 'Micro-CDR' / 'include'),
+               str(rtps / 'src' / 'messages' / 'MessageTypes.cpp'),
+               str(rtps / 'src' / 'storages' / 'PBufWrapper.cpp'),
+               os.path.join(TARGET_DIR, 'src', 'pbuf.cpp'),
+               os.path.join(STAND_IN, 'stateful_writer_check.cpp'), '-pthread', '-o', program]
+    result = subprocess.run(command, capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr[-4000:]
+    return program
+
+
+class Writer:
+    """The check running: steps in, what the writer did out."""
+
+    def __init__(self, program):
+        self.process = subprocess.Popen([program], stdin=subprocess.PIPE,
+                                        stdout=subprocess.PIPE, text=True)
+
+    def step(self, line):
+        """The lines the step printed."""
+        self.process.stdin.write(line + '\n')
+        self.process.stdin.flush()
+        return [output.strip() for output in iter(self.process.stdout.readline, 'done\n')]
+
+    def publish(self):
+        """(what the publish printed, the milliseconds it waited, the heartbeats it sent)."""
+        lines = self.step('publish')
+        waited = int(next(line for line in lines if line.startswith('waited')).split()[1])
+        result = next(line for line in lines if line.startswith(('published', 'refused')))
+        return result, waited, sum(line.startswith('heartbeat') for line in lines)
+
+    def close(self):
+        self.process.stdin.close()
+        assert self.process.wait(timeout=60) == 0
+
+
+@pytest.fixture
+def writer(program):
+    checked = Writer(program)
+    assert checked.step('keep 3 %d' % WAIT) == ['kept']
+    yield checked
+    checked.close()
+
+
+def test_the_depth_is_held_to_the_history(program):
+    checked = Writer(program)
+    assert checked.step('keep 11 100') == ['refused']  # HISTORY_SIZE_STATEFUL is 10
+    assert checked.step('keep 0 100') == ['refused']
+    assert checked.step('keep 10 100') == ['kept']
+    checked.close()
+
+
+def test_with_no_reader_the_last_samples_are_kept_and_none_waits(writer):
+    for sn in range(1, 6):
+        assert writer.publish()[:2] == ('published %d' % sn, 0)
+
+
+def test_a_full_history_nobody_acknowledged_refuses_after_the_wait(writer):
+    writer.step('reader 7')
+    for sn in range(1, 4):
+        assert writer.publish()[0] == 'published %d' % sn
+    result, waited, heartbeats = writer.publish()
+    assert result == 'refused (1 so far)'
+    # It waited its time, asking the reader for an ACKNACK every 10 ms or so.
+    assert waited >= WAIT and heartbeats >= 10
+
+
+def test_an_acknowledgement_makes_room_and_what_is_not_acknowledged_stays(writer):
+    writer.step('reader 7')
+    writer.step('reader 8')
+    for sn in range(1, 4):
+        writer.publish()
+    # Reader 7 has 1 and 2, reader 8 only 1: one place frees, sample 1's. Each ACKNACK
+    # brings what its reader lacks, sent again.
+    assert writer.step('acknack 7 3 2') == ['data 3']
+    assert writer.step('acknack 8 2 2') == ['data 2', 'data 3']
+    assert writer.publish()[:2] == ('published 4', 0)
+    assert writer.publish()[0] == 'refused (1 so far)'
+    # A reader gone acknowledges nothing more, and holds nothing back.
+    writer.step('gone 8')
+    assert writer.publish()[:2] == ('published 5', 0)
+
+
+def test_an_acknowledgement_during_the_wait_ends_it(writer):
+    writer.step('reader 7')
+    for sn in range(1, 4):
+        writer.publish()
+    writer.step('acknack-later 50 7 4 2')
+    result, waited, heartbeats = writer.publish()
+    assert result == 'published 4'
+    assert 40 <= waited < WAIT and heartbeats >= 1
