@@ -38,4 +38,8 @@ std::vector<Reader*>& Domain::readers() {
   static std::vector<Reader*> made;
   return made;
 }
+uint8_t next_entity_key() {
+  static uint8_t key;
+  return ++key;
+}
 }  // namespace rtps

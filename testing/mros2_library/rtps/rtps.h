@@ -24,6 +24,31 @@ typedef uint16_t DataSize_t;
 typedef uint32_t FragDataSize_t;
 enum class ChangeKind_t { ALIVE };
 
+// Endpoint identities, as embeddedRTPS' rtps/common/types.h has them.
+struct GuidPrefix_t {
+  std::array<uint8_t, 12> id;
+};
+enum class EntityKind_t : uint8_t {
+  BUILD_IN_PARTICIPANT = 0xc1,
+  USER_DEFINED_WRITER_WITHOUT_KEY = 0x03,
+  USER_DEFINED_READER_WITHOUT_KEY = 0x04,
+};
+struct EntityId_t {
+  std::array<uint8_t, 3> entityKey;
+  EntityKind_t entityKind;
+};
+struct Guid_t {
+  GuidPrefix_t prefix;
+  EntityId_t entityId;
+};
+const EntityId_t ENTITYID_BUILD_IN_PARTICIPANT = {{{00, 00, 01}}, EntityKind_t::BUILD_IN_PARTICIPANT};
+struct TopicData {
+  Guid_t endpointGuid;
+};
+// The participant's prefix, and the next entity key of its endpoints.
+const GuidPrefix_t STAND_IN_PREFIX = {{{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}}};
+uint8_t next_entity_key();
+
 namespace Config {
 const uint8_t MAX_TYPENAME_LENGTH = 64;
 const uint8_t MAX_TOPICNAME_LENGTH = 64;
@@ -31,6 +56,10 @@ const uint8_t NUM_WRITERS_PER_PARTICIPANT = 16;
 const uint8_t NUM_READERS_PER_PARTICIPANT = 16;
 const uint8_t NUM_STATELESS_WRITERS = 16;
 const uint8_t NUM_STATELESS_READERS = 16;
+#ifdef STAND_IN_RMW_GID_STORAGE_SIZE
+// A board's config that names its ROS 2's GID size (Humble: 24).
+const uint8_t RMW_GID_STORAGE_SIZE = STAND_IN_RMW_GID_STORAGE_SIZE;
+#endif
 const int THREAD_POOL_READER_STACKSIZE = 8192;
 const uint8_t HISTORY_SIZE_STATEFUL = 10;
 }  // namespace Config
@@ -50,7 +79,12 @@ std::vector<Sent>& sent_samples();
 
 class Writer {
  public:
-  Writer(const char* topic, const char* type_name) : topic_(topic), type_name_(type_name) {}
+  Writer(const char* topic, const char* type_name) : topic_(topic), type_name_(type_name) {
+    m_attributes.endpointGuid = {STAND_IN_PREFIX,
+                                 {{{0, 0, next_entity_key()}},
+                                  EntityKind_t::USER_DEFINED_WRITER_WITHOUT_KEY}};
+  }
+  TopicData m_attributes;
   const CacheChange* newChange(ChangeKind_t, const uint8_t* data, DataSize_t size) {
     record(std::vector<uint8_t>(data, data + size));
     return nullptr;
@@ -101,6 +135,12 @@ typedef void (*ddsReaderCallback_fp)(void* callee, const ReaderCacheChange& cach
 
 class Reader {
  public:
+  Reader() {
+    m_attributes.endpointGuid = {STAND_IN_PREFIX,
+                                 {{{0, 0, next_entity_key()}},
+                                  EntityKind_t::USER_DEFINED_READER_WITHOUT_KEY}};
+  }
+  TopicData m_attributes;
   void registerCallback(ddsReaderCallback_fp cb, void* callee) {
     callback = cb;
     this->callee = callee;
@@ -126,6 +166,7 @@ class MessageReceiver {
 
 class Participant {
  public:
+  GuidPrefix_t m_guidPrefix = STAND_IN_PREFIX;
   bool registerOnNewPublisherMatchedCallback(void (*)(void*), void*) { return true; }
   bool registerOnNewSubscriberMatchedCallback(void (*)(void*), void*) { return true; }
 };

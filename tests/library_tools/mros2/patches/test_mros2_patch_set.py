@@ -57,7 +57,8 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
         'not applied   data-holds-its-fields',
         'not applied   data-frag-for-best-effort-readers',
         'not applied   reader-catches-up-at-once',
-        'not applied   acknacks-on-the-writer-threads', 'not applied   reliable-where-asked']
+        'not applied   acknacks-on-the-writer-threads', 'not applied   reliable-where-asked',
+        'not applied   node-in-the-ros-graph']
     applied = run_genmros('mros2-harden', '--mros2-root', str(checkout))
     assert applied.stdout == ('genmros: applied one-writer-per-publisher, checked-receive, '
                               'publish-keeps-a-copy, accept-fast-dds-3-discovery, '
@@ -66,7 +67,7 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
                               'acknack-within-the-history, lease-in-milliseconds, '
                               'data-holds-its-fields, data-frag-for-best-effort-readers, '
                               'reader-catches-up-at-once, acknacks-on-the-writer-threads, '
-                              'reliable-where-asked\n')
+                              'reliable-where-asked, node-in-the-ros-graph\n')
     changed = {'include': ['mros2.h'], 'src': ['mros2.cpp'],
                'embeddedRTPS': ['include/rtps/ThreadPool.h',
                                 'include/rtps/discovery/ParticipantProxyData.h',
@@ -106,7 +107,7 @@ def export(tmp_path_factory):
     return root
 
 
-def _run_check(checkout, export, out, patched):
+def _run_check(checkout, export, out, patched, defines=()):
     program = str(out / 'library_check')
     command = ['g++', '-std=c++14', '-g', '-fsanitize=address,undefined',
                '-fno-sanitize-recover=all', '-DMROS2_LOG_MIN_SEVERITY=5',
@@ -116,6 +117,7 @@ def _run_check(checkout, export, out, patched):
                os.path.join(STAND_IN, 'library_check.cpp'), '-pthread', '-o', program]
     if patched:
         command.insert(1, '-DCHECK_DROPPED_SAMPLES')
+    command[1:1] = ['-D%s' % define for define in defines]
     result = subprocess.run(command, capture_output=True, text=True)
     assert result.returncode == 0, result.stderr[-4000:]
     result = subprocess.run([program], capture_output=True, text=True, timeout=60)
@@ -123,8 +125,16 @@ def _run_check(checkout, export, out, patched):
     return result.stdout.splitlines()
 
 
-def _sent(lines):
-    return [tuple(line.split()[1:3]) for line in lines if line.startswith('sent ')]
+def _sent(lines, topic_prefix='rt/'):
+    """(topic, type name) of each sample sent on a topic of the app (or on topics with
+    topic_prefix)."""
+    return [tuple(line.split()[1:3]) for line in lines
+            if line.startswith('sent ' + topic_prefix)]
+
+
+def _graph_samples(lines):
+    return [bytes.fromhex(line.split()[3]) for line in lines
+            if line.startswith('sent ros_discovery_info ')]
 
 
 def test_as_it_is_one_publisher_sends_for_both_and_bad_samples_are_delivered(tmp_path, export):
@@ -159,3 +169,42 @@ def test_the_fit_check_reads_the_checkouts_publisher(tmp_path, export):
             'own' % (checkout / 'include' / 'mros2.h')) in as_it_is.stdout
     run_genmros('mros2-harden', '--mros2-root', str(checkout))
     assert 'Every endpoint fits.' in run_genmros(*arguments).stdout
+
+
+@pytest.mark.parametrize('store,defines', [('ROS2_JAZZY', ()),
+                                           ('ROS2_HUMBLE', ['STAND_IN_RMW_GID_STORAGE_SIZE=24'])],
+                         ids=['iron-and-later', 'humble'])
+def test_patched_each_endpoint_made_announces_the_node_to_the_ros_graph(
+        tmp_path, export, store, defines):
+    """The samples on ros_discovery_info, byte for byte as rosbags serializes rmw_dds_common's
+    ParticipantEntitiesInfo of that ROS 2 (a Gid of 16 bytes, or 24 where the board's config
+    sets RMW_GID_STORAGE_SIZE 24, as Humble's Gid.msg is char[24]): one at create_node, then
+    one more at each endpoint, with the stand-in's GUIDs (the participant's prefix 1 to 12;
+    entity keys in the order made, ros_discovery_info's writer first)."""
+    import numpy
+    from rosbags.typesys import Stores, get_typestore
+    checkout = _copy(tmp_path / 'mros2')
+    run_genmros('mros2-harden', '--mros2-root', str(checkout))
+    lines = _run_check(checkout, export, tmp_path, patched=True, defines=defines)
+    typestore = get_typestore(getattr(Stores, store))
+    types = typestore.types
+    size = {'ROS2_JAZZY': 16, 'ROS2_HUMBLE': 24}[store]
+
+    def gid(key, kind):
+        data = list(range(1, 13)) + [0, 0, key, kind]
+        return types['rmw_dds_common/msg/Gid'](
+            data=numpy.array(data + [0] * (size - 16), dtype=numpy.uint8))
+
+    writers = [gid(2, 0x03), gid(3, 0x03)]
+    readers = [gid(4, 0x04), gid(5, 0x04)]
+    steps = [([], []), ([], writers[:1]), ([], writers), (readers[:1], writers),
+             (readers, writers)]
+    expected = [typestore.serialize_cdr(types['rmw_dds_common/msg/ParticipantEntitiesInfo'](
+        gid=gid(1, 0xc1),  # the participant's own entity id is 0.0.1.c1
+        node_entities_info_seq=[types['rmw_dds_common/msg/NodeEntitiesInfo'](
+            node_namespace='/', node_name='library_check', reader_gid_seq=node_readers,
+            writer_gid_seq=node_writers)]), 'rmw_dds_common/msg/ParticipantEntitiesInfo')
+        for node_readers, node_writers in steps]
+    assert _graph_samples(lines) == [bytes(sample) for sample in expected]
+    assert _sent(lines, 'ros_discovery_info') == [
+        ('ros_discovery_info', 'rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_')] * 5
