@@ -417,9 +417,11 @@ def _add_mros2_sources(parser):
 def _add_mros2_endpoints(parser, instantiated):
     for flag, what in (('--publish', 'publishes'), ('--subscribe', 'subscribes to')):
         parser.add_argument(flag, dest=flag[2:], action='append', default=[],
-                            metavar='[TOPIC:]PKG/msg/TYPE',
+                            metavar='[TOPIC:]PKG/msg/TYPE[:reliable[:DEPTH]]',
                             help='a topic and message type the firmware %s%s; a type alone '
-                                 'skips the topic rules of the fit check (repeatable)'
+                                 'skips the topic rules of the fit check; :reliable, one the '
+                                 'app makes with mros2::QoS(DEPTH).reliable() (DEPTH 10 unless '
+                                 'given; the mros2 patch reliable-where-asked) (repeatable)'
                                  % (what, instantiated))
 
 

@@ -26,6 +26,7 @@ from testing.ros_paths import ros2_wheels
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 WHEELS_VENV = ros2_wheels()
 PEER_SCRIPT = os.path.join(REPO, 'testing', 'mros2_pc_peer.py')
+GRAPH_SCRIPT = os.path.join(REPO, 'testing', 'mros2_pc_graph.py')
 # What a run waits for at most: discovery through embeddedRTPS' SEDP, whose heartbeat
 # comes every 4 s, under qemu on a busy 2-core machine.
 EVENT_CAP = 180
@@ -130,6 +131,39 @@ class Peer:
         return report
 
 
+class GraphWatcher:
+    """The graph watcher (testing/mros2_pc_graph.py) running on the ROS side."""
+
+    def __init__(self, command, job, log_dir):
+        self._stderr = open(os.path.join(log_dir, 'graph-%d.err' % time.monotonic_ns()), 'w+')
+        self._process = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                         stderr=self._stderr, text=True,
+                                         env=peer_environment(log_dir))
+        self._process.stdin.write(json.dumps(job) + '\n')
+        self._process.stdin.flush()
+
+    def _report(self):
+        line = self._process.stdout.readline()
+        if not line:
+            self._stderr.seek(0)
+            raise AssertionError('the graph watcher failed: %s' % self._stderr.read()[-3000:])
+        return json.loads(line)
+
+    def seen(self):
+        """What the graph showed once the node and its endpoints were in it (or the wait
+        ended): nodes, publishers, subscribers (as rclpy gives them), seen_after."""
+        return self._report()
+
+    def gone(self):
+        """Once the board has stopped: the seconds until the node left the graph (None: it
+        stayed for the watcher's wait)."""
+        self._process.stdin.write('stopped\n')
+        self._process.stdin.close()
+        report = self._report()
+        assert self._process.wait(timeout=EVENT_CAP) == 0
+        return report['gone_after']
+
+
 def wait_for(condition, what):
     deadline = time.monotonic() + EVENT_CAP
     while not condition():
@@ -189,6 +223,15 @@ class Session:
                                               PEER_SCRIPT]), job, self.work_dir, max_message)
         peer.wait_ready()
         return peer
+
+    def graph_watcher(self, node, publishers, subscribers, wait=EVENT_CAP):
+        """A GraphWatcher on the ROS side for node (in '/') with at least so many publishers
+        and subscribers."""
+        return GraphWatcher(
+            self.network.ros_command([os.path.join(WHEELS_VENV, 'bin', 'python'),
+                                      GRAPH_SCRIPT]),
+            {'node': node, 'namespace': '/', 'publishers': publishers,
+             'subscribers': subscribers, 'wait': wait}, self.work_dir)
 
     def stop_board(self):
         """Stops the board as Ctrl-C does; returns its output."""

@@ -4,7 +4,9 @@
 An endpoint is a direction, a topic and a message type (the ROS 2 model's),
 given as ``TOPIC:TYPE``, or a type alone where the topic is not known (the
 headers and templates.hpp need only the type; the fit check then skips the
-topic rules and counts one endpoint per type).
+topic rules and counts one endpoint per type). ``TOPIC:TYPE:reliable`` (or
+``:reliable:DEPTH``) is one the app makes with ``mros2::QoS(DEPTH).reliable()``
+(the mros2 patch reliable-where-asked); ``:best_effort``, as mros2 makes all.
 
 A topic is held to ROS 2's name rules as mros2 uses a name: it sends
 ``"rt/" + name`` as the app passes it and expands nothing, so a name ROS 2
@@ -18,21 +20,30 @@ from colcon_mros.mros2.cpp import CppMessageName
 
 PUBLISH = 'publish'
 SUBSCRIBE = 'subscribe'
+RELIABLE = 'reliable'
+BEST_EFFORT = 'best_effort'
+# The samples a reliable endpoint keeps where no depth is given: what mros2's
+# examples pass, and rclcpp's default QoS keeps.
+DEFAULT_DEPTH = 10
 
 
 class Endpoint:
     """A publisher or subscriber: its direction, topic (None where only the
-    type was given), message and the message's C++ and DDS names."""
+    type was given), message and the message's C++ and DDS names; whether it
+    is reliable, and the samples it keeps (depth)."""
 
-    def __init__(self, direction, topic, message):
+    def __init__(self, direction, topic, message, reliable=False, depth=DEFAULT_DEPTH):
         self.direction = direction
         self.topic = topic
         self.message = message
         self.wire_name = CppMessageName(message)
+        self.reliable = reliable
+        self.depth = depth
 
     def describe(self):
         topic = '(topic not given)' if self.topic is None else self.topic
-        return '%s %s %s' % (self.direction, topic, self.message.full_name)
+        qos = ' (reliable, depth %d)' % self.depth if self.reliable else ''
+        return '%s %s %s%s' % (self.direction, topic, self.message.full_name, qos)
 
 
 # What a ROS 2 name may hold besides '/' between its tokens.
@@ -84,6 +95,29 @@ def split_endpoint(text):
     return topic, type_name, notes
 
 
+def split_qos(text):
+    """'TOPIC:TYPE:reliable[:DEPTH]' or 'TOPIC:TYPE:best_effort' -> ('TOPIC:TYPE', reliable,
+    depth); a text with no QoS -> (text, False, DEFAULT_DEPTH)."""
+    parts = text.split(':')
+    depth = None
+    if len(parts) > 2 and parts[-1].isdigit():
+        depth = int(parts.pop())
+    if parts[-1] not in (RELIABLE, BEST_EFFORT):
+        if len(parts) > 2 or depth is not None:
+            raise GenmrosError("'%s': '%s' is no QoS (reliable, reliable:DEPTH or best_effort)"
+                               % (text, parts[-1] if depth is None else depth))
+        return text, False, DEFAULT_DEPTH
+    if len(parts) < 3:
+        raise GenmrosError("'%s': a QoS needs the topic: TOPIC:TYPE:%s" % (text, parts[-1]))
+    reliable = parts.pop() == RELIABLE
+    if depth is not None and not reliable:
+        raise GenmrosError("'%s': a depth goes with reliable (a best-effort endpoint keeps "
+                           'no samples)' % text)
+    if depth == 0:
+        raise GenmrosError("'%s': a depth of 0 keeps nothing (1 or more)" % text)
+    return ':'.join(parts), reliable, DEFAULT_DEPTH if depth is None else depth
+
+
 def parse_endpoints(publish, subscribe, message_of):
     """The Endpoints of --publish and --subscribe texts ('TOPIC:TYPE' or
     'TYPE'), their messages from message_of(type name), and the notes on
@@ -92,25 +126,44 @@ def parse_endpoints(publish, subscribe, message_of):
     for direction, texts in ((PUBLISH, publish), (SUBSCRIBE, subscribe)):
         for text in texts:
             try:
-                topic, type_name, endpoint_notes = split_endpoint(text)
+                endpoint, reliable, depth = split_qos(text)
+                topic, type_name, endpoint_notes = split_endpoint(endpoint)
             except GenmrosError as error:
                 problems.append('--%s %s' % (direction, error))
                 continue
             notes += endpoint_notes
-            endpoints.append(Endpoint(direction, topic, message_of(type_name)))
+            endpoints.append(Endpoint(direction, topic, message_of(type_name), reliable, depth))
+    problems += _qos_conflicts(endpoints)
     if problems:
         raise GenmrosProblems(problems)
     return endpoints, notes
+
+
+def _qos_conflicts(endpoints):
+    """One line for each endpoint given twice with two QoS: mros2 makes one writer or reader
+    per topic and type."""
+    first, conflicts = {}, []
+    for endpoint in endpoints:
+        key = (endpoint.direction, endpoint.topic, endpoint.message.full_name)
+        qos = (endpoint.reliable, endpoint.depth)
+        if first.setdefault(key, qos) != qos:
+            conflicts.append('--%s %s:%s: given with two QoS; mros2 makes one %s per topic and '
+                             'type' % (endpoint.direction, endpoint.topic,
+                                       endpoint.message.full_name,
+                                       'writer' if endpoint.direction == PUBLISH else 'reader'))
+    return conflicts
 
 
 def topics_known(endpoints):
     return all(e.topic is not None for e in endpoints)
 
 
-def count(endpoints, direction):
-    """How many endpoints of a direction: one per topic where the topics
-    are known, else at least one per type."""
-    chosen = [e for e in endpoints if e.direction == direction]
+def count(endpoints, direction, reliable=None):
+    """How many endpoints of a direction (of them, the reliable or the best-effort ones
+    where reliable is True or False): one per topic where the topics are known, else at
+    least one per type."""
+    chosen = [e for e in endpoints if e.direction == direction and
+              (reliable is None or e.reliable == reliable)]
     return len({(e.topic, e.message.full_name) if e.topic is not None else e.message.full_name
                 for e in chosen})
 

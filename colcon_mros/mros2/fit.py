@@ -1,19 +1,22 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The fit check: a firmware's mros2 endpoints against its board's settings.
 
-The endpoints are what the firmware publishes and subscribes to: a topic
-and a type each, or a type alone (then the topic rules are skipped, and the
+The endpoints are what the firmware publishes and subscribes to: a topic and
+a type each, or a type alone (then the topic rules are skipped, and the
 check says so). The settings are the board's ``rtps/config.h``
 (:func:`colcon_mros.core.settings.read_settings`), the receive limit of its
 network stack (a setting read from the port's headers, or a number given),
 the largest datagram the ROS side sends (``--peer-max-message``: its
 transport's setting, which nothing on the board can read), and, where the
 user's mros2 checkout is known, whether its ``Publisher`` has a writer of
-its own and whether it takes samples in fragments (the patch
-data-frag-for-best-effort-readers). Each :mod:`.rules` requirement that a setting
-does not meet is one line naming the setting, its file and line, the value
-it needs and the value it has; a need only the target's compiler can count
-is left to templates.hpp's static_asserts, rendered from the same rules.
+its own, whether it takes samples in fragments (the patch data-frag-for-
+best-effort-readers), whether it makes reliable endpoints (reliable-where-
+asked) and whether it writes ros_discovery_info (node-in-the-ros-graph),
+whose writer counts with the firmware's. Each :mod:`.rules` requirement that
+a setting does not meet is one line naming the setting, its file and line,
+the value it needs and the value it has; a need only the target's compiler
+can count is left to templates.hpp's static_asserts, rendered from the same
+rules.
 """
 
 import os
@@ -24,8 +27,9 @@ from colcon_mros.errors import GenmrosError, GenmrosProblems
 from colcon_mros.mros2.endpoints import PUBLISH, SUBSCRIBE, count, messages, topics_known
 from colcon_mros.mros2.rules import (CONFIG_HEADER, DATA_FRAG_PATCH, DISCOVERY_ANNOUNCEMENT,
                                      ENCAPSULATION, FRAGMENT_BUFFER, FRAGMENT_DEFAULTS,
-                                     FRAGMENT_OVERHEAD, PEER_MAX_MESSAGE, READER_QUEUE,
-                                     SETTINGS, TYPENAME_MAX,
+                                     FRAGMENT_OVERHEAD, GRAPH_MACRO, PEER_MAX_MESSAGE,
+                                     QOS_MACRO, QOS_PATCH, READER_QUEUE, SETTINGS,
+                                     TYPENAME_MAX,
                                      data_frag_requirements, discovery_problem,
                                      largest_datagram, requirements)
 
@@ -50,14 +54,17 @@ def _lines(path):
 
 class Mros2Checkout:
     """What the fit check reads of the user's mros2: whether it gives each Publisher a
-    writer of its own (has_writer; the class is at path, line) and whether its
-    embeddedRTPS takes samples in fragments (takes_data_frag)."""
+    writer of its own (has_writer; the class is at path, line), whether its
+    embeddedRTPS takes samples in fragments (takes_data_frag), whether it makes reliable
+    endpoints (has_qos) and whether it writes ros_discovery_info (in_ros_graph)."""
 
     def __init__(self, mros2_root):
         self.path = os.path.join(mros2_root, MROS2_HEADER)
         lines = _lines(self.path)
         self.takes_data_frag = any(_FRAGMENT_BUFFER.search(line)
                                    for line in _lines(os.path.join(mros2_root, RECEIVER_HEADER)))
+        self.has_qos = any(QOS_MACRO in line for line in lines)
+        self.in_ros_graph = any(GRAPH_MACRO in line for line in lines)
         starts = [number for number, line in enumerate(lines) if _PUBLISHER_CLASS.match(line)]
         if not starts:
             raise GenmrosError('declares no class Publisher; is this an mros2 checkout?',
@@ -100,7 +107,8 @@ class Fit:
         takes_data_frag = checkout is not None and checkout.takes_data_frag
         self.board_requirements = data_frag_requirements(
             endpoints, peer_max_message) if takes_data_frag else []
-        for requirement in requirements(endpoints) + self.board_requirements:
+        graph_writer = checkout is not None and checkout.in_ros_graph
+        for requirement in requirements(endpoints, graph_writer) + self.board_requirements:
             if requirement.needed is None:  # templates.hpp's static_assert counts it
                 continue
             setting = self._setting(requirement.setting)
@@ -114,6 +122,7 @@ class Fit:
                               'is not known here (--mros2-root): checked as without it'
                               % DATA_FRAG_PATCH)
         self._check_publishers(count(endpoints, PUBLISH), checkout)
+        self._check_qos(checkout)
 
     def _setting(self, name):
         if name not in self.settings and name in FRAGMENT_DEFAULTS:
@@ -210,6 +219,20 @@ class Fit:
                 "own; this mros2 sends every message through the last one created "
                 "(mros2::pub_ptr): apply genmros' mros2 patch set (genmros mros2-harden)"
                 % (checkout.path, checkout.line, count))
+
+    def _check_qos(self, checkout):
+        reliable = [e.describe() for e in self.endpoints if e.reliable]
+        if checkout is None:
+            if reliable:
+                self.notes.append('whether this mros2 makes reliable endpoints (the mros2 patch '
+                                  '%s) is not known here (--mros2-root): templates.hpp stops '
+                                  'the build without it' % QOS_PATCH)
+        elif reliable and not checkout.has_qos:
+            self.misfits.append(
+                '%s:%d: the firmware: its reliable endpoints (%s) need mros2 with the patch %s; '
+                'this one makes every endpoint best-effort: apply genmros\' mros2 patch set '
+                '(genmros mros2-harden)' % (checkout.path, checkout.line, ', '.join(reliable),
+                                            QOS_PATCH))
 
     def refuse(self):
         """Raise the misfits as one error line each."""

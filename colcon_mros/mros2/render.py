@@ -14,8 +14,9 @@ from colcon_mros.core.render import render_template, static_text
 from colcon_mros.mros2.cpp import (SUPPORT_HEADERS, WIRE_HEADER, WIRE_VERSION, CppMessage,
                                    CppMessageName, CppService)
 from colcon_mros.mros2.endpoints import PUBLISH, SUBSCRIBE, messages
-from colcon_mros.mros2.rules import (READER_STACK_MARGIN, READER_STACK_MARGIN_MACRO,
-                                     requirements)
+from colcon_mros.mros2.rules import (GRAPH_MACRO, GRAPH_PATCH, QOS_MACRO, QOS_PATCH,
+                                     READER_STACK_MARGIN, READER_STACK_MARGIN_MACRO,
+                                     graph_writer_requirements, requirements)
 
 TEMPLATE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'templates')
 # The wire header; the containers header is the core's.
@@ -54,13 +55,20 @@ def templates_header(endpoints, board_requirements=()):
     subscribe calls for the message types a firmware's endpoints use, and
     the rules' static_asserts on the board's rtps::Config, with
     board_requirements (those of the fit check's board: its mros2 and the
-    ROS side)."""
+    ROS side), and those of the writer of the patch node-in-the-ros-graph
+    where its mros2.h says it is in. It compiles against mros2 with the
+    patch reliable-where-asked and without; a firmware with reliable
+    endpoints stops with an #error without it."""
     publish = [CppMessageName(m) for m in messages(endpoints, PUBLISH)]
     subscribe = [CppMessageName(m) for m in messages(endpoints, SUBSCRIBE)]
+    reliable = sorted(e.describe() for e in endpoints if e.reliable)
     return {TEMPLATES_HEADER: _render(
         'templates.hpp.em', headers=sorted({name.header for name in publish + subscribe}),
         requirements=requirements(endpoints) + list(board_requirements),
+        graph_macro=GRAPH_MACRO, graph_patch=GRAPH_PATCH,
+        graph_requirements=graph_writer_requirements(endpoints),
         stack_margin_macro=READER_STACK_MARGIN_MACRO, stack_margin=READER_STACK_MARGIN,
+        qos_macro=QOS_MACRO, qos_patch=QOS_PATCH, reliable=', '.join(reliable),
         publish=publish, subscribe=subscribe)}
 
 

@@ -25,9 +25,13 @@ WRITERS_PER_PARTICIPANT = 'NUM_WRITERS_PER_PARTICIPANT'
 READERS_PER_PARTICIPANT = 'NUM_READERS_PER_PARTICIPANT'
 STATELESS_WRITERS = 'NUM_STATELESS_WRITERS'
 STATELESS_READERS = 'NUM_STATELESS_READERS'
+STATEFUL_WRITERS = 'NUM_STATEFUL_WRITERS'
+STATEFUL_READERS = 'NUM_STATEFUL_READERS'
+STATEFUL_HISTORY = 'HISTORY_SIZE_STATEFUL'
 READER_STACK = 'THREAD_POOL_READER_STACKSIZE'
 SETTINGS = (TYPENAME_MAX, TOPICNAME_MAX, WRITERS_PER_PARTICIPANT, READERS_PER_PARTICIPANT,
-            STATELESS_WRITERS, STATELESS_READERS, READER_STACK)
+            STATELESS_WRITERS, STATELESS_READERS, STATEFUL_WRITERS, STATEFUL_READERS,
+            STATEFUL_HISTORY, READER_STACK)
 
 # mros2 names a topic's DDS endpoints 'rt/<topic>', as rmw does.
 TOPIC_PREFIX = 'rt/'
@@ -36,9 +40,21 @@ TOPIC_PREFIX = 'rt/'
 # (Participant::addBuiltInEndpoints); mros2 makes one participant.
 BUILTIN_ENDPOINTS = 3
 # Of the domain's stateless (best-effort) writers and readers, the
-# participant's SPDP writer and reader take one each; mros2's own endpoints
-# are all best-effort (createWriter/createReader with reliable false).
+# participant's SPDP writer and reader take one each; of its stateful
+# (reliable) ones, its SEDP writers and readers (publications, subscriptions)
+# two each. mros2 makes an endpoint stateless, unless the app asks for a
+# reliable one (the mros2 patch reliable-where-asked).
 BUILTIN_STATELESS = 1
+BUILTIN_STATEFUL = 2
+QOS_PATCH = 'reliable-where-asked'
+# What the patched mros2.h defines, and templates.hpp and the fit check read.
+QOS_MACRO = 'MROS2_RELIABLE_WHERE_ASKED'
+# The mros2 patch node-in-the-ros-graph's writer: its topic and DDS type name, without
+# mros2's topic prefix.
+GRAPH_PATCH = 'node-in-the-ros-graph'
+GRAPH_MACRO = 'MROS2_NODE_IN_THE_ROS_GRAPH'
+GRAPH_TOPIC = 'ros_discovery_info'
+GRAPH_TYPE = 'rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_'
 # What arrives in one datagram around a sample, as a Fast DDS or rmw writer
 # sends a DATA to one reader: RTPS header 20, INFO_DST 16, INFO_TS 12, the
 # DATA submessage's header and fields 24, the encapsulation header 4.
@@ -96,13 +112,18 @@ class Requirement:
             subject, what, setting, self.cpp_needed, CONFIG_HEADER)
 
 
-def name_requirements(endpoints):
-    """Each endpoint type's DDS type name and each topic's name, with NULs."""
+def name_requirements(endpoints, graph_writer=False):
+    """Each endpoint type's DDS type name and each topic's name, with NULs (and with
+    graph_writer, GRAPH_PATCH's type name)."""
     requirements = []
     names = {e.wire_name.dds_type_name: e.wire_name for e in endpoints}
     for name in sorted(names):
         requirements.append(Requirement(
             TYPENAME_MAX, name, 'its DDS type name and its NUL', names[name].dds_type_name_size))
+    if graph_writer:
+        requirements.append(Requirement(
+            TYPENAME_MAX, GRAPH_TYPE, 'its DDS type name and its NUL (the writer on %s of the '
+            'mros2 patch %s)' % (GRAPH_TOPIC, GRAPH_PATCH), len(GRAPH_TYPE) + 1))
     for topic in sorted({e.topic for e in endpoints if e.topic is not None}):
         requirements.append(Requirement(
             TOPICNAME_MAX, 'topic %s' % topic, "'%s%s' and its NUL" % (TOPIC_PREFIX, topic),
@@ -110,25 +131,53 @@ def name_requirements(endpoints):
     return requirements
 
 
-def endpoint_count_requirements(endpoints):
-    """The participant's writers and readers, and the domain's stateless ones."""
-    counted_how = 'one per topic' if topics_known(endpoints) else 'at least one per type'
-    publishers, subscribers = count(endpoints, PUBLISH), count(endpoints, SUBSCRIBE)
+def _counted(number, kind, endpoints):
+    how = 'one per topic' if topics_known(endpoints) else 'at least one per type'
+    return '%d %s%s (%s)' % (number, kind, '' if number == 1 else 's', how)
+
+
+def endpoint_count_requirements(endpoints, graph_writer=False):
+    """The participant's writers and readers, and the domain's stateless and stateful
+    ones (with graph_writer, GRAPH_PATCH's writer among them)."""
     requirements = []
-    for number, kind, per_participant, stateless in (
-            (publishers, 'publisher', WRITERS_PER_PARTICIPANT, STATELESS_WRITERS),
-            (subscribers, 'subscriber', READERS_PER_PARTICIPANT, STATELESS_READERS)):
-        if not number:
-            continue
-        counted = '%d %s%s (%s)' % (number, kind, '' if number == 1 else 's', counted_how)
-        requirements.append(Requirement(
-            per_participant, 'the firmware', "its %s and the participant's %d built-in ones "
-            '(SPDP, SEDP publications, SEDP subscriptions)' % (counted, BUILTIN_ENDPOINTS),
-            number + BUILTIN_ENDPOINTS))
-        requirements.append(Requirement(
-            stateless, 'the firmware', "its %s, best-effort, and the participant's SPDP one"
-            % counted, number + BUILTIN_STATELESS))
+    graph = ' and its writer on %s (the mros2 patch %s)' % (GRAPH_TOPIC, GRAPH_PATCH)
+    for direction, kind, per_participant, stateless, stateful in (
+            (PUBLISH, 'publisher', WRITERS_PER_PARTICIPANT, STATELESS_WRITERS,
+             STATEFUL_WRITERS),
+            (SUBSCRIBE, 'subscriber', READERS_PER_PARTICIPANT, STATELESS_READERS,
+             STATEFUL_READERS)):
+        extra = 1 if graph_writer and direction == PUBLISH else 0
+        number = count(endpoints, direction)
+        if number + extra:
+            requirements.append(Requirement(
+                per_participant, 'the firmware', "its %s%s and the participant's %d built-in "
+                'ones (SPDP, SEDP publications, SEDP subscriptions)'
+                % (_counted(number, kind, endpoints), graph if extra else '', BUILTIN_ENDPOINTS),
+                number + extra + BUILTIN_ENDPOINTS))
+        best_effort = count(endpoints, direction, reliable=False)
+        if best_effort:
+            requirements.append(Requirement(
+                stateless, 'the firmware', "its %s, best-effort, and the participant's SPDP "
+                'one' % _counted(best_effort, kind, endpoints), best_effort + BUILTIN_STATELESS))
+        reliable = count(endpoints, direction, reliable=True)
+        if reliable + extra:
+            requirements.append(Requirement(
+                stateful, 'the firmware', "its %s, reliable,%s and the participant's %d SEDP "
+                'ones' % (_counted(reliable, kind, endpoints), graph if extra else '',
+                          BUILTIN_STATEFUL), reliable + extra + BUILTIN_STATEFUL))
     return requirements
+
+
+def history_requirements(endpoints):
+    """Each reliable publisher's depth, which its stateful writer's history holds."""
+    depths = {}
+    for endpoint in endpoints:
+        if endpoint.direction == PUBLISH and endpoint.reliable:
+            subject = 'topic %s' % endpoint.topic
+            depths[subject] = max(depths.get(subject, 0), endpoint.depth)
+    return [Requirement(STATEFUL_HISTORY, subject, 'a reliable publisher keeping its last %d '
+                        'samples' % depth, depth)
+            for subject, depth in sorted(depths.items())]
 
 
 def reader_stack_requirements(endpoints):
@@ -142,10 +191,19 @@ def reader_stack_requirements(endpoints):
         for name in subscribed]
 
 
-def requirements(endpoints):
-    """Every requirement of a firmware's endpoints."""
-    return (name_requirements(endpoints) + endpoint_count_requirements(endpoints) +
-            reader_stack_requirements(endpoints))
+def requirements(endpoints, graph_writer=False):
+    """Every requirement of a firmware's endpoints; graph_writer: with the mros2 patch
+    GRAPH_PATCH's writer too."""
+    return (name_requirements(endpoints, graph_writer) +
+            endpoint_count_requirements(endpoints, graph_writer) +
+            history_requirements(endpoints) + reader_stack_requirements(endpoints))
+
+
+def graph_writer_requirements(endpoints):
+    """The requirements the mros2 patch GRAPH_PATCH's writer adds or makes larger."""
+    without = {requirement.assertion_message for requirement in requirements(endpoints)}
+    return [requirement for requirement in requirements(endpoints, graph_writer=True)
+            if requirement.assertion_message not in without]
 
 
 def largest_datagram(message):

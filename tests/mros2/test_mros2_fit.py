@@ -9,6 +9,7 @@ small values so that each rule has a misfit.
 """
 
 import os
+import subprocess
 
 import pytest
 
@@ -285,3 +286,107 @@ def test_without_the_patch_a_sample_the_peer_fragments_is_a_misfit(tmp_path):
         'maxMessageSize, or apply the mros2 patch data-frag-for-best-effort-readers (genmros '
         'mros2-harden)' % LARGE]
     assert fit.board_requirements == []
+
+
+# The settings of the stateful (reliable) endpoints, after the config's last line.
+STATEFUL = ('const uint8_t NUM_STATEFUL_WRITERS = 3;\nconst uint8_t NUM_STATEFUL_READERS = 2;\n'
+            'const uint8_t HISTORY_SIZE_STATEFUL = 10;\n')
+# mros2.h with one writer per publisher, and with the patches reliable-where-asked and
+# node-in-the-ros-graph (the macros they define).
+PUBLISHER_WITH_WRITER = PUBLISHER_WITHOUT_WRITER.replace(
+    'std::string topic_name;', 'std::string topic_name;\n    rtps::Writer* writer;')
+QOS_PATCHED = '#define MROS2_RELIABLE_WHERE_ASKED 1\n' + PUBLISHER_WITH_WRITER
+GRAPH_PATCHED = '#define MROS2_NODE_IN_THE_ROS_GRAPH 1\n' + QOS_PATCHED
+
+
+def _stateful_config():
+    return _roomy().replace('const int THREAD_POOL_READER_STACKSIZE',
+                            STATEFUL + 'const int THREAD_POOL_READER_STACKSIZE')
+
+
+def test_reliable_endpoints_take_stateful_slots_and_a_history_of_their_depth(tmp_path):
+    config = str(tmp_path / 'rtps' / 'config.h')
+    fit = _fit(tmp_path, ['a:%sEmpty:reliable' % TIF, 'b:%sEmpty:reliable:11' % TIF,
+                          'c:%sEmpty' % TIF],
+               ['d:%sEmpty:reliable' % TIF, 'e:%sEmpty:reliable:4' % TIF],
+               config=_stateful_config(), publisher=QOS_PATCHED)
+    assert fit.misfits == [
+        "%s:13: the firmware: its 2 publishers (one per topic), reliable, and the participant's "
+        '2 SEDP ones needs NUM_STATEFUL_WRITERS >= 4 (it is 3)' % config,
+        "%s:14: the firmware: its 2 subscribers (one per topic), reliable, and the "
+        "participant's 2 SEDP ones needs NUM_STATEFUL_READERS >= 4 (it is 2)" % config,
+        '%s:15: topic b: a reliable publisher keeping its last 11 samples needs '
+        'HISTORY_SIZE_STATEFUL >= 11 (it is 10)' % config]
+    report = fit.report()
+    assert '| publish b %sEmpty (reliable, depth 11) |' % TIF in report
+    assert 'NUM_STATEFUL_WRITERS 3, NUM_STATEFUL_READERS 2, HISTORY_SIZE_STATEFUL 10' in report
+
+
+def test_reliable_endpoints_need_the_patch(tmp_path):
+    header = str(tmp_path / 'mros2' / 'include' / 'mros2.h')
+    fit = _fit(tmp_path, ['a:%sEmpty:reliable' % TIF], [], config=_stateful_config(),
+               publisher=PUBLISHER_WITH_WRITER)
+    assert fit.misfits == [
+        '%s:3: the firmware: its reliable endpoints (publish a %sEmpty (reliable, depth 10)) '
+        'need mros2 with the patch reliable-where-asked; this one makes every endpoint '
+        "best-effort: apply genmros' mros2 patch set (genmros mros2-harden)" % (header, TIF)]
+    unknown = _fit(tmp_path, ['a:%sEmpty:reliable' % TIF], [], config=_stateful_config())
+    assert unknown.misfits == []
+    assert unknown.notes == [
+        'whether this mros2 makes reliable endpoints (the mros2 patch reliable-where-asked) is '
+        'not known here (--mros2-root): templates.hpp stops the build without it']
+
+
+def test_the_graph_patch_counts_its_writer(tmp_path):
+    config = str(tmp_path / 'rtps' / 'config.h')
+    small = _stateful_config().replace('MAX_TYPENAME_LENGTH = 64', 'MAX_TYPENAME_LENGTH = 51')
+    fit = _fit(tmp_path, ['a:%sEmpty:reliable' % TIF], [], config=small, publisher=GRAPH_PATCHED)
+    assert fit.misfits == [
+        '%s:11: rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_: its DDS type name and its '
+        'NUL (the writer on ros_discovery_info of the mros2 patch node-in-the-ros-graph) needs '
+        'MAX_TYPENAME_LENGTH >= 52 (it is 51)' % config,
+        "%s:13: the firmware: its 1 publisher (one per topic), reliable, and its writer on "
+        "ros_discovery_info (the mros2 patch node-in-the-ros-graph) and the participant's 2 "
+        'SEDP ones needs NUM_STATEFUL_WRITERS >= 4 (it is 3)' % config]
+    # Without the patch, the same firmware fits.
+    assert _fit(tmp_path, ['a:%sEmpty:reliable' % TIF], [], config=small,
+                publisher=QOS_PATCHED).misfits == []
+
+
+def test_templates_hpp_compiles_against_either_mros2_and_holds_the_graph_writers_rules(
+        tmp_path):
+    """templates.hpp's instantiations take the signatures of the mros2.h they meet (a stand-in
+    of each: as released, int and void; patched, mros2::QoS and bool); a reliable endpoint
+    stops the build without the patch, with its line; the graph writer's rules hold where
+    mros2.h says that patch is in."""
+    fit = _fit(tmp_path, ['a:%sEmpty:reliable' % TIF, 'b:%sEmpty' % TIF], [],
+               config=_stateful_config())
+    text = templates_header(fit.endpoints, fit.board_requirements)['templates.hpp']
+    assert ('#ifndef MROS2_NODE_IN_THE_ROS_GRAPH' not in text and
+            '#ifdef MROS2_NODE_IN_THE_ROS_GRAPH' in text)
+    body = text[text.index('// mros2 with genmros'):]
+    released = ('namespace mros2 {\nclass Publisher {\n public:\n  template <class T> void '
+                'publish(T &msg);\n};\nclass Node {\n public:\n  template <class T> Publisher '
+                'create_publisher(std::string topic_name, int qos);\n};\n'
+                'template <class T> Publisher Node::create_publisher(std::string, int) '
+                '{ return Publisher(); }\ntemplate <class T> void Publisher::publish(T &) {}\n}\n')
+    patched = ('#define MROS2_RELIABLE_WHERE_ASKED 1\n' + released.replace(
+        'void publish', 'bool publish').replace(
+        'template <class T> void Publisher::publish(T &) {}',
+        'template <class T> bool Publisher::publish(T &) { return true; }').replace(
+        'int qos', 'QoS qos').replace('std::string, int', 'std::string, QoS').replace(
+        'namespace mros2 {\n', 'namespace mros2 {\nstruct QoS { QoS(int) {} };\n'))
+    message = 'namespace test_interface_files { namespace msg { struct Empty {}; } }\n'
+    results = {}
+    for name, header in (('released', released), ('patched', patched)):
+        source = tmp_path / ('%s.cpp' % name)
+        source.write_text('#include <string>\n' + header + message + body)
+        results[name] = subprocess.run(
+            ['g++', '-std=c++14', '-Wall', '-Wextra', '-pedantic', '-fsyntax-only', str(source)],
+            capture_output=True, text=True)
+    assert results['patched'].returncode == 0, results['patched'].stderr
+    assert results['released'].returncode != 0
+    assert ("#error \"reliable endpoints (publish a %sEmpty (reliable, depth 10)) need mros2 "
+            "with genmros' patch reliable-where-asked: apply genmros' mros2 patch set (genmros "
+            'mros2-harden)"' % TIF) in results['released'].stderr
+    assert results['released'].stderr.count('error:') == 1, results['released'].stderr

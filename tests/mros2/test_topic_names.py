@@ -11,7 +11,7 @@ import os
 import pytest
 
 from colcon_mros.errors import GenmrosError
-from colcon_mros.mros2.endpoints import split_endpoint, topic_name_problems
+from colcon_mros.mros2.endpoints import split_endpoint, split_qos, topic_name_problems
 
 from support.checkout import run_genmros
 
@@ -92,3 +92,40 @@ def test_mros2_export_notes_a_leading_slash_and_writes_the_name_without_it(tmp_p
     assert result.stderr.startswith("genmros: note: topic '/battery': the app passes it to "
                                     "mros2 as 'battery'"), result.stderr
     assert 'rt//' not in (tmp_path / 'templates.hpp').read_text()
+
+
+@pytest.mark.parametrize('text,split', [
+    ('chatter:%s' % EMPTY, ('chatter:%s' % EMPTY, False, 10)),
+    ('chatter:%s:reliable' % EMPTY, ('chatter:%s' % EMPTY, True, 10)),
+    ('chatter:%s:reliable:3' % EMPTY, ('chatter:%s' % EMPTY, True, 3)),
+    ('chatter:%s:best_effort' % EMPTY, ('chatter:%s' % EMPTY, False, 10)),
+    (EMPTY, (EMPTY, False, 10))])
+def test_a_qos_follows_the_type(text, split):
+    assert split_qos(text) == split
+
+
+@pytest.mark.parametrize('text,error', [
+    ('%s:reliable' % EMPTY, "a QoS needs the topic: TOPIC:TYPE:reliable"),
+    ('chatter:%s:reliabel' % EMPTY, "'reliabel' is no QoS (reliable, reliable:DEPTH or "
+                                    'best_effort)'),
+    ('chatter:%s:5' % EMPTY, "'5' is no QoS"),
+    ('chatter:%s:best_effort:5' % EMPTY, 'a depth goes with reliable (a best-effort endpoint '
+                                         'keeps no samples)'),
+    ('chatter:%s:reliable:0' % EMPTY, 'a depth of 0 keeps nothing (1 or more)')])
+def test_a_bad_qos_is_refused_with_its_text(text, error):
+    with pytest.raises(GenmrosError) as raised:
+        split_qos(text)
+    assert str(raised.value).startswith("'%s': %s" % (text, error))
+
+
+def test_one_endpoint_given_with_two_qos_is_refused(tmp_path, ros2_prefixes):
+    arguments = ['mros2-export', '-o', str(tmp_path / 'out')]
+    for prefix in ros2_prefixes:
+        arguments += ['--prefix', prefix]
+    result = run_genmros(*arguments + ['--publish', 'chatter:%s' % EMPTY,
+                                       '--publish', 'chatter:%s:reliable' % EMPTY], check=False)
+    assert result.returncode == 1
+    assert result.stderr.splitlines() == [
+        'genmros: error: --publish chatter:%s: given with two QoS; mros2 makes one writer per '
+        'topic and type' % EMPTY]
+    assert not os.path.exists(str(tmp_path / 'out'))

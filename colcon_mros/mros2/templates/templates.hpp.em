@@ -19,13 +19,36 @@
 static_assert(@(requirement.cpp_needed) <= rtps::Config::@(requirement.setting),
               "@(requirement.assertion_message)");
 @[end for]@
+@[if graph_requirements]@
+// The writer on ros_discovery_info of genmros' patch @(graph_patch).
+#ifdef @(graph_macro)
+@[for requirement in graph_requirements]@
+static_assert(@(requirement.cpp_needed) <= rtps::Config::@(requirement.setting),
+              "@(requirement.assertion_message)");
+@[end for]@
+#endif
+@[end if]@
+
+// mros2 with genmros' patch @(qos_patch) takes a mros2::QoS (an int converts
+// to one) and publish returns whether the sample was taken; as released, it
+// takes an int and returns nothing.
+#ifdef @(qos_macro)
+typedef mros2::QoS genmros_qos_argument;
+typedef bool genmros_publish_result;
+#else
+@[if reliable]@
+#error "reliable endpoints (@(reliable)) need mros2 with genmros' patch @(qos_patch): apply genmros' mros2 patch set (genmros mros2-harden)"
+@[end if]@
+typedef int genmros_qos_argument;
+typedef void genmros_publish_result;
+#endif
 @[for msg in publish]@
 
-template mros2::Publisher mros2::Node::create_publisher<@(msg.cpp_name)>(std::string topic_name, int qos);
-template void mros2::Publisher::publish(@(msg.cpp_name)& msg);
+template mros2::Publisher mros2::Node::create_publisher<@(msg.cpp_name)>(std::string topic_name, genmros_qos_argument qos);
+template genmros_publish_result mros2::Publisher::publish(@(msg.cpp_name)& msg);
 @[end for]@
 @[for msg in subscribe]@
 
-template mros2::Subscriber mros2::Node::create_subscription(std::string topic_name, int qos, void (*fp)(@(msg.cpp_name)*));
+template mros2::Subscriber mros2::Node::create_subscription(std::string topic_name, genmros_qos_argument qos, void (*fp)(@(msg.cpp_name)*));
 template void mros2::Subscriber::callback_handler<@(msg.cpp_name)>(void* callee, const rtps::ReaderCacheChange& cacheChange);
 @[end for]@
