@@ -31,6 +31,7 @@ from colcon_mros.mros2.rules import (CONFIG_HEADER, DATA_FRAG_PATCH, DISCOVERY_A
                                      QOS_MACRO, QOS_PATCH, READER_QUEUE, SETTINGS,
                                      TYPENAME_MAX,
                                      data_frag_requirements, discovery_problem,
+                                     graph_type_name_requirement,
                                      largest_datagram, requirements)
 
 # mros2's public header, where its Publisher class is declared.
@@ -115,6 +116,8 @@ class Fit:
             if setting.value < requirement.needed:
                 self.misfits.append(misfit_line(setting, requirement.subject, requirement.what,
                                                 requirement.needed))
+        if graph_writer:
+            self._check_graph_type_name()
         subscribed = messages(endpoints, SUBSCRIBE)
         self._check_receive_limit(subscribed, receive_limit, takes_data_frag)
         if subscribed and checkout is None:
@@ -219,6 +222,14 @@ class Fit:
                 "own; this mros2 sends every message through the last one created "
                 "(mros2::pub_ptr): apply genmros' mros2 patch set (genmros mros2-harden)"
                 % (checkout.path, checkout.line, count))
+
+    def _check_graph_type_name(self):
+        """A warning: the board works, unlisted."""
+        requirement = graph_type_name_requirement()
+        setting = self._setting(requirement.setting)
+        if setting.value < requirement.needed:
+            self.warnings.append(misfit_line(setting, requirement.subject, requirement.what,
+                                             requirement.needed))
 
     def _check_qos(self, checkout):
         reliable = [e.describe() for e in self.endpoints if e.reliable]

@@ -112,18 +112,13 @@ class Requirement:
             subject, what, setting, self.cpp_needed, CONFIG_HEADER)
 
 
-def name_requirements(endpoints, graph_writer=False):
-    """Each endpoint type's DDS type name and each topic's name, with NULs (and with
-    graph_writer, GRAPH_PATCH's type name)."""
+def name_requirements(endpoints):
+    """Each endpoint type's DDS type name and each topic's name, with NULs."""
     requirements = []
     names = {e.wire_name.dds_type_name: e.wire_name for e in endpoints}
     for name in sorted(names):
         requirements.append(Requirement(
             TYPENAME_MAX, name, 'its DDS type name and its NUL', names[name].dds_type_name_size))
-    if graph_writer:
-        requirements.append(Requirement(
-            TYPENAME_MAX, GRAPH_TYPE, 'its DDS type name and its NUL (the writer on %s of the '
-            'mros2 patch %s)' % (GRAPH_TOPIC, GRAPH_PATCH), len(GRAPH_TYPE) + 1))
     for topic in sorted({e.topic for e in endpoints if e.topic is not None}):
         requirements.append(Requirement(
             TOPICNAME_MAX, 'topic %s' % topic, "'%s%s' and its NUL" % (TOPIC_PREFIX, topic),
@@ -193,10 +188,18 @@ def reader_stack_requirements(endpoints):
 
 def requirements(endpoints, graph_writer=False):
     """Every requirement of a firmware's endpoints; graph_writer: with the mros2 patch
-    GRAPH_PATCH's writer too."""
-    return (name_requirements(endpoints, graph_writer) +
+    GRAPH_PATCH's writer too, which mros2 makes before them."""
+    return (name_requirements(endpoints) +
             endpoint_count_requirements(endpoints, graph_writer) +
             history_requirements(endpoints) + reader_stack_requirements(endpoints))
+
+
+def graph_type_name_requirement():
+    """GRAPH_PATCH's type name, without room for which mros2 makes no writer on GRAPH_TOPIC
+    and the board runs unlisted in the ROS 2 graph (nothing else fails)."""
+    return Requirement(TYPENAME_MAX, GRAPH_TYPE, 'its DDS type name and its NUL (the writer '
+                       'on %s of the mros2 patch %s, without which ROS 2 does not list the '
+                       "board's node)" % (GRAPH_TOPIC, GRAPH_PATCH), len(GRAPH_TYPE) + 1)
 
 
 def graph_writer_requirements(endpoints):

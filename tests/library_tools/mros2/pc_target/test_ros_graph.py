@@ -5,9 +5,11 @@ as rclpy's graph API shows it, the API ``ros2 node list`` and ``ros2 node info``
 The app is testing/mros2_pc_apps/reliable_echo (node reliable_echo: publishers text_echo
 and plain_echo, subscriptions text and plain, all std_msgs/msg/String). The board's config
 is mros2-posix' with MAX_TYPENAME_LENGTH 64 (ros_discovery_info's type name takes 52) and a
-lease of 10 s (mros2-posix announces 100)."""
+lease of 10 s (embeddedRTPS announces SPDP_DEFAULT_REMOTE_LEASE_DURATION, 100 s in
+mros2-posix)."""
 
 import os
+import re
 
 import pytest
 
@@ -31,9 +33,10 @@ def program(posix_root, tmp_path_factory):
     work = tmp_path_factory.mktemp('ros_graph')
     with open(config_of(posix_root)) as stream:
         config = stream.read()
-    changed = config.replace('MAX_TYPENAME_LENGTH = 40', 'MAX_TYPENAME_LENGTH = 64').replace(
-        'SPDP_LEASE_DURATION = {100, 0}', 'SPDP_LEASE_DURATION = {%d, 0}' % LEASE)
-    assert changed.count('= 64') == 1 and changed.count('{%d, 0}' % LEASE) == 1
+    changed, leases = re.subn(r'SPDP_DEFAULT_REMOTE_LEASE_DURATION = \{\s*100, 0\}',
+                              'SPDP_DEFAULT_REMOTE_LEASE_DURATION = {%d, 0}' % LEASE, config)
+    changed = changed.replace('MAX_TYPENAME_LENGTH = 40', 'MAX_TYPENAME_LENGTH = 64')
+    assert leases == 1 and changed.count('MAX_TYPENAME_LENGTH = 64') == 1
     (work / 'rtps').mkdir()
     (work / 'rtps' / 'config.h').write_text(changed)
     return mros2_pc.build(APP, str(work / 'build'), MROS2_ROOT, str(work / 'rtps' / 'config.h'),
