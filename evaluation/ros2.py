@@ -246,6 +246,10 @@ APP_ALL_PUBLISHES = ['image:sensor_msgs/msg/Image', 'chatter:std_msgs/msg/String
                      'reading:mros2_test_msgs/msg/Reading', 'command_echo:std_msgs/msg/String',
                      'twist_echo:geometry_msgs/msg/Twist',
                      'reading_in_echo:mros2_test_msgs/msg/Reading']
+# Hardened, the app publishes chatter's samples from a reliable publisher too.
+APP_RELIABLE_PUBLISH = 'chatter_reliable:std_msgs/msg/String:reliable:10'
+# The app's node, as the ROS 2 graph lists it with the patch node-in-the-ros-graph.
+APP_NODE = 'main_job_board'
 
 
 def mros2_pc_run(workspace, work_dir, mros2_root, hardened):
@@ -256,7 +260,8 @@ def mros2_pc_run(workspace, work_dir, mros2_root, hardened):
     from testing import mros2_pc
     os.makedirs(work_dir, exist_ok=True)
     installs = sorted(glob.glob(os.path.join(workspace.root, 'install', '*')))
-    publishes = APP_ALL_PUBLISHES if hardened else APP_ALL_PUBLISHES[:1]
+    publishes = APP_ALL_PUBLISHES + [APP_RELIABLE_PUBLISH] if hardened else \
+        APP_ALL_PUBLISHES[:1]
     options = {'hardened': True, 'app_defines': ('APP_ALL_PUBLISHERS',)} if hardened else \
         {'patches': mros2_pc.TALKING_PATCHES}
     program = mros2_pc.build(MROS2_APP, os.path.join(work_dir, 'build'), mros2_root,
@@ -265,20 +270,45 @@ def mros2_pc_run(workspace, work_dir, mros2_root, hardened):
     environment = {key: value for key, value in workspace.environment().items()
                    if key != 'ROS_AUTOMATIC_DISCOVERY_RANGE'}
     topics = [endpoint.split(':')[0] for endpoint in publishes]
+    graph_rows = []
     with mros2_pc.Session(program, work_dir) as session:
         session.start_board()
         if not session.wait_for_output('app ready'):
             raise Failure('the board stopped: %s' % session.output()[-500:])
+        if hardened:
+            watcher = session.graph_watcher(APP_NODE, len(publishes), len(APP_SUBSCRIBES),
+                                            wait=PEER_TIMEOUT)
+            graph_rows.append(graph_row(watcher.seen(), publishes))
         peer = subprocess.Popen(
             session.network.ros_command([os.path.join(WHEELS, 'bin', 'python'), PEER, '--count',
                                          str(SAMPLES), '--timeout', str(PEER_TIMEOUT),
-                                         '--best-effort', '--topics', ','.join(topics)]),
+                                         '--best-effort', '--topics', ','.join(topics)] +
+                                        (['--reliable-chatter'] if hardened else [])),
             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=environment)
         stdout, stderr = peer.communicate(timeout=PEER_TIMEOUT + 60)
         output = session.stop_board()
+        if hardened:
+            watcher.stop()
     with open(os.path.join(work_dir, 'board.log'), 'w') as log:
         log.write(output)
     results = peer_rows(stdout.splitlines(), 'the board')
     if not results:
         raise Failure('the rclpy peer reported nothing: %s' % stderr[-500:])
-    return results, output
+    return graph_rows + results, output
+
+
+def graph_row(seen, publishes):
+    """(title, detail, problem) of what rclpy's graph API showed of the app's node: listed,
+    with exactly the app's topics and types."""
+    def names(endpoints):
+        return sorted(['/' + endpoint.split(':')[0], [endpoint.split(':')[1]]]
+                      for endpoint in endpoints)
+    listed = [APP_NODE, '/'] in seen['nodes']
+    detail = '%s in /, listed after %s s: publishers %s; subscribers %s' % (
+        APP_NODE, 'never' if seen['seen_after'] is None else '%.1f' % seen['seen_after'],
+        ', '.join(topic for topic, _ in seen['publishers']),
+        ', '.join(topic for topic, _ in seen['subscribers']))
+    exact = seen['publishers'] == names(publishes) and \
+        seen['subscribers'] == names(APP_SUBSCRIBES)
+    return ('the node listed by rclpy (get_node_names_and_namespaces, *_by_node)', detail,
+            None if listed and exact else detail)

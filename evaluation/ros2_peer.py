@@ -16,12 +16,15 @@ leaves as the buffer held it; the board writes zeros there, as rosbags.)
 One line per topic; exits 0 only if every sample came and matched.
 
   ros2_peer.py [--count N] [--timeout SECONDS] [--best-effort] [--topics T,...]
+               [--reliable-chatter]
 
 With --best-effort (a board on mros2 itself, whose endpoints are best-effort) it is the
 plain node (testing/mros2_pc_peer.py does the same with any samples): its endpoints are
 best-effort too, and once the graph shows each of its publishers and subscriptions matched
 with the board, it waits 3 s more, sends each sample once, 100 ms apart, and waits for the
-replies; nothing is sent again. --topics checks only those topics.
+replies; nothing is sent again. --topics checks only those topics. --reliable-chatter checks
+chatter_reliable too (the board's reliable publisher of chatter's samples), with rclpy's
+default QoS (reliable, keep last 10), as most nodes subscribe.
 
 Runs with rclpy (the ROS 2 wheels' venv) and test_ws_ros2's Python
 packages on the path; rosbags comes from the checkout's build/test-python.
@@ -37,7 +40,7 @@ import numpy
 import rclpy
 from geometry_msgs.msg import Twist, Vector3
 from rclpy.node import Node
-from rclpy.qos import QoSHistoryPolicy, QoSProfile, ReliabilityPolicy
+from rclpy.qos import QoSHistoryPolicy, QoSProfile, ReliabilityPolicy, qos_profile_default
 from rclpy.serialization import serialize_message
 from std_msgs.msg import String
 from sensor_msgs.msg import Image
@@ -130,10 +133,11 @@ def twist(number):
 class Topic:
     """Samples expected on one topic, and those that came."""
 
-    def __init__(self, name, expected, what):
+    def __init__(self, name, expected, what, qos=None):
         self.name = name
         self.expected = expected
         self.what = what
+        self.qos = qos  # the peer's, where not its own
         self.received = []
 
     def receive(self, sample):
@@ -155,6 +159,7 @@ def main():
     parser.add_argument('--timeout', type=float, default=60)
     parser.add_argument('--best-effort', action='store_true')
     parser.add_argument('--topics', help='the topics to check (default: all)')
+    parser.add_argument('--reliable-chatter', action='store_true')
     options = parser.parse_args()
     qos = BEST_EFFORT if options.best_effort else QOS
     count = options.count
@@ -180,10 +185,16 @@ def main():
               'as rosbags writes the values rclpy sent to reading_in'),
     ]
     message_types = {'chatter': String, 'image': Image, 'reading': Reading,
-                     'command_echo': String, 'twist_echo': Twist, 'reading_in_echo': Reading}
+                     'command_echo': String, 'twist_echo': Twist, 'reading_in_echo': Reading,
+                     'chatter_reliable': String}
     if options.topics:
         topics = [topic for topic in topics if topic.name in options.topics.split(',')]
-    kept = [node.create_subscription(message_types[t.name], t.name, t.receive, qos, raw=True)
+    if options.reliable_chatter:
+        topics.append(Topic('chatter_reliable', [padded(board_string(n)) for n in range(count)],
+                            "as rosbags writes the board's values (rclpy's default QoS)",
+                            qos_profile_default))
+    kept = [node.create_subscription(message_types[t.name], t.name, t.receive, t.qos or qos,
+                                     raw=True)
             for t in topics]
     publishers = [(node.create_publisher(String, 'command', qos), sent_commands),
                   (node.create_publisher(Twist, 'twist', qos), sent_twists),

@@ -4,7 +4,7 @@
 mros2 board on the PC target and rclpy, mros2 as it is against --hardened, in one run.
 
     MROS2_ROOT=... MROS2_POSIX_ROOT=... /usr/bin/python3 bench/mros2/pc_round_trip.py
-        [--runs 5] [--trips 200] [--burst 1000] [--keep DIR]
+        [--runs 5] [--trips 200] [--burst 1000] [--keep DIR] [--qos]
 
 mros2-posix' echoreply_string (MROS2_POSIX_ROOT's workspace/, its include/rtps/config.h) is
 built with genmros mros2-pc for this PC, without sanitizers, twice: with MROS2_ROOT as it
@@ -15,6 +15,11 @@ the ROS 2 wheels) on its ROS side: --trips round trips one at a time, then --bur
 at once (best-effort: what is lost is counted). For orientation, rclpy_echo.py stands in
 for the board in the same place, rclpy on both sides. The builds take turns, run after run;
 each cell is the median of the runs' values (a run's round trip: its median).
+
+--qos compares instead, on one --hardened build of testing/mros2_pc_apps/reliable_echo, its
+best-effort echo (plain -> plain_echo, the peer best-effort) and its reliable one (text ->
+text_echo: mros2::QoS(10).reliable() on the board, reliable and keeping all in rclpy), the
+pairs taking turns run after run; the burst is then one at once into each.
 """
 
 import argparse
@@ -39,10 +44,17 @@ BUILDS = (('as it is + ' + ', '.join(mros2_pc.TALKING_PATCHES),
 RCLPY = 'rclpy echo (orientation)'
 
 
-def run_peer(network, work_dir, trips, burst):
+# --qos: the reliable_echo app's two echoes, and the peer's arguments for each.
+QOS_APP = os.path.join(REPO, 'testing', 'mros2_pc_apps', 'reliable_echo')
+QOS_PAIRS = (('best-effort: plain -> plain_echo', ['--to', 'plain', '--back', 'plain_echo']),
+             ('reliable: text -> text_echo', ['--to', 'text', '--back', 'text_echo',
+                                              '--reliable']))
+
+
+def run_peer(network, work_dir, trips, burst, arguments=()):
     result = subprocess.run(network.ros_command([os.path.join(mros2_pc.WHEELS_VENV, 'bin',
                                                               'python'), PEER, str(trips),
-                                                 str(burst)]),
+                                                 str(burst), *arguments]),
                             capture_output=True, text=True, timeout=600,
                             env=mros2_pc.peer_environment(work_dir))
     if result.returncode != 0:
@@ -50,11 +62,12 @@ def run_peer(network, work_dir, trips, burst):
     return json.loads(result.stdout)
 
 
-def run_board(program, work_dir, trips, burst):
+def run_board(program, work_dir, trips, burst, ready='ready to pub/sub message',
+              arguments=()):
     with mros2_pc.Session(program, work_dir) as session:
         session.start_board()
-        session.wait_for_output('ready to pub/sub message')
-        report = run_peer(session.network, work_dir, trips, burst)
+        session.wait_for_output(ready)
+        report = run_peer(session.network, work_dir, trips, burst, arguments)
         session.stop_board()
     return report
 
@@ -72,24 +85,11 @@ def run_rclpy(work_dir, trips, burst):
             echo.wait(timeout=60)
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
-    parser.add_argument('--runs', type=int, default=5)
-    parser.add_argument('--trips', type=int, default=200)
-    parser.add_argument('--burst', type=int, default=1000)
-    parser.add_argument('--keep', help='build and log here (default: a temporary directory)')
-    options = parser.parse_args()
-    mros2_root = os.environ.get('MROS2_ROOT')
-    posix_root = os.environ.get('MROS2_POSIX_ROOT')
-    if not mros2_root or not posix_root:
-        print('pc_round_trip.py: needs MROS2_ROOT (mros2 v0.5.4) and MROS2_POSIX_ROOT (its '
-              'example apps): docs/testing.md', file=sys.stderr)
-        return 2
-    work = options.keep or tempfile.mkdtemp(prefix='mros2_round_trip_')
+def run_builds(options, work, mros2_root, posix_root, config):
+    """{row: [peer reports]}: echoreply_string as it is and hardened, and rclpy's echo."""
     app = os.path.join(work, 'echoreply_string')
     if not os.path.isdir(app):
         shutil.copytree(os.path.join(posix_root, 'workspace', 'echoreply_string'), app)
-    config = os.path.join(posix_root, 'include', 'rtps', 'config.h')
     programs = {name: mros2_pc.build(app, os.path.join(work, 'build-%d' % index), mros2_root,
                                      config, target='native', **build)
                 for index, (name, build) in enumerate(BUILDS)}
@@ -99,14 +99,50 @@ def main():
             results[name].append(run_board(program, work, options.trips, options.burst))
         results[RCLPY].append(run_rclpy(work, options.trips, options.burst))
         print('run %d of %d done' % (run + 1, options.runs), file=sys.stderr, flush=True)
+    return results
+
+
+def run_qos(options, work, mros2_root, config):
+    """{row: [peer reports]}: reliable_echo's best-effort and reliable echoes."""
+    program = mros2_pc.build(QOS_APP, os.path.join(work, 'build-qos'), mros2_root, config,
+                             target='native', hardened=True)
+    results = {name: [] for name, _ in QOS_PAIRS}
+    for run in range(options.runs):
+        for name, arguments in QOS_PAIRS:
+            results[name].append(run_board(program, work, options.trips, options.burst,
+                                           'app ready', arguments))
+        print('run %d of %d done' % (run + 1, options.runs), file=sys.stderr, flush=True)
+    return results
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    parser.add_argument('--runs', type=int, default=5)
+    parser.add_argument('--trips', type=int, default=200)
+    parser.add_argument('--burst', type=int, default=1000)
+    parser.add_argument('--keep', help='build and log here (default: a temporary directory)')
+    parser.add_argument('--qos', action='store_true',
+                        help="reliable_echo's best-effort and reliable echoes, hardened")
+    options = parser.parse_args()
+    mros2_root = os.environ.get('MROS2_ROOT')
+    posix_root = os.environ.get('MROS2_POSIX_ROOT')
+    if not mros2_root or not posix_root:
+        print('pc_round_trip.py: needs MROS2_ROOT (mros2 v0.5.4) and MROS2_POSIX_ROOT (its '
+              'example apps): docs/testing.md', file=sys.stderr)
+        return 2
+    work = options.keep or tempfile.mkdtemp(prefix='mros2_round_trip_')
+    config = os.path.join(posix_root, 'include', 'rtps', 'config.h')
+    results = run_qos(options, work, mros2_root, config) if options.qos else \
+        run_builds(options, work, mros2_root, posix_root, config)
     rows = {}
     for name, reports in results.items():
         trips = [statistics.median(report['round_trips_us']) for report in reports]
         rates = [report['echoed'] / report['burst_seconds'] for report in reports
                  if report['burst_seconds']]
         rows[name] = (trips, rates, [report['echoed'] for report in reports])
-    base_trip = statistics.median(rows[BUILDS[0][0]][0])
-    base_rate = statistics.median(rows[BUILDS[0][0]][1])
+    base = list(results)[0]
+    base_trip = statistics.median(rows[base][0])
+    base_rate = statistics.median(rows[base][1])
     print('| echo | round trip, median (µs) | runs\' range | ratio | echoes/s in a burst of %d '
           '| runs\' range | ratio | echoed of %d (range) |' % (options.burst, options.burst))
     print('|---|---:|---:|---:|---:|---:|---:|---:|')

@@ -1,8 +1,9 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The rclpy side of bench/mros2/pc_round_trip.py: round trips and throughput against an
-echo of std_msgs/String (to_stm -> to_linux), best-effort as mros2's endpoints are.
+echo of std_msgs/String (to_stm -> to_linux unless named), best-effort as mros2's endpoints
+are, or reliable and keeping all (--reliable).
 
-    round_trip_peer.py TRIPS BURST
+    round_trip_peer.py TRIPS BURST [--to TOPIC] [--back TOPIC] [--reliable]
 
 Sends "warm N" until an echo comes (discovery on both sides done), then TRIPS round trips
 one at a time (each waits for its own echo; a lost one is sent again after 1 s and not
@@ -11,25 +12,35 @@ until 2 s after the last one. Prints JSON: {"round_trips_us": [...], "burst": BU
 "echoed": n, "burst_seconds": first send to last echo}.
 """
 
+import argparse
 import json
 import sys
 import time
 
 import rclpy
-from rclpy.qos import QoSProfile, ReliabilityPolicy
+from rclpy.qos import HistoryPolicy, QoSProfile, ReliabilityPolicy
 from std_msgs.msg import String
 
-QOS = QoSProfile(depth=1000, reliability=ReliabilityPolicy.BEST_EFFORT)
+BEST_EFFORT = QoSProfile(depth=1000, reliability=ReliabilityPolicy.BEST_EFFORT)
+RELIABLE = QoSProfile(history=HistoryPolicy.KEEP_ALL, reliability=ReliabilityPolicy.RELIABLE)
 
 
 def main():
-    trips, burst = int(sys.argv[1]), int(sys.argv[2])
+    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    parser.add_argument('trips', type=int)
+    parser.add_argument('burst', type=int)
+    parser.add_argument('--to', default='to_stm')
+    parser.add_argument('--back', default='to_linux')
+    parser.add_argument('--reliable', action='store_true')
+    options = parser.parse_args()
+    trips, burst = options.trips, options.burst
+    qos = RELIABLE if options.reliable else BEST_EFFORT
     rclpy.init()
     node = rclpy.create_node('round_trip_peer')
     echoes = []
-    node.create_subscription(String, 'to_linux',
-                             lambda message: echoes.append((time.monotonic(), message.data)), QOS)
-    publisher = node.create_publisher(String, 'to_stm', QOS)
+    node.create_subscription(String, options.back,
+                             lambda message: echoes.append((time.monotonic(), message.data)), qos)
+    publisher = node.create_publisher(String, options.to, qos)
 
     def wait_for(text, seconds):
         deadline = time.monotonic() + seconds

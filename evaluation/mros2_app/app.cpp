@@ -7,9 +7,10 @@
  * makes it publish sample n of chatter, image (in fragments) and reading
  * (board_samples.hpp); each command, twist and reading_in is published again on
  * <topic>_echo. mros2 v0.5.4 as it is sends every message through its last publisher, so
- * built without APP_ALL_PUBLISHERS the app has one, image, and echoes nothing. All
- * publishing happens in the callbacks, on mros2's reader thread, as mros2's shared send
- * buffers need.
+ * built without APP_ALL_PUBLISHERS the app has one, image, and echoes nothing. With it (genmros'
+ * whole patch set) chatter goes out on chatter_reliable too, from a reliable publisher
+ * (mros2::QoS(10).reliable(), the patch reliable-where-asked). All publishing happens in the
+ * callbacks, on mros2's reader thread, as mros2's shared send buffers need.
  */
 #include "mros2.h"
 #include "geometry_msgs/msg/twist.hpp"
@@ -36,7 +37,7 @@ int commands_received;
 
 mros2::Publisher image_publisher;
 #ifdef APP_ALL_PUBLISHERS
-mros2::Publisher chatter_publisher, reading_publisher;
+mros2::Publisher chatter_publisher, chatter_reliable_publisher, reading_publisher;
 mros2::Publisher command_echo, twist_echo, reading_echo;
 #endif
 
@@ -51,6 +52,7 @@ void on_command(std_msgs::msg::String *command)
   std_msgs::msg::String text;
   board_samples::fill_chatter(text, number);
   chatter_publisher.publish(text);
+  chatter_reliable_publisher.publish(text);
   mros2_test_msgs::msg::Reading reading;
   board_samples::fill_reading(reading, number);
   reading_publisher.publish(reading);
@@ -88,6 +90,8 @@ int main()
   mros2::Node node = mros2::Node::create_node("main_job_board");
 #ifdef APP_ALL_PUBLISHERS
   chatter_publisher = node.create_publisher<std_msgs::msg::String>("chatter", 10);
+  chatter_reliable_publisher =
+      node.create_publisher<std_msgs::msg::String>("chatter_reliable", mros2::QoS(10).reliable());
   reading_publisher = node.create_publisher<mros2_test_msgs::msg::Reading>("reading", 10);
   command_echo = node.create_publisher<std_msgs::msg::String>("command_echo", 10);
   twist_echo = node.create_publisher<geometry_msgs::msg::Twist>("twist_echo", 10);

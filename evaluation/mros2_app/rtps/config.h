@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The embeddedRTPS settings (namespace rtps::Config) of the main job's mros2 app, a board
 // config as an mros2 port writes one: the names embeddedRTPS and mros2 read, with values
-// for an app of 6 publishers and 3 subscribers (names in 40 bytes and 16 writers and
-// readers a participant, as mros2-posix sets them). mros2 >= 0.5 defines IP_ADDRESS
+// for an app of 7 publishers and 3 subscribers (16 writers and readers a participant, as
+// mros2-posix sets them; type names in 64 bytes: genmros' patch node-in-the-ros-graph
+// writes rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_, 52 with its NUL). mros2 >= 0.5 defines IP_ADDRESS
 // itself: this config declares it.
 #ifndef RTPS_CONFIG_H
 #define RTPS_CONFIG_H
@@ -36,7 +37,7 @@ const uint8_t MAX_NUM_UNMATCHED_REMOTE_READERS = 15;
 const uint8_t MAX_NUM_READER_CALLBACKS = 5;
 const uint8_t HISTORY_SIZE_STATELESS = 2;
 const uint8_t HISTORY_SIZE_STATEFUL = 10;
-const uint8_t MAX_TYPENAME_LENGTH = 40;
+const uint8_t MAX_TYPENAME_LENGTH = 64;
 const uint8_t MAX_TOPICNAME_LENGTH = 40;
 
 const int HEARTBEAT_STACKSIZE = 4096;           // bytes

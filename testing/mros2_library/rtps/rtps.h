@@ -56,6 +56,8 @@ const uint8_t NUM_WRITERS_PER_PARTICIPANT = 16;
 const uint8_t NUM_READERS_PER_PARTICIPANT = 16;
 const uint8_t NUM_STATELESS_WRITERS = 16;
 const uint8_t NUM_STATELESS_READERS = 16;
+const uint8_t NUM_STATEFUL_WRITERS = 16;
+const uint8_t NUM_STATEFUL_READERS = 16;
 #ifdef STAND_IN_RMW_GID_STORAGE_SIZE
 // A board's config that names its ROS 2's GID size (Humble: 24).
 const uint8_t RMW_GID_STORAGE_SIZE = STAND_IN_RMW_GID_STORAGE_SIZE;

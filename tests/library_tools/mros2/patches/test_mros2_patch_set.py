@@ -160,7 +160,8 @@ def test_the_fit_check_reads_the_checkouts_publisher(tmp_path, export):
     config.write_text('const uint8_t MAX_TYPENAME_LENGTH = 64;\nconst uint8_t '
                       'MAX_TOPICNAME_LENGTH = 64;\nconst uint8_t NUM_WRITERS_PER_PARTICIPANT = '
                       '8;\nconst uint8_t NUM_READERS_PER_PARTICIPANT = 8;\nconst uint8_t '
-                      'NUM_STATELESS_WRITERS = 8;\nconst uint8_t NUM_STATELESS_READERS = 8;\n')
+                      'NUM_STATELESS_WRITERS = 8;\nconst uint8_t NUM_STATELESS_READERS = 8;\n'
+                      'const uint8_t NUM_STATEFUL_WRITERS = 8;\n')
     arguments = ['mros2-fit', *prefix_arguments(ros2_prefixes()), '--rtps-config', str(config),
                  '--mros2-root', str(checkout)] + ENDPOINTS
     as_it_is = run_genmros(*arguments, check=False)
