@@ -4,8 +4,8 @@
 # genmros).
 #
 #   mros2_import_messages(TARGET t EXPORT_DIR dir [PREFIXES prefix ...]
-#                         [PUBLISH [topic:]pkg/msg/Type ...]
-#                         [SUBSCRIBE [topic:]pkg/msg/Type ...]
+#                         [PUBLISH [topic:]pkg/msg/Type[:reliable[:depth]] ...]
+#                         [SUBSCRIBE [topic:]pkg/msg/Type[:reliable[:depth]] ...]
 #                         [TYPES pkg/msg/Type|pkg/srv/Name ...]
 #                         [STORAGE heap|bounded] [OPTIONS file ...]
 #                         [RTPS_CONFIG rtps/config.h [RECEIVE_LIMIT bytes|file:NAME]
@@ -15,7 +15,8 @@
 #     /opt/ros/humble for std_msgs): the headers of the PUBLISH, SUBSCRIBE and TYPES types and
 #     of every type they contain, and mros2's templates.hpp with the explicit
 #     instantiations of its publish and subscribe calls for the PUBLISH and
-#     SUBSCRIBE types (genmros mros2-export --publish/--subscribe), so no
+#     SUBSCRIBE types (genmros mros2-export --publish/--subscribe; :reliable
+#     for an endpoint the app makes with mros2::QoS(depth).reliable()), so no
 #     script greps the app's sources. They are generated at configure time
 #     from the definitions the export dir holds, into a directory of t's own,
 #     and t (the firmware, or the target that compiles mros2.cpp, which

@@ -72,10 +72,15 @@ SANITIZER_REPORTS = ('AddressSanitizer', 'LeakSanitizer', 'runtime error:', 'Seg
 FRAGMENT_SHARE = 0.02
 FRAGMENT_SETTINGS = ('const DataSize_t FRAGMENT_BUFFER_SIZE = 8192;\n'
                      'const uint8_t FRAGMENT_BUFFERS = 2;\n')
-# The functions the fuzzer must reach, as gcov names them (demangled, prefix matched).
+# The functions the fuzzer must reach, as gcov names them (demangled, prefix matched; of
+# two, the hardened board's first: acknacks-on-the-writer-threads takes ACKNACKs on the
+# writer threads, after the network thread has sorted each datagram).
 PARSERS = (('MessageReceiver: DATA', 'rtps::MessageReceiver::processDataSubmessage'),
            ('MessageReceiver: HEARTBEAT', 'rtps::MessageReceiver::processHeartbeatSubmessage'),
-           ('MessageReceiver: ACKNACK', 'rtps::MessageReceiver::processAckNackSubmessage'),
+           ('MessageReceiver: ACKNACK', ('rtps::MessageReceiver::processAckNacks',
+                                         'rtps::MessageReceiver::processAckNackSubmessage')),
+           ('MessageReceiver: ACKNACKs sorted out', 'rtps::MessageReceiver::ackNacksIn'),
+           ('StatefulWriter: ACKNACK', 'rtps::StatefulWriterT<rtps::UdpDriver>::onNewAckNack'),
            ('ParticipantProxyData::readFromUcdrBuffer',
             'rtps::ParticipantProxyData::readFromUcdrBuffer'),
            ('TopicData::readFromUcdrBuffer', 'rtps::TopicData::readFromUcdrBuffer'),

@@ -19,6 +19,7 @@ pytestmark = [pytest.mark.needs_mros2, pytest.mark.slow]
 
 FUZZER = os.path.join(REPO, 'bench', 'fuzz', 'rtps_fuzz.py')
 PARSERS = ('MessageReceiver: DATA', 'MessageReceiver: HEARTBEAT', 'MessageReceiver: ACKNACK',
+           'MessageReceiver: ACKNACKs sorted out', 'StatefulWriter: ACKNACK',
            'ParticipantProxyData::readFromUcdrBuffer', 'TopicData::readFromUcdrBuffer',
            'SEDP: publications', 'SEDP: subscriptions', 'MessageReceiver: DATA_FRAG',
            'MessageReceiver: fragments taken', "mros2's callback")
