@@ -11,7 +11,7 @@ then writes a line of JSON to stdout: {"nodes": [[name, namespace], ...], "publi
 [[topic, [types]], ...], "subscribers": [...], "seen_after": seconds from its start, or
 null}. Then, at the next line on stdin (the board has stopped), it spins until the node is
 no longer listed, or the wait ends, and writes {"gone_after": seconds from that line, or
-null}. Writes "watcher ready" to stderr once its node exists.
+null}. Writes "watcher ready" to stderr once its node exists. SIGTERM ends it at once.
 """
 
 import json
@@ -19,6 +19,7 @@ import sys
 import time
 
 import rclpy
+from rclpy.signals import SignalHandlerOptions
 
 
 def spin_until(node, condition, wait):
@@ -33,7 +34,8 @@ def spin_until(node, condition, wait):
 
 def main():
     job = json.loads(sys.stdin.readline())
-    rclpy.init()
+    # rclpy's own handlers would leave it waiting on stdin with its context shut down.
+    rclpy.init(signal_handler_options=SignalHandlerOptions.NO)
     node = rclpy.create_node('genmros_graph_watcher')
     print('watcher ready', file=sys.stderr, flush=True)
     watched = (job['node'], job['namespace'])
