@@ -11,8 +11,8 @@ function), with the series' first patches applied one more at a time
 (colcon_mros.library_tools.mros2.patches, on a copy): text, data and bss of
 the objects (arm-none-eabi-size, before the link drops what is unused), and
 what each patch adds to the row before it. The app is one publisher and one
-subscriber of std_msgs/String (genmros mros2-export, templates.hpp
-included); the board config is the main job's (evaluation/mros2_app). The
+subscriber of std_msgs/String (genmros mros2-export from the ROS 2 wheels,
+templates.hpp included); the board config is the main job's (evaluation/mros2_app). The
 RTOS and lwIP declarations are the PC target's stand-ins; their uint32_t is
 an unsigned int, as mros2's FreeRTOS layer declares it (newlib's would be an
 unsigned long), which changes no size.
@@ -34,7 +34,7 @@ sys.path.insert(0, REPO)
 from colcon_mros.library_tools.mros2.patches import LIBRARY_DIRS, mros2_patches  # noqa: E402
 from colcon_mros.library_tools.mros2.pc_target.build import TARGET_DIR  # noqa: E402
 from colcon_mros.library_tools.patch_series import apply_patches  # noqa: E402
-from testing.ros_paths import prefix_arguments, ros2_prefixes  # noqa: E402
+from testing.ros_paths import prefix_arguments, ros2_wheels  # noqa: E402
 
 CONFIG = os.path.join(REPO, 'evaluation', 'mros2_app', 'rtps', 'config.h')
 FLAGS = ['-Os', '-std=gnu++14', '-mcpu=cortex-m4', '-mthumb', '-mfloat-abi=hard',
@@ -47,7 +47,7 @@ def export(work):
     """genmros' headers and templates.hpp for the app; their directory."""
     directory = os.path.join(work, 'export')
     subprocess.run([sys.executable, '-m', 'colcon_mros', 'mros2-export',
-                    *prefix_arguments(ros2_prefixes()), '--publish',
+                    *prefix_arguments([ros2_wheels()]), '--publish',
                     'chatter:std_msgs/msg/String', '--subscribe', 'command:std_msgs/msg/String',
                     '-o', directory], check=True, cwd=REPO, stdout=subprocess.DEVNULL)
     return directory
