@@ -32,9 +32,10 @@ from rclpy.qos import HistoryPolicy, QoSProfile, ReliabilityPolicy, qos_profile_
 from rclpy.signals import SignalHandlerOptions
 
 
+# mros2's endpoints as they are.
+BEST_EFFORT = QoSProfile(depth=100, reliability=ReliabilityPolicy.BEST_EFFORT)
 QOS = {
-    # mros2's endpoints as they are.
-    'best_effort': QoSProfile(depth=100, reliability=ReliabilityPolicy.BEST_EFFORT),
+    'best_effort': BEST_EFFORT,
     # What a node gets that names a depth alone, as most do.
     'default': qos_profile_default,
     'keep_all': QoSProfile(history=HistoryPolicy.KEEP_ALL,
