@@ -238,6 +238,14 @@ class Session:
             {'node': node, 'namespace': '/', 'publishers': publishers,
              'subscribers': subscribers, 'wait': wait}, self.work_dir)
 
+    def drop_datagrams(self, port, every):
+        """The board's network drops every so many datagrams to port, the first included
+        (nftables, on the board's side), from now on."""
+        rules = ('table ip genmros_drop {\n chain incoming {\n  type filter hook input '
+                 'priority 0;\n  udp dport %d numgen inc mod %d 0 drop\n }\n}\n' % (port, every))
+        subprocess.run(self.network.board_command(['nft', '-f', '-']), input=rules, text=True,
+                       check=True)
+
     def stop_board(self):
         """Stops the board as Ctrl-C does; returns its output."""
         if self._board is not None and self._board.poll() is None:

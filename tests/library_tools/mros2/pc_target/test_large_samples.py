@@ -12,7 +12,6 @@ back otherwise)."""
 
 import os
 import re
-import subprocess
 
 import numpy
 import pytest
@@ -93,11 +92,7 @@ def _exchange(program, limit, tmp_path, job, drop_every=None):
     job.update(period=0.25)
     with mros2_pc.Session(program, str(tmp_path)) as session:
         if drop_every:
-            rules = ('table ip genmros_drop {\n chain incoming {\n  type filter hook input '
-                     'priority 0;\n  udp dport %d numgen inc mod %d 0 drop\n }\n}\n'
-                     % (USER_PORT, drop_every))
-            subprocess.run(session.network.board_command(['nft', '-f', '-']), input=rules,
-                           text=True, check=True)
+            session.drop_datagrams(USER_PORT, drop_every)
         session.start_board()
         assert session.wait_for_output('app ready')
         report = session.peer(job, max_message=limit).result()

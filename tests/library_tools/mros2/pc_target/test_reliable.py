@@ -10,7 +10,6 @@ mros2-posix' (HISTORY_SIZE_STATEFUL 10, THREAD_POOL_WORKLOAD_QUEUE_LENGTH 20).""
 
 import os
 import re
-import subprocess
 
 import pytest
 
@@ -50,11 +49,7 @@ def _exchange(program, tmp_path, job, drop_every=None):
     drop_every: the board's network drops every so many datagrams to its user-data port."""
     with mros2_pc.Session(program, str(tmp_path)) as session:
         if drop_every:
-            rules = ('table ip genmros_drop {\n chain incoming {\n  type filter hook input '
-                     'priority 0;\n  udp dport %d numgen inc mod %d 0 drop\n }\n}\n'
-                     % (USER_PORT, drop_every))
-            subprocess.run(session.network.board_command(['nft', '-f', '-']), input=rules,
-                           text=True, check=True)
+            session.drop_datagrams(USER_PORT, drop_every)
         session.start_board()
         assert session.wait_for_output('app ready')
         report = session.peer(job).result()
