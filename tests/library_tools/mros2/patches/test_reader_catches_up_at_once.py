@@ -7,45 +7,19 @@ of genmros mros2-pc against an rclpy node): it announces its first samples with 
 sends its newer ones as they are made, answers each ACKNACK with the samples it asks for,
 and sends a heartbeat each period."""
 
-import os
-import shutil
 import subprocess
 
 import pytest
 
-from colcon_mros.library_tools.mros2.patches import LIBRARY_DIRS, mros2_patches
-from colcon_mros.library_tools.mros2.pc_target.build import TARGET_DIR
-from colcon_mros.library_tools.patch_series import apply_patches
-from support.checkout import REPO
-from support.user_checkouts import MROS2_ROOT
+from colcon_mros.library_tools.mros2.patches import mros2_patches
+from support.stateful_checks import build_check
 
 pytestmark = [pytest.mark.needs_mros2]
 
-STAND_IN = os.path.join(REPO, 'testing', 'mros2_library')
 PATCH = 'reader-catches-up-at-once'
 # An rclpy node's publications: 13 endpoints, 2 of them made before the board matched.
 SAMPLES = 13
 ANNOUNCED = 2
-
-
-def _build(tmp_path, patches):
-    checkout = tmp_path / 'mros2'
-    for part in LIBRARY_DIRS:
-        shutil.copytree(os.path.join(MROS2_ROOT, part), str(checkout / part))
-    apply_patches(str(checkout), [patch for patch in mros2_patches() if patch.name in patches])
-    rtps = checkout / 'embeddedRTPS'
-    program = str(tmp_path / 'stateful_reader_check')
-    command = ['g++', '-std=gnu++14', '-g', '-fsanitize=address,undefined',
-               '-fno-sanitize-recover=all', '-I', os.path.join(STAND_IN, 'reader'),
-               '-I', os.path.join(TARGET_DIR, 'include'), '-I', str(rtps / 'include'),
-               '-I', str(rtps / 'thirdparty' / 'Micro-CDR' / 'include'),
-               str(rtps / 'src' / 'messages' / 'MessageTypes.cpp'),
-               str(rtps / 'src' / 'storages' / 'PBufWrapper.cpp'),
-               os.path.join(TARGET_DIR, 'src', 'pbuf.cpp'),
-               os.path.join(STAND_IN, 'stateful_reader_check.cpp'), '-o', program]
-    result = subprocess.run(command, capture_output=True, text=True)
-    assert result.returncode == 0, result.stderr[-4000:]
-    return program
 
 
 @pytest.fixture(scope='module', params=['as-it-is', 'patch', 'series'])
@@ -53,7 +27,8 @@ def reader(request, tmp_path_factory):
     """(version, the check built on it)."""
     patches = {'as-it-is': [], 'patch': [PATCH],
                'series': [patch.name for patch in mros2_patches()]}[request.param]
-    return request.param, _build(tmp_path_factory.mktemp(request.param), patches)
+    return request.param, build_check(tmp_path_factory.mktemp(request.param),
+                                      'stateful_reader_check', 'reader', patches)
 
 
 class Reader:

@@ -4,45 +4,23 @@ of MROS2_ROOT with the whole series, driven by the stateful writer check of
 testing/mros2_library: a writer that keeps its last samples, its readers' ACKNACKs given by
 hand (one from another thread while a publish waits), and what it sends recorded."""
 
-import os
-import shutil
 import subprocess
 
 import pytest
 
-from colcon_mros.library_tools.mros2.patches import LIBRARY_DIRS, mros2_patches
-from colcon_mros.library_tools.mros2.pc_target.build import TARGET_DIR
-from colcon_mros.library_tools.patch_series import apply_patches
-from support.checkout import REPO
-from support.user_checkouts import MROS2_ROOT
+from colcon_mros.library_tools.mros2.patches import mros2_patches
+from support.stateful_checks import build_check
 
 pytestmark = [pytest.mark.needs_mros2]
 
-STAND_IN = os.path.join(REPO, 'testing', 'mros2_library')
 # The wait for room: long beside an ACKNACK's 50 ms, even on a busy machine.
 WAIT = 1000
 
 
 @pytest.fixture(scope='module')
 def program(tmp_path_factory):
-    work = tmp_path_factory.mktemp('stateful_writer')
-    checkout = work / 'mros2'
-    for part in LIBRARY_DIRS:
-        shutil.copytree(os.path.join(MROS2_ROOT, part), str(checkout / part))
-    apply_patches(str(checkout), mros2_patches())
-    rtps = checkout / 'embeddedRTPS'
-    program = str(work / 'stateful_writer_check')
-    command = ['g++', '-std=gnu++14', '-g', '-fsanitize=address,undefined',
-               '-fno-sanitize-recover=all', '-I', os.path.join(STAND_IN, 'writer'),
-               '-I', os.path.join(TARGET_DIR, 'include'), '-I', str(rtps / 'include'),
-               '-I', str(rtps / 'thirdparty' / 'Micro-CDR' / 'include'),
-               str(rtps / 'src' / 'messages' / 'MessageTypes.cpp'),
-               str(rtps / 'src' / 'storages' / 'PBufWrapper.cpp'),
-               os.path.join(TARGET_DIR, 'src', 'pbuf.cpp'),
-               os.path.join(STAND_IN, 'stateful_writer_check.cpp'), '-pthread', '-o', program]
-    result = subprocess.run(command, capture_output=True, text=True)
-    assert result.returncode == 0, result.stderr[-4000:]
-    return program
+    return build_check(tmp_path_factory.mktemp('stateful_writer'), 'stateful_writer_check',
+                       'writer', [patch.name for patch in mros2_patches()])
 
 
 class Writer:
