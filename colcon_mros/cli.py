@@ -423,6 +423,15 @@ def _add_mros2_endpoints(parser, instantiated):
                                  'app makes with mros2::QoS(DEPTH).reliable() (DEPTH 10 unless '
                                  'given; the mros2 patch reliable-where-asked) (repeatable)'
                                  % (what, instantiated))
+    for flag, what in (('--serve', 'serves'), ('--call', 'calls')):
+        parser.add_argument(flag, dest=flag[2:], action='append', default=[],
+                            metavar='[NAME:]PKG/srv/TYPE',
+                            help='a service the firmware %s%s, with mros2::Node::create_%s (the '
+                                 'mros2 patch services-both-ways): its request and reply '
+                                 'writer and reader count as reliable endpoints on rq/NAMERequest '
+                                 'and rr/NAMEReply (repeatable)'
+                                 % (what, instantiated,
+                                    'service' if flag == '--serve' else 'client'))
 
 
 def _add_mros2_board(parser, required):
@@ -665,7 +674,8 @@ def _mros2_export(options):
     options.workspaces, options.prefixes = _definition_places(options)
     result = export_firmware(options.output_dir, options.workspaces, options.prefixes,
                              options.packages, options.types, options.publish, options.subscribe,
-                             options.storage, options.option_files, _mros2_board(options))
+                             options.storage, options.option_files, _mros2_board(options),
+                             options.serve, options.call)
     for line in result.fit.warnings if result.fit else []:
         print('genmros: warning: %s' % line, file=sys.stderr)
     for line in result.notes:
@@ -680,11 +690,13 @@ def _mros2_fit(options):
     from colcon_mros.ros2.environment import require_rosidl
     require_rosidl()
     from colcon_mros.export.mros2_export import firmware_fit
-    if not options.publish and not options.subscribe:
-        raise GenmrosError('name the endpoints: --publish/--subscribe [TOPIC:]PKG/msg/TYPE')
+    if not (options.publish or options.subscribe or options.serve or options.call):
+        raise GenmrosError('name the endpoints: --publish/--subscribe [TOPIC:]PKG/msg/TYPE, '
+                           '--serve/--call [NAME:]PKG/srv/TYPE')
     options.workspaces, options.prefixes = _definition_places(options)
     fit = firmware_fit(_mros2_board(options), options.workspaces, options.prefixes,
-                       options.publish, options.subscribe, options.storage, options.option_files)
+                       options.publish, options.subscribe, options.storage, options.option_files,
+                       options.serve, options.call)
     sys.stdout.write(fit.report())
     return 1 if fit.misfits else 0
 
@@ -856,7 +868,8 @@ def _mros2_pc(options):
         app_dir=options.app_dir, rtps_config=options.rtps_config,
         mros2_root=options.mros2_root, receive_limit=options.receive_limit,
         peer_max_message=options.peer_max_message, publish=options.publish,
-        subscribe=options.subscribe, workspaces=workspaces,
+        subscribe=options.subscribe, serve=options.serve, call=options.call,
+        workspaces=workspaces,
         prefixes=prefixes, storage=options.storage, option_files=options.option_files,
         target=options.target, sanitize=options.sanitize, hardened=options.hardened,
         patches=tuple(options.patches), build_dir=options.build_dir,

@@ -27,6 +27,7 @@ REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 WHEELS_VENV = ros2_wheels()
 PEER_SCRIPT = os.path.join(REPO, 'testing', 'mros2_pc_peer.py')
 GRAPH_SCRIPT = os.path.join(REPO, 'testing', 'mros2_pc_graph.py')
+SERVICES_SCRIPT = os.path.join(REPO, 'testing', 'mros2_pc_services.py')
 # What a run waits for at most: discovery through embeddedRTPS' SEDP, whose heartbeat
 # comes every 4 s, under qemu on a busy 2-core machine.
 EVENT_CAP = 180
@@ -86,7 +87,8 @@ def peer_environment(log_dir, max_message=None):
 
 
 class Peer:
-    """The plain node (testing/mros2_pc_peer.py) running on the ROS side."""
+    """The plain node (testing/mros2_pc_peer.py), or the service peer
+    (testing/mros2_pc_services.py), running on the ROS side."""
 
     def __init__(self, command, job, log_dir, max_message=None):
         # Files, not pipes: a report larger than a pipe holds would wait for its reader.
@@ -126,8 +128,9 @@ class Peer:
                                                                      self._errors()[-3000:]))
         self._stdout.seek(0)
         report = json.loads(self._stdout.read())
-        report['received'] = {topic: [bytes.fromhex(sample) for sample in samples]
-                              for topic, samples in report['received'].items()}
+        if 'received' in report:
+            report['received'] = {topic: [bytes.fromhex(sample) for sample in samples]
+                                  for topic, samples in report['received'].items()}
         return report
 
 
@@ -221,11 +224,11 @@ class Session:
         self.status = self._board.wait(timeout=EVENT_CAP)
         return self.status
 
-    def peer(self, job, max_message=None):
+    def peer(self, job, max_message=None, script=PEER_SCRIPT):
         """A Peer with job on the ROS side, once its endpoints exist (max_message: see
-        peer_environment)."""
+        peer_environment; script: the plain node's, or SERVICES_SCRIPT)."""
         peer = Peer(self.network.ros_command([os.path.join(WHEELS_VENV, 'bin', 'python'),
-                                              PEER_SCRIPT]), job, self.work_dir, max_message)
+                                              script]), job, self.work_dir, max_message)
         peer.wait_ready()
         return peer
 

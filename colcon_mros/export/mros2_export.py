@@ -117,23 +117,27 @@ class Board:
 
 
 def firmware_fit(board, workspaces=(), prefixes=None, publish=(), subscribe=(), storage='heap',
-                 option_files=()):
-    """The Fit of a firmware's endpoints (TOPIC:TYPE or TYPE texts) to a Board."""
+                 option_files=(), serve=(), call=()):
+    """The Fit of a firmware's endpoints (TOPIC:TYPE or TYPE texts; services NAME:TYPE) to a
+    Board."""
     builder = _builder(all_packages(workspaces, prefixes), storage, option_files)
-    return board.fit(*parse_endpoints(publish, subscribe, builder.message))
+    return board.fit(*parse_endpoints(publish, subscribe, builder.message, serve, call,
+                                      builder.service))
 
 
 def export_firmware(output_dir, workspaces=(), prefixes=None, package_names=(), type_names=(),
-                    publish=(), subscribe=(), storage='heap', option_files=(), board=None):
+                    publish=(), subscribe=(), storage='heap', option_files=(), board=None,
+                    serve=(), call=()):
     """Write one firmware's mros2 headers under output_dir (see the module);
     with a Board whose rtps_config is given, refuse the misfits first."""
     packages = all_packages(workspaces, prefixes)
     builder = _builder(packages, storage, option_files)
-    endpoints, notes = parse_endpoints(publish, subscribe, builder.message)
+    endpoints, notes = parse_endpoints(publish, subscribe, builder.message, serve, call,
+                                       builder.service)
     fit = board.fit(endpoints, notes) if board and board.rtps_config else None
     if fit:
         fit.refuse()
-    if not package_names and not type_names and not publish and not subscribe:
+    if not package_names and not type_names and not endpoints:
         if not workspaces:
             raise GenmrosError('name the types to export (--type, --package, --publish, '
                                '--subscribe) or a --workspace')
@@ -141,6 +145,9 @@ def export_firmware(output_dir, workspaces=(), prefixes=None, package_names=(), 
         package_names = sorted(name for name, package in packages.items()
                                if any(_within(package.root, w) for w in workspaces))
     messages, services = _select(builder, package_names, type_names)
+    for endpoint in endpoints:
+        if endpoint.service and endpoint.service.service not in services:
+            services.append(endpoint.service.service)
     contained = builder.closure(messages + [e.message for e in endpoints] +
                                 [half for service in services for half in service.dependencies])
     files = render.support_headers()

@@ -8,6 +8,12 @@ topic rules and counts one endpoint per type). ``TOPIC:TYPE:reliable`` (or
 ``:reliable:DEPTH``) is one the app makes with ``mros2::QoS(DEPTH).reliable()``
 (the mros2 patch reliable-where-asked); ``:best_effort``, as mros2 makes all.
 
+A service the app serves or calls (the mros2 patch services-both-ways) is
+``NAME:PKG/srv/TYPE``, and stands for the writer and reader mros2 makes for
+it, as ROS 2 names them over DDS: requests on ``rq/NAMERequest``, replies on
+``rr/NAMEReply``, both reliable and keeping ``SERVICE_DEPTH``. Their topics'
+lengths are those of ``rt/`` names, which the rules count.
+
 A topic is held to ROS 2's name rules as mros2 uses a name: it sends
 ``"rt/" + name`` as the app passes it and expands nothing, so a name ROS 2
 refuses (or one it would expand) is one no ROS node ever matches.
@@ -20,30 +26,65 @@ from colcon_mros.mros2.cpp import CppMessageName
 
 PUBLISH = 'publish'
 SUBSCRIBE = 'subscribe'
+SERVE = 'serve'
+CALL = 'call'
 RELIABLE = 'reliable'
 BEST_EFFORT = 'best_effort'
 # The samples a reliable endpoint keeps where no depth is given: what mros2's
 # examples pass, and rclcpp's default QoS keeps.
 DEFAULT_DEPTH = 10
+# What a service's writer and reader keep: rmw's services default, as the patch makes them.
+SERVICE_DEPTH = 10
 
 
 class Endpoint:
     """A publisher or subscriber: its direction, topic (None where only the
     type was given), message and the message's C++ and DDS names; whether it
-    is reliable, and the samples it keeps (depth)."""
+    is reliable, and the samples it keeps (depth); for a service's writer or
+    reader, the ServiceUse it serves."""
 
-    def __init__(self, direction, topic, message, reliable=False, depth=DEFAULT_DEPTH):
+    def __init__(self, direction, topic, message, reliable=False, depth=DEFAULT_DEPTH,
+                 service=None):
         self.direction = direction
         self.topic = topic
         self.message = message
         self.wire_name = CppMessageName(message)
         self.reliable = reliable
         self.depth = depth
+        self.service = service
 
     def describe(self):
+        if self.service is not None:
+            return '%s (%s of %s)' % (self.service.describe(), self.direction,
+                                      self.message.full_name)
         topic = '(topic not given)' if self.topic is None else self.topic
         qos = ' (reliable, depth %d)' % self.depth if self.reliable else ''
         return '%s %s %s%s' % (self.direction, topic, self.message.full_name, qos)
+
+
+class ServiceUse:
+    """A service the app serves or calls (role SERVE or CALL): its name (None where only
+    the type was given) and its model."""
+
+    def __init__(self, role, name, service):
+        self.role = role
+        self.name = name
+        self.service = service
+
+    def describe(self):
+        return '%s %s %s' % (self.role, '(name not given)' if self.name is None else self.name,
+                             self.service.full_name)
+
+    def endpoints(self):
+        """The writer and reader mros2 makes for it: a server reads requests and writes
+        replies, a client the other way round."""
+        def topic(suffix):
+            return None if self.name is None else self.name + suffix
+        request = (topic('Request'), self.service.request)
+        reply = (topic('Reply'), self.service.response)
+        written, read = (reply, request) if self.role == SERVE else (request, reply)
+        return [Endpoint(PUBLISH, written[0], written[1], True, SERVICE_DEPTH, self),
+                Endpoint(SUBSCRIBE, read[0], read[1], True, SERVICE_DEPTH, self)]
 
 
 # What a ROS 2 name may hold besides '/' between its tokens.
@@ -118,10 +159,12 @@ def split_qos(text):
     return ':'.join(parts), reliable, DEFAULT_DEPTH if depth is None else depth
 
 
-def parse_endpoints(publish, subscribe, message_of):
+def parse_endpoints(publish, subscribe, message_of, serve=(), call=(), service_of=None):
     """The Endpoints of --publish and --subscribe texts ('TOPIC:TYPE' or
-    'TYPE'), their messages from message_of(type name), and the notes on
-    their names; every bad topic name is refused at once, one line each."""
+    'TYPE'), their messages from message_of(type name), and of --serve and
+    --call texts ('NAME:PKG/srv/TYPE' or the type), their services from
+    service_of(type name); and the notes on their names. Every bad name is
+    refused at once, one line each."""
     endpoints, notes, problems = [], [], []
     for direction, texts in ((PUBLISH, publish), (SUBSCRIBE, subscribe)):
         for text in texts:
@@ -133,6 +176,15 @@ def parse_endpoints(publish, subscribe, message_of):
                 continue
             notes += endpoint_notes
             endpoints.append(Endpoint(direction, topic, message_of(type_name), reliable, depth))
+    for role, texts in ((SERVE, serve), (CALL, call)):
+        for text in texts:
+            try:
+                name, type_name, name_notes = split_endpoint(text)
+            except GenmrosError as error:
+                problems.append('--%s %s' % (role, error))
+                continue
+            notes += name_notes
+            endpoints += ServiceUse(role, name, service_of(type_name)).endpoints()
     problems += _qos_conflicts(endpoints)
     if problems:
         raise GenmrosProblems(problems)
@@ -168,10 +220,20 @@ def count(endpoints, direction, reliable=None):
                 for e in chosen})
 
 
-def messages(endpoints, direction):
-    """The distinct messages of a direction's endpoints, in their order."""
+def messages(endpoints, direction, of_services=True):
+    """The distinct messages of a direction's endpoints (without a service's writers and
+    readers where not of_services), in their order."""
     found = {}
     for endpoint in endpoints:
-        if endpoint.direction == direction:
+        if endpoint.direction == direction and (of_services or endpoint.service is None):
             found.setdefault(endpoint.message.full_name, endpoint.message)
+    return list(found.values())
+
+
+def services(endpoints, role):
+    """The distinct services the app serves or calls (role SERVE or CALL), in their order."""
+    found = {}
+    for endpoint in endpoints:
+        if endpoint.service is not None and endpoint.service.role == role:
+            found.setdefault(endpoint.service.service.full_name, endpoint.service.service)
     return list(found.values())

@@ -28,7 +28,8 @@ from colcon_mros.mros2.endpoints import PUBLISH, SUBSCRIBE, count, messages, top
 from colcon_mros.mros2.rules import (CONFIG_HEADER, DATA_FRAG_PATCH, DISCOVERY_ANNOUNCEMENT,
                                      ENCAPSULATION, FRAGMENT_BUFFER, FRAGMENT_DEFAULTS,
                                      FRAGMENT_OVERHEAD, GRAPH_MACRO, PEER_MAX_MESSAGE,
-                                     QOS_MACRO, QOS_PATCH, READER_QUEUE, SETTINGS,
+                                     QOS_MACRO, QOS_PATCH, READER_QUEUE,
+                                     SERVICES_MACRO, SERVICES_PATCH, SETTINGS,
                                      TYPENAME_MAX,
                                      data_frag_requirements, discovery_problem,
                                      graph_type_name_requirement,
@@ -57,7 +58,8 @@ class Mros2Checkout:
     """What the fit check reads of the user's mros2: whether it gives each Publisher a
     writer of its own (has_writer; the class is at path, line), whether its
     embeddedRTPS takes samples in fragments (takes_data_frag), whether it makes reliable
-    endpoints (has_qos) and whether it writes ros_discovery_info (in_ros_graph)."""
+    endpoints (has_qos), whether it writes ros_discovery_info (in_ros_graph) and whether it
+    serves and calls services (has_services)."""
 
     def __init__(self, mros2_root):
         self.path = os.path.join(mros2_root, MROS2_HEADER)
@@ -66,6 +68,7 @@ class Mros2Checkout:
                                    for line in _lines(os.path.join(mros2_root, RECEIVER_HEADER)))
         self.has_qos = any(QOS_MACRO in line for line in lines)
         self.in_ros_graph = any(GRAPH_MACRO in line for line in lines)
+        self.has_services = any(SERVICES_MACRO in line for line in lines)
         starts = [number for number, line in enumerate(lines) if _PUBLISHER_CLASS.match(line)]
         if not starts:
             raise GenmrosError('declares no class Publisher; is this an mros2 checkout?',
@@ -244,6 +247,12 @@ class Fit:
                 'this one makes every endpoint best-effort: apply genmros\' mros2 patch set '
                 '(genmros mros2-harden)' % (checkout.path, checkout.line, ', '.join(reliable),
                                             QOS_PATCH))
+        services = sorted({e.service.describe() for e in self.endpoints if e.service})
+        if services and checkout is not None and not checkout.has_services:
+            self.misfits.append(
+                '%s:%d: the firmware: its services (%s) need mros2 with the patch %s: apply '
+                "genmros' mros2 patch set (genmros mros2-harden)"
+                % (checkout.path, checkout.line, ', '.join(services), SERVICES_PATCH))
 
     def refuse(self):
         """Raise the misfits as one error line each."""

@@ -13,10 +13,11 @@ from colcon_mros import __version__
 from colcon_mros.core.render import render_template, static_text
 from colcon_mros.mros2.cpp import (SUPPORT_HEADERS, WIRE_HEADER, WIRE_VERSION, CppMessage,
                                    CppMessageName, CppService)
-from colcon_mros.mros2.endpoints import PUBLISH, SUBSCRIBE, messages
+from colcon_mros.mros2.endpoints import CALL, PUBLISH, SERVE, SUBSCRIBE, messages, services
 from colcon_mros.mros2.rules import (GRAPH_MACRO, GRAPH_PATCH, QOS_MACRO, QOS_PATCH,
                                      READER_STACK_MARGIN, READER_STACK_MARGIN_MACRO,
-                                     graph_writer_requirements, requirements)
+                                     SERVICES_MACRO, SERVICES_PATCH, graph_writer_requirements,
+                                     requirements)
 
 TEMPLATE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'templates')
 # The wire header; the containers header is the core's.
@@ -58,12 +59,19 @@ def templates_header(endpoints, board_requirements=()):
     ROS side), and those of the writer of the patch node-in-the-ros-graph
     where its mros2.h says it is in. It compiles against mros2 with the
     patch reliable-where-asked and without; a firmware with reliable
-    endpoints stops with an #error without it."""
-    publish = [CppMessageName(m) for m in messages(endpoints, PUBLISH)]
-    subscribe = [CppMessageName(m) for m in messages(endpoints, SUBSCRIBE)]
-    reliable = sorted(e.describe() for e in endpoints if e.reliable)
+    endpoints stops with an #error without it, and one with services without
+    the patch services-both-ways."""
+    publish = [CppMessageName(m) for m in messages(endpoints, PUBLISH, of_services=False)]
+    subscribe = [CppMessageName(m) for m in messages(endpoints, SUBSCRIBE, of_services=False)]
+    serve = [CppService(s) for s in services(endpoints, SERVE)]
+    call = [CppService(s) for s in services(endpoints, CALL)]
+    reliable = sorted(e.describe() for e in endpoints if e.reliable and e.service is None)
     return {TEMPLATES_HEADER: _render(
-        'templates.hpp.em', headers=sorted({name.header for name in publish + subscribe}),
+        'templates.hpp.em',
+        headers=sorted({name.header for name in publish + subscribe + serve + call}),
+        services_macro=SERVICES_MACRO, services_patch=SERVICES_PATCH,
+        services=', '.join(sorted({e.service.describe() for e in endpoints if e.service})),
+        serve=serve, call=call,
         requirements=requirements(endpoints) + list(board_requirements),
         graph_macro=GRAPH_MACRO, graph_patch=GRAPH_PATCH,
         graph_requirements=graph_writer_requirements(endpoints),

@@ -52,6 +52,9 @@ QOS_MACRO = 'MROS2_RELIABLE_WHERE_ASKED'
 # The mros2 patch node-in-the-ros-graph's writer: its topic and DDS type name, without
 # mros2's topic prefix.
 GRAPH_PATCH = 'node-in-the-ros-graph'
+# The mros2 patch that serves and calls services, and what its mros2.h defines.
+SERVICES_PATCH = 'services-both-ways'
+SERVICES_MACRO = 'MROS2_SERVICES_BOTH_WAYS'
 GRAPH_MACRO = 'MROS2_NODE_IN_THE_ROS_GRAPH'
 GRAPH_TOPIC = 'ros_discovery_info'
 GRAPH_TYPE = 'rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_'
@@ -164,11 +167,13 @@ def endpoint_count_requirements(endpoints, graph_writer=False):
 
 
 def history_requirements(endpoints):
-    """Each reliable publisher's depth, which its stateful writer's history holds."""
+    """Each reliable publisher's depth (a service's writer's too), which its stateful
+    writer's history holds."""
     depths = {}
     for endpoint in endpoints:
         if endpoint.direction == PUBLISH and endpoint.reliable:
-            subject = 'topic %s' % endpoint.topic
+            subject = endpoint.service.describe() if endpoint.service else \
+                'topic %s' % endpoint.topic
             depths[subject] = max(depths.get(subject, 0), endpoint.depth)
     return [Requirement(STATEFUL_HISTORY, subject, 'a reliable publisher keeping its last %d '
                         'samples' % depth, depth)

@@ -52,3 +52,21 @@ template genmros_publish_result mros2::Publisher::publish(@(msg.cpp_name)& msg);
 template mros2::Subscriber mros2::Node::create_subscription(std::string topic_name, genmros_qos_argument qos, void (*fp)(@(msg.cpp_name)*));
 template void mros2::Subscriber::callback_handler<@(msg.cpp_name)>(void* callee, const rtps::ReaderCacheChange& cacheChange);
 @[end for]@
+@[if serve or call]@
+
+// Services, which mros2 serves and calls with genmros' patch @(services_patch).
+#ifndef @(services_macro)
+#error "services (@(services)) need mros2 with genmros' patch @(services_patch): apply genmros' mros2 patch set (genmros mros2-harden)"
+#else
+@[for srv in serve]@
+
+template mros2::Service mros2::Node::create_service<@(srv.cpp_name)>(std::string service_name, void (*callback)(@(srv.request.cpp_name)*, @(srv.response.cpp_name)*));
+template void mros2::Service::request_handler<@(srv.cpp_name)>(void* callee, const rtps::ReaderCacheChange& cacheChange);
+@[end for]@
+@[for srv in call]@
+
+template mros2::Client mros2::Node::create_client<@(srv.cpp_name)>(std::string service_name);
+template bool mros2::Client::call(@(srv.request.cpp_name)& request, @(srv.response.cpp_name)& response, uint32_t timeout_ms);
+@[end for]@
+#endif
+@[end if]@

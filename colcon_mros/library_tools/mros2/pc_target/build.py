@@ -56,7 +56,8 @@ STEPS = (('library', 'mros2 of %(root)s and the PC target\'s stand-ins'),
          ('app', 'the app %(name)s'),
          ('program', 'link %(program)s'))
 _SOURCE = re.compile(r'\$\{PROJECT_SOURCE_DIR\}/([^\s)]+)')
-_ENDPOINT = re.compile(r'\bcreate_(publisher|subscription)\s*<\s*([A-Za-z_][\w:]*)\s*>\s*'
+_ENDPOINT = re.compile(r'\bcreate_(publisher|subscription|service|client)\s*<\s*'
+                       r'([A-Za-z_][\w:]*)\s*>\s*'
                        r'\(\s*"([^"]*)"\s*(?:,\s*((?:mros2::)?QoS\s*\([^()]*\)'
                        r'(?:\s*\.\s*\w+\s*\([^()]*\))*))?')
 # A QoS as the patch reliable-where-asked spells it: QoS(depth), then calls in a chain.
@@ -81,6 +82,8 @@ class Mros2PcBuild:
     peer_max_message: int = PEER_MAX_MESSAGE  # the ROS side's largest datagram
     publish: tuple = ()  # default: the app's own create_publisher calls
     subscribe: tuple = ()
+    serve: tuple = ()  # NAME:PKG/srv/TYPE; default: the app's own create_service calls
+    call: tuple = ()
     workspaces: tuple = ()
     prefixes: tuple = None
     storage: str = DEFAULT_STORAGE
@@ -174,16 +177,18 @@ def _qos_suffix(qos):
 
 
 def app_endpoints(sources):
-    """(publish, subscribe) as TOPIC:PKG/msg/TYPE[:reliable:DEPTH] texts, from the app's
-    create_publisher<T>("topic", qos) and create_subscription<T>("topic", qos) calls."""
-    found = {'publisher': [], 'subscription': []}
+    """(publish, subscribe, serve, call): TOPIC:PKG/msg/TYPE[:reliable:DEPTH] texts from the
+    app's create_publisher<T>("topic", qos) and create_subscription<T>("topic", qos) calls,
+    NAME:PKG/srv/TYPE texts from its create_service<T>("name", ...) and
+    create_client<T>("name") calls."""
+    found = {'publisher': [], 'subscription': [], 'service': [], 'client': []}
     for path in sources:
         for kind, cpp_type, topic, qos in _ENDPOINT.findall(_read(path, 'an app source')):
             endpoint = '%s:%s%s' % (topic, cpp_type.lstrip(':').replace('::', '/'),
                                     _qos_suffix(qos))
             if endpoint not in found[kind]:
                 found[kind].append(endpoint)
-    return found['publisher'], found['subscription']
+    return found['publisher'], found['subscription'], found['service'], found['client']
 
 
 def _check_unique_names(group, sources):
@@ -345,23 +350,27 @@ def build(request):
     _check_unique_names('library', library)
     _check_unique_names('app', sources)
 
-    publish, subscribe = request.publish, request.subscribe
-    if not publish and not subscribe:
-        publish, subscribe = app_endpoints(sources)
-        if not publish and not subscribe:
-            raise GenmrosError('no create_publisher<T>("topic") or create_subscription<T>('
-                               '"topic") call in the app: name its endpoints with --publish/'
-                               '--subscribe TOPIC:PKG/msg/TYPE', app_dir)
+    publish, subscribe, serve, call = (request.publish, request.subscribe, request.serve,
+                                       request.call)
+    if not (publish or subscribe or serve or call):
+        publish, subscribe, serve, call = app_endpoints(sources)
+        if not (publish or subscribe or serve or call):
+            raise GenmrosError('no create_publisher<T>("topic"), create_subscription<T>('
+                               '"topic"), create_service<T>("name") or create_client<T>("name") '
+                               'call in the app: name its endpoints with --publish/--subscribe '
+                               'TOPIC:PKG/msg/TYPE, --serve/--call NAME:PKG/srv/TYPE', app_dir)
         print('genmros: the app\'s endpoints: %s'
               % ', '.join(['publish %s' % e for e in publish] +
-                          ['subscribe %s' % e for e in subscribe]), flush=True)
+                          ['subscribe %s' % e for e in subscribe] +
+                          ['serve %s' % e for e in serve] + ['call %s' % e for e in call]),
+              flush=True)
     config = BoardConfig(request.rtps_config, root)
     limit = receive_limit(request.receive_limit)
     board = Board(config.path, request.receive_limit, root,
                   request.peer_max_message) if request.fit_check else None
     exported = export_firmware(os.path.join(build_dir, 'include'), request.workspaces,
                                request.prefixes, (), (), publish, subscribe, request.storage,
-                               request.option_files, board)
+                               request.option_files, board, serve, call)
     # What might not fit, as genmros mros2-fit says it (the misfits stopped the build).
     for line in exported.fit.warnings if exported.fit else []:
         print('genmros: warning: %s' % line, file=sys.stderr, flush=True)
