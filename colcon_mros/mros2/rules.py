@@ -129,9 +129,22 @@ def name_requirements(endpoints):
     return requirements
 
 
-def _counted(number, kind, endpoints):
-    how = 'one per topic' if topics_known(endpoints) else 'at least one per type'
-    return '%d %s%s (%s)' % (number, kind, '' if number == 1 else 's', how)
+def _counted(endpoints, direction, kind, reliable=None):
+    """The count of a direction's endpoints in words: the publishers or subscribers (kind),
+    and the writers or readers of services and clients."""
+    topics = [e for e in endpoints if e.service is None]
+    services = [e for e in endpoints if e.service is not None]
+    parts = []
+    number = count(topics, direction, reliable)
+    if number:
+        how = 'one per topic' if topics_known(topics) else 'at least one per type'
+        parts.append('%d %s%s (%s)' % (number, kind, '' if number == 1 else 's', how))
+    number = count(services, direction, reliable)
+    if number:
+        noun = 'writer' if direction == PUBLISH else 'reader'
+        parts.append('%d %s%s of services and clients (one each)'
+                     % (number, noun, '' if number == 1 else 's'))
+    return ' and '.join(parts)
 
 
 def endpoint_count_requirements(endpoints, graph_writer=False):
@@ -150,18 +163,21 @@ def endpoint_count_requirements(endpoints, graph_writer=False):
             requirements.append(Requirement(
                 per_participant, 'the firmware', "its %s%s and the participant's %d built-in "
                 'ones (SPDP, SEDP publications, SEDP subscriptions)'
-                % (_counted(number, kind, endpoints), graph if extra else '', BUILTIN_ENDPOINTS),
+                % (_counted(endpoints, direction, kind), graph if extra else '',
+                   BUILTIN_ENDPOINTS),
                 number + extra + BUILTIN_ENDPOINTS))
         best_effort = count(endpoints, direction, reliable=False)
         if best_effort:
             requirements.append(Requirement(
                 stateless, 'the firmware', "its %s, best-effort, and the participant's SPDP "
-                'one' % _counted(best_effort, kind, endpoints), best_effort + BUILTIN_STATELESS))
+                'one' % _counted(endpoints, direction, kind, reliable=False),
+                best_effort + BUILTIN_STATELESS))
         reliable = count(endpoints, direction, reliable=True)
         if reliable + extra:
             requirements.append(Requirement(
                 stateful, 'the firmware', "its %s, reliable,%s and the participant's %d SEDP "
-                'ones' % (_counted(reliable, kind, endpoints), graph if extra else '',
+                'ones' % (_counted(endpoints, direction, kind, reliable=True),
+                          graph if extra else '',
                           BUILTIN_STATEFUL), reliable + extra + BUILTIN_STATEFUL))
     return requirements
 

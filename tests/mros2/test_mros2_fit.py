@@ -70,7 +70,7 @@ def _write(path, text):
 
 
 def _fit(tmp_path, publish, subscribe, config=CONFIG, limit=None, publisher=None,
-         receiver=RECEIVER_AS_IT_IS, peer_max_message=65500):
+         receiver=RECEIVER_AS_IT_IS, peer_max_message=65500, serve=(), call=()):
     mros2_root = None
     if publisher is not None:
         _write(tmp_path / 'mros2' / 'include' / 'mros2.h', publisher)
@@ -79,7 +79,8 @@ def _fit(tmp_path, publish, subscribe, config=CONFIG, limit=None, publisher=None
         mros2_root = str(tmp_path / 'mros2')
     board = Board(_write(tmp_path / 'rtps' / 'config.h', config), limit, mros2_root,
                   peer_max_message)
-    return firmware_fit(board, prefixes=ros2_prefixes(), publish=publish, subscribe=subscribe)
+    return firmware_fit(board, prefixes=ros2_prefixes(), publish=publish, subscribe=subscribe,
+                        serve=serve, call=call)
 
 
 def _roomy():
@@ -297,6 +298,8 @@ PUBLISHER_WITH_WRITER = PUBLISHER_WITHOUT_WRITER.replace(
     'std::string topic_name;', 'std::string topic_name;\n    rtps::Writer* writer;')
 QOS_PATCHED = '#define MROS2_RELIABLE_WHERE_ASKED 1\n' + PUBLISHER_WITH_WRITER
 GRAPH_PATCHED = '#define MROS2_NODE_IN_THE_ROS_GRAPH 1\n' + QOS_PATCHED
+SERVICES_PATCHED = '#define MROS2_SERVICES_BOTH_WAYS 1\n' + QOS_PATCHED
+TIS = 'test_interface_files/srv/'
 
 
 def _stateful_config():
@@ -393,4 +396,82 @@ def test_templates_hpp_compiles_against_either_mros2_and_holds_the_graph_writers
     assert ("#error \"reliable endpoints (publish a %sEmpty (reliable, depth 10)) need mros2 "
             "with genmros' patch reliable-where-asked: apply genmros' mros2 patch set (genmros "
             'mros2-harden)"' % TIF) in results['released'].stderr
+    assert results['released'].stderr.count('error:') == 1, results['released'].stderr
+
+
+def test_a_service_and_a_client_take_a_reliable_writer_and_reader_each(tmp_path):
+    config = str(tmp_path / 'rtps' / 'config.h')
+    fit = _fit(tmp_path, ['a:%sEmpty:reliable' % TIF], [], config=_stateful_config(),
+               publisher=SERVICES_PATCHED, serve=['reset:%sEmpty' % TIS],
+               call=['ask:%sBasicTypes' % TIS])
+    assert fit.misfits == [
+        "%s:13: the firmware: its 1 publisher (one per topic) and 2 writers of services and "
+        "clients (one each), reliable, and the participant's 2 SEDP ones needs "
+        'NUM_STATEFUL_WRITERS >= 5 (it is 3)' % config,
+        "%s:14: the firmware: its 2 readers of services and clients (one each), reliable, and "
+        "the participant's 2 SEDP ones needs NUM_STATEFUL_READERS >= 4 (it is 2)" % config]
+    report = fit.report()
+    for line in ('| serve reset %sEmpty (publish of %sEmpty_Response) | '
+                 'test_interface_files::srv::dds_::Empty_Response_ | 1 |' % (TIS, TIS),
+                 '| call ask %sBasicTypes (subscribe of %sBasicTypes_Response) | '
+                 'test_interface_files::srv::dds_::BasicTypes_Response_ | unbounded |'
+                 % (TIS, TIS)):
+        assert line in report
+    # Each writer keeps rmw's services default, 10: one short is a misfit.
+    short = _stateful_config().replace('HISTORY_SIZE_STATEFUL = 10', 'HISTORY_SIZE_STATEFUL = 9')
+    assert ('%s:15: serve reset %sEmpty: a reliable publisher keeping its last 10 samples '
+            'needs HISTORY_SIZE_STATEFUL >= 10 (it is 9)' % (config, TIS)) in _fit(
+        tmp_path, [], [], config=short, publisher=SERVICES_PATCHED,
+        serve=['reset:%sEmpty' % TIS]).misfits
+
+
+def test_services_need_the_patch(tmp_path):
+    header = str(tmp_path / 'mros2' / 'include' / 'mros2.h')
+    fit = _fit(tmp_path, [], [], config=_stateful_config(), publisher=QOS_PATCHED,
+               serve=['reset:%sEmpty' % TIS])
+    assert fit.misfits[-1] == (
+        "%s:4: the firmware: its services (serve reset %sEmpty) need mros2 with the patch "
+        "services-both-ways: apply genmros' mros2 patch set (genmros mros2-harden)"
+        % (header, TIS))
+    assert len(fit.misfits) == 2  # and NUM_STATEFUL_READERS 2, which the patched one misses too
+    patched = _fit(tmp_path, [], [], config=_stateful_config(), publisher=SERVICES_PATCHED,
+                   serve=['reset:%sEmpty' % TIS])
+    assert patched.misfits == fit.misfits[:1]
+
+
+def test_templates_hpp_instantiates_services_and_clients_where_mros2_has_the_patch(tmp_path):
+    """With a stand-in of the patched mros2.h, the service's and the client's calls compile at
+    -Wall -Wextra -pedantic; without the patch, the build stops at one #error naming them."""
+    fit = _fit(tmp_path, [], [], config=_stateful_config(), serve=['reset:%sEmpty' % TIS],
+               call=['ask:%sBasicTypes' % TIS])
+    text = templates_header(fit.endpoints, fit.board_requirements)['templates.hpp']
+    assert '#include "test_interface_files/srv/basic_types.hpp"' in text
+    body = text[text.index('// mros2 with genmros'):]
+    patched = (
+        '#define MROS2_RELIABLE_WHERE_ASKED 1\n#define MROS2_SERVICES_BOTH_WAYS 1\n'
+        'namespace rtps { struct ReaderCacheChange; }\n'
+        'namespace mros2 {\nstruct QoS { QoS(int) {} };\n'
+        'class Service {\n public:\n  template <class T>\n  static void request_handler('
+        'void *, const rtps::ReaderCacheChange &) {}\n};\n'
+        'class Client {\n public:\n  template <class Request, class Response>\n  bool call('
+        'Request &, Response &, uint32_t) { return true; }\n};\n'
+        'class Node {\n public:\n  template <class T>\n  Service create_service(std::string, '
+        'void (*)(typename T::Request *, typename T::Response *)) { return Service(); }\n'
+        '  template <class T>\n  Client create_client(std::string) { return Client(); }\n};\n}\n')
+    services = ''.join(
+        'namespace test_interface_files { namespace srv {\nstruct %s_Request {};\n'
+        'struct %s_Response {};\nstruct %s { typedef %s_Request Request; '
+        'typedef %s_Response Response; };\n} }\n' % ((name,) * 5)
+        for name in ('Empty', 'BasicTypes'))
+    results = {}
+    for name, header in (('released', 'namespace mros2 {}\n'), ('patched', patched)):
+        source = tmp_path / ('%s.cpp' % name)
+        source.write_text('#include <cstdint>\n#include <string>\n' + header + services + body)
+        results[name] = subprocess.run(
+            ['g++', '-std=c++14', '-Wall', '-Wextra', '-pedantic', '-fsyntax-only', str(source)],
+            capture_output=True, text=True)
+    assert results['patched'].returncode == 0, results['patched'].stderr
+    assert ("#error \"services (call ask %sBasicTypes, serve reset %sEmpty) need mros2 with "
+            "genmros' patch services-both-ways: apply genmros' mros2 patch set (genmros "
+            'mros2-harden)"' % (TIS, TIS)) in results['released'].stderr
     assert results['released'].stderr.count('error:') == 1, results['released'].stderr

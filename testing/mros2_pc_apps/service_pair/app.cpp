@@ -6,7 +6,8 @@
  * - it calls the ROS side's name_lengths once the service is ready: call i asks for the
  *   names "call i" and i times "x" (none for call 0), and holds the reply to the same rule.
  * It prints "call i ok" or "call i failed: <why>" for each of CALLS calls, "calls done" after
- * them, and on each "requests N" line how many requests it answered so far.
+ * them; every 10 requests, how many it answered and how many replies the reply writer refused
+ * ("requests N (M replies refused)").
  */
 #include "mros2.h"
 #include "rcl_interfaces/srv/get_parameter_types.hpp"
@@ -31,7 +32,8 @@ void name_lengths(GetParameterTypes::Request *request, GetParameterTypes::Respon
     response->types.push_back(static_cast<uint8_t>(name.size()));
   }
   if (++requests_answered % 10 == 0) {
-    printf("requests %d\n", requests_answered);
+    printf("requests %d (%u replies refused)\n", requests_answered,
+           (unsigned)mros2::Service::refused_replies);
     fflush(stdout);
   }
 }

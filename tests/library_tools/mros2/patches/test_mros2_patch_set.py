@@ -58,7 +58,7 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
         'not applied   data-frag-for-best-effort-readers',
         'not applied   reader-catches-up-at-once',
         'not applied   acknacks-on-the-writer-threads', 'not applied   reliable-where-asked',
-        'not applied   node-in-the-ros-graph']
+        'not applied   node-in-the-ros-graph', 'not applied   services-both-ways']
     applied = run_genmros('mros2-harden', '--mros2-root', str(checkout))
     assert applied.stdout == ('genmros: applied one-writer-per-publisher, checked-receive, '
                               'publish-keeps-a-copy, accept-fast-dds-3-discovery, '
@@ -67,14 +67,17 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
                               'acknack-within-the-history, lease-in-milliseconds, '
                               'data-holds-its-fields, data-frag-for-best-effort-readers, '
                               'reader-catches-up-at-once, acknacks-on-the-writer-threads, '
-                              'reliable-where-asked, node-in-the-ros-graph\n')
+                              'reliable-where-asked, node-in-the-ros-graph, '
+                              'services-both-ways\n')
     changed = {'include': ['mros2.h'], 'src': ['mros2.cpp'],
                'embeddedRTPS': ['include/rtps/ThreadPool.h',
+                                'include/rtps/common/types.h',
                                 'include/rtps/discovery/ParticipantProxyData.h',
                                 'include/rtps/discovery/SEDPAgent.h',
                                 'include/rtps/discovery/SPDPAgent.h',
                                 'include/rtps/entities/Domain.h',
                                 'include/rtps/entities/Participant.h',
+                                'include/rtps/entities/Reader.h',
                                 'include/rtps/entities/ReaderProxy.h',
                                 'include/rtps/entities/StatefulReader.h',
                                 'include/rtps/entities/StatefulReader.tpp',
@@ -82,9 +85,12 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
                                 'include/rtps/entities/StatefulWriter.tpp',
                                 'include/rtps/entities/WriterProxy.h',
                                 'include/rtps/messages/MessageReceiver.h',
+                                'include/rtps/messages/MessageTypes.h',
+                                'include/rtps/storages/CacheChange.h',
                                 'include/rtps/storages/SimpleHistoryCache.h',
                                 'src/ThreadPool.cpp',
                                 'src/discovery/ParticipantProxyData.cpp',
+                                'src/discovery/SEDPAgent.cpp',
                                 'src/discovery/SPDPAgent.cpp',
                                 'src/entities/Domain.cpp',
                                 'src/entities/Participant.cpp',

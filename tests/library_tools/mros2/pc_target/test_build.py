@@ -24,12 +24,16 @@ def test_the_apps_sources_from_its_filelists_and_its_endpoints_from_its_calls(tm
         'set(apl_SRCS\n  ${PROJECT_SOURCE_DIR}/workspace/${MROS2_APPNAME}/app.cpp\n)\n')
     (tmp_path / 'app.cpp').write_text(
         'auto pub = node.create_publisher<std_msgs::msg::String>("to_linux", 10);\n'
-        'auto sub = node.create_subscription< geometry_msgs::msg::Pose >( "cmd_vel", 10, f);\n')
+        'auto sub = node.create_subscription< geometry_msgs::msg::Pose >( "cmd_vel", 10, f);\n'
+        'node.create_service<std_srvs::srv::SetBool>("enable", on_enable);\n'
+        'auto client = node.create_client<std_srvs::srv::Trigger>( "reset");\n')
     (tmp_path / 'other.cpp').write_text('')
     sources = build.app_sources(str(tmp_path))
     assert sources == [str(tmp_path / 'app.cpp')]
     assert build.app_endpoints(sources) == (['to_linux:std_msgs/msg/String'],
-                                            ['cmd_vel:geometry_msgs/msg/Pose'])
+                                            ['cmd_vel:geometry_msgs/msg/Pose'],
+                                            ['enable:std_srvs/srv/SetBool'],
+                                            ['reset:std_srvs/srv/Trigger'])
 
 
 def test_the_config_declares_the_address_mros2_defines(tmp_path):

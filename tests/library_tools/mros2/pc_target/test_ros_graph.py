@@ -9,12 +9,11 @@ lease of 10 s (embeddedRTPS announces SPDP_DEFAULT_REMOTE_LEASE_DURATION, 100 s 
 mros2-posix)."""
 
 import os
-import re
 
 import pytest
 
 from support import mros2_pc_boards
-from support.mros2_pc_boards import config_of
+from support.mros2_pc_boards import LONG_TYPE_NAMES, changed_config
 from support.user_checkouts import MROS2_ROOT
 from testing import mros2_pc, mros2_soak
 
@@ -31,16 +30,11 @@ posix_root = mros2_pc_boards.posix_root
 @pytest.fixture(scope='module')
 def program(posix_root, tmp_path_factory):
     work = tmp_path_factory.mktemp('ros_graph')
-    with open(config_of(posix_root)) as stream:
-        config = stream.read()
-    changed, leases = re.subn(r'SPDP_DEFAULT_REMOTE_LEASE_DURATION = \{\s*100, 0\}',
-                              'SPDP_DEFAULT_REMOTE_LEASE_DURATION = {%d, 0}' % LEASE, config)
-    changed = changed.replace('MAX_TYPENAME_LENGTH = 40', 'MAX_TYPENAME_LENGTH = 64')
-    assert leases == 1 and changed.count('MAX_TYPENAME_LENGTH = 64') == 1
-    (work / 'rtps').mkdir()
-    (work / 'rtps' / 'config.h').write_text(changed)
-    return mros2_pc.build(APP, str(work / 'build'), MROS2_ROOT, str(work / 'rtps' / 'config.h'),
-                          hardened=True, target='native')
+    config = changed_config(posix_root, str(work), [
+        (r'SPDP_DEFAULT_REMOTE_LEASE_DURATION = \{\s*100, 0\}',
+         'SPDP_DEFAULT_REMOTE_LEASE_DURATION = {%d, 0}' % LEASE), LONG_TYPE_NAMES])
+    return mros2_pc.build(APP, str(work / 'build'), MROS2_ROOT, config, hardened=True,
+                          target='native')
 
 
 def test_rclpy_lists_the_node_with_exactly_its_topics_and_drops_it_after_its_lease(

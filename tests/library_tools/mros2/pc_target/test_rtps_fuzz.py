@@ -21,7 +21,8 @@ FUZZER = os.path.join(REPO, 'bench', 'fuzz', 'rtps_fuzz.py')
 PARSERS = ('MessageReceiver: DATA', 'MessageReceiver: HEARTBEAT', 'MessageReceiver: ACKNACK',
            'MessageReceiver: ACKNACKs sorted out', 'StatefulWriter: ACKNACK',
            'ParticipantProxyData::readFromUcdrBuffer', 'TopicData::readFromUcdrBuffer',
-           'SEDP: publications', 'SEDP: subscriptions', 'MessageReceiver: DATA_FRAG',
+           'SEDP: publications', 'SEDP: subscriptions', 'MessageReceiver: inline QoS',
+           'SPDP: a dispose heeded', 'SEDP: a dispose heeded', 'MessageReceiver: DATA_FRAG',
            'MessageReceiver: fragments taken', "mros2's callback")
 NO_FINDING = 'no sanitizer report; the board went on echoing byte for byte afterwards'
 
