@@ -250,6 +250,11 @@ APP_ALL_PUBLISHES = ['image:sensor_msgs/msg/Image', 'chatter:std_msgs/msg/String
 APP_RELIABLE_PUBLISH = 'chatter_reliable:std_msgs/msg/String:reliable:10'
 # The app's node, as the ROS 2 graph lists it with the patch node-in-the-ros-graph.
 APP_NODE = 'main_job_board'
+# Hardened, the app serves one service and calls another (the patch services-both-ways), as
+# testing/mros2_pc_services.py serves and calls them; the calls each way.
+APP_SERVES = ['parameter_types:rcl_interfaces/srv/GetParameterTypes']
+APP_CALLS = ['name_lengths:rcl_interfaces/srv/GetParameterTypes']
+SERVICE_CALLS = 20
 
 
 def mros2_pc_run(workspace, work_dir, mros2_root, hardened):
@@ -262,15 +267,15 @@ def mros2_pc_run(workspace, work_dir, mros2_root, hardened):
     installs = sorted(glob.glob(os.path.join(workspace.root, 'install', '*')))
     publishes = APP_ALL_PUBLISHES + [APP_RELIABLE_PUBLISH] if hardened else \
         APP_ALL_PUBLISHES[:1]
-    options = {'hardened': True, 'app_defines': ('APP_ALL_PUBLISHERS',)} if hardened else \
-        {'patches': mros2_pc.TALKING_PATCHES}
+    options = {'hardened': True, 'app_defines': ('APP_ALL_PUBLISHERS',), 'serve': APP_SERVES,
+               'call': APP_CALLS} if hardened else {'patches': mros2_pc.TALKING_PATCHES}
     program = mros2_pc.build(MROS2_APP, os.path.join(work_dir, 'build'), mros2_root,
                              MROS2_APP_CONFIG, prefixes=installs + [WHEELS],
                              publish=publishes, subscribe=APP_SUBSCRIBES, **options)
     environment = {key: value for key, value in workspace.environment().items()
                    if key != 'ROS_AUTOMATIC_DISCOVERY_RANGE'}
     topics = [endpoint.split(':')[0] for endpoint in publishes]
-    graph_rows = []
+    graph_rows, service_rows = [], []
     with mros2_pc.Session(program, work_dir) as session:
         session.start_board()
         if not session.wait_for_output('app ready'):
@@ -286,6 +291,8 @@ def mros2_pc_run(workspace, work_dir, mros2_root, hardened):
                                         (['--reliable-chatter'] if hardened else [])),
             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=environment)
         stdout, stderr = peer.communicate(timeout=PEER_TIMEOUT + 60)
+        if hardened:
+            service_rows = service_call_rows(session)
         output = session.stop_board()
         if hardened:
             watcher.stop()
@@ -294,7 +301,33 @@ def mros2_pc_run(workspace, work_dir, mros2_root, hardened):
     results = peer_rows(stdout.splitlines(), 'the board')
     if not results:
         raise Failure('the rclpy peer reported nothing: %s' % stderr[-500:])
-    return graph_rows + results, output
+    return graph_rows + results + service_rows, output
+
+
+def service_call_rows(session):
+    """(title, detail, problem) of the app's service called by rclpy and of the app calling
+    rclpy's, SERVICE_CALLS each way (testing/mros2_pc_services.py, rclpy's default services
+    QoS): every reply and request checked field by field."""
+    from testing import mros2_pc
+    job = {'serve': APP_CALLS[0].split(':')[0], 'call': APP_SERVES[0].split(':')[0],
+           'node': APP_NODE, 'calls': SERVICE_CALLS, 'clients': 0, 'board_calls': SERVICE_CALLS,
+           'wait': PEER_TIMEOUT}
+    report = session.peer(job, script=mros2_pc.SERVICES_SCRIPT).result()
+    session.wait_for_output('call %d ' % (SERVICE_CALLS - 1))
+    right, calls = report.get('calls', [0, SERVICE_CALLS])
+    listed = ['/' + job['call'], [APP_SERVES[0].split(':')[1]]] in report['services_by_node']
+    called = '%d of %d replies right; %s by rclpy under %s' % (
+        right, calls, 'listed' if listed else 'not listed', APP_NODE)
+    board_ok = sum(1 for line in session.output().splitlines()
+                   if line.startswith('call ') and line.endswith(' ok'))
+    requests_right = sum(1 for i, names in enumerate(report['requests'][:SERVICE_CALLS])
+                         if names == ['call %d' % i, 'x' * i])
+    calling = '%d of %d replies right on the board; %d of its requests right at rclpy' % (
+        board_ok, SERVICE_CALLS, requests_right)
+    return [('a service called by rclpy (parameter_types)', called,
+             None if right == calls == SERVICE_CALLS and listed else called),
+            ('the board calling an rclpy service (name_lengths)', calling,
+             None if board_ok == requests_right == SERVICE_CALLS else calling)]
 
 
 def graph_row(seen, publishes):

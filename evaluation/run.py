@@ -272,7 +272,7 @@ def run_mros2_pc(steps, workspace, build_root):
     mros2_root = os.environ.get('MROS2_ROOT', '')
     runs = (('mros2 as it is + accept-fast-dds-3-discovery, reader-catches-up-at-once, '
              'one publisher', False),
-            ('mros2 --hardened, seven publishers, one reliable', True))
+            ('mros2 --hardened, seven publishers, one reliable, a service each way', True))
     if not mros2_root or not os.path.isfile(os.path.join(mros2_root, 'src', 'mros2.cpp')):
         reason = 'MROS2_ROOT is not set' if not mros2_root else \
             'no mros2 checkout at %s (no src/mros2.cpp)' % mros2_root

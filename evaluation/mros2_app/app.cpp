@@ -9,12 +9,17 @@
  * <topic>_echo. mros2 v0.5.4 as it is sends every message through its last publisher, so
  * built without APP_ALL_PUBLISHERS the app has one, image, and echoes nothing. With it (genmros'
  * whole patch set) chatter goes out on chatter_reliable too, from a reliable publisher
- * (mros2::QoS(10).reliable(), the patch reliable-where-asked). All publishing happens in the
- * callbacks, on mros2's reader thread, as mros2's shared send buffers need.
+ * (mros2::QoS(10).reliable(), the patch reliable-where-asked), and the app serves
+ * parameter_types and calls name_lengths (rcl_interfaces/srv/GetParameterTypes: a name's type
+ * is its length; the patch services-both-ways): once name_lengths is there, it calls it
+ * kCalls times, call i asking for "call i" and i times "x", and prints "call i ok" or
+ * "call i failed". All publishing happens in the callbacks, on mros2's reader thread, as
+ * mros2's shared send buffers need.
  */
 #include "mros2.h"
 #include "geometry_msgs/msg/twist.hpp"
 #include "mros2_test_msgs/msg/reading.hpp"
+#include "rcl_interfaces/srv/get_parameter_types.hpp"
 #include "sensor_msgs/msg/image.hpp"
 #include "std_msgs/msg/string.hpp"
 
@@ -23,6 +28,7 @@
 #include "netif_posix_add.h"
 
 #include <stdio.h>
+#include <string>
 
 #include "../firmware_ros2/board_samples.hpp"
 
@@ -80,6 +86,50 @@ void on_reading(mros2_test_msgs::msg::Reading *reading)
 #endif
 }
 
+#ifdef APP_ALL_PUBLISHERS
+typedef rcl_interfaces::srv::GetParameterTypes GetParameterTypes;
+const int kCalls = 20;
+const uint32_t kCallTimeoutMs = 5000;
+
+void name_lengths(GetParameterTypes::Request *request, GetParameterTypes::Response *response)
+{
+  for (const auto &name : request->names) {
+    response->types.push_back(static_cast<uint8_t>(name.size()));
+  }
+}
+
+bool reply_right(const GetParameterTypes::Request &request,
+                 const GetParameterTypes::Response &response)
+{
+  if (response.types.size() != request.names.size()) {
+    return false;
+  }
+  for (size_t i = 0; i < request.names.size(); ++i) {
+    if (response.types[i] != request.names[i].size()) {
+      return false;
+    }
+  }
+  return true;
+}
+
+void call_name_lengths(mros2::Client &client)
+{
+  while (!client.service_is_ready()) {
+    osDelay(100);
+  }
+  for (int i = 0; i < kCalls; ++i) {
+    GetParameterTypes::Request request;
+    request.names.push_back("call " + std::to_string(i));
+    request.names.push_back(std::string(i, 'x'));
+    GetParameterTypes::Response response;
+    const bool right = client.call(request, response, kCallTimeoutMs) &&
+                       reply_right(request, response);
+    printf("call %d %s\n", i, right ? "ok" : "failed");
+    fflush(stdout);
+  }
+}
+#endif
+
 }  // namespace
 
 int main()
@@ -104,7 +154,15 @@ int main()
       node.create_subscription<geometry_msgs::msg::Twist>("twist", 10, on_twist);
   mros2::Subscriber readings =
       node.create_subscription<mros2_test_msgs::msg::Reading>("reading_in", 10, on_reading);
+#ifdef APP_ALL_PUBLISHERS
+  node.create_service<rcl_interfaces::srv::GetParameterTypes>("parameter_types", name_lengths);
+  mros2::Client client =
+      node.create_client<rcl_interfaces::srv::GetParameterTypes>("name_lengths");
+#endif
   printf("app ready\n");
+#ifdef APP_ALL_PUBLISHERS
+  call_name_lengths(client);
+#endif
   mros2::spin();
   return 0;
 }

@@ -34,13 +34,16 @@ PACKAGES = ('mros2_base_msgs', 'mros2_test_msgs')
 # field added (evaluation/run.py, run_mros2_pc).
 AS_IT_IS = ('ROS 2 on mros2 (mros2 as it is + accept-fast-dds-3-discovery, '
             'reader-catches-up-at-once, one publisher): ')
-HARDENED = 'ROS 2 on mros2 (mros2 --hardened, seven publishers, one reliable): '
+HARDENED = ('ROS 2 on mros2 (mros2 --hardened, seven publishers, one reliable, a service each '
+            'way): ')
 MROS2_ROWS = [AS_IT_IS + 'the board -> rclpy: image'] + [
     HARDENED + row for row in (
         'the node listed by rclpy (get_node_names_and_namespaces, *_by_node)',
         'the board -> rclpy: chatter', 'the board -> rclpy: image', 'the board -> rclpy: reading',
         'rclpy -> the board -> rclpy: command_echo', 'rclpy -> the board -> rclpy: twist_echo',
-        'rclpy -> the board -> rclpy: reading_in_echo', 'the board -> rclpy: chatter_reliable')]
+        'rclpy -> the board -> rclpy: reading_in_echo', 'the board -> rclpy: chatter_reliable',
+        'a service called by rclpy (parameter_types)',
+        'the board calling an rclpy service (name_lengths)')]
 
 
 @pytest.fixture(scope='module')
