@@ -30,9 +30,9 @@ from colcon_mros.mros2.rules import (CONFIG_HEADER, DATA_FRAG_PATCH, DISCOVERY_A
                                      FRAGMENT_OVERHEAD, GRAPH_MACRO, PEER_MAX_MESSAGE,
                                      QOS_MACRO, QOS_PATCH, READER_QUEUE,
                                      SERVICES_MACRO, SERVICES_PATCH, SETTINGS,
-                                     TYPENAME_MAX,
+                                     STATEFUL_HISTORY, TYPENAME_MAX,
                                      data_frag_requirements, discovery_problem,
-                                     graph_type_name_requirement,
+                                     graph_type_name_requirement, history_memory_lines,
                                      largest_datagram, requirements)
 
 # mros2's public header, where its Publisher class is declared.
@@ -112,6 +112,7 @@ class Fit:
         self.board_requirements = data_frag_requirements(
             endpoints, peer_max_message) if takes_data_frag else []
         graph_writer = checkout is not None and checkout.in_ros_graph
+        self.graph_writer = graph_writer
         for requirement in requirements(endpoints, graph_writer) + self.board_requirements:
             if requirement.needed is None:  # templates.hpp's static_assert counts it
                 continue
@@ -272,6 +273,13 @@ class Fit:
         lines.append('Settings (%s): %s' % (CONFIG_HEADER, ', '.join(
             '%s %d' % (name, self.settings[name].value)
             for name in SETTINGS if name in self.settings)))
+        history = self.settings.get(STATEFUL_HISTORY)
+        memory = history_memory_lines(self.endpoints, history.value if history else 0,
+                                      self.graph_writer)
+        if memory:
+            lines.append('')
+            lines.append("What the stateful writers' histories hold at most (pbufs):")
+            lines += ['- %s' % line for line in memory]
         lines.append('')
         lines += ['error: %s' % line for line in self.misfits] or ['Every endpoint fits.']
         lines += ['warning: %s' % line for line in self.warnings]

@@ -281,3 +281,38 @@ def data_frag_requirements(endpoints, peer_max_message):
                 message.max_size, fragment, peer_max_message, FRAGMENT_OVERHEAD),
             -(-sample // fragment)))
     return found
+
+
+# A ParticipantEntitiesInfo as the patch GRAPH_PATCH writes it, in CDR with its encapsulation:
+# the participant's GID, one node in '/', then the readers' and writers' GIDs. Besides the
+# GIDs and the node name's characters it takes at most this many bytes (the counts, '/',
+# the name's length and NUL, up to 3 of padding).
+GRAPH_SAMPLE_FIXED = 32
+# The GID sizes rmw uses: from Iron on, and in Humble (RMW_GID_STORAGE_SIZE).
+GID_SIZES = (16, 24)
+
+
+def history_memory_lines(endpoints, history_size, graph_writer):
+    """What the stateful writers' histories hold at most, in pbufs, as lines of the report:
+    each reliable writer its depth of its largest sample, and (graph_writer) the writer on
+    GRAPH_TOPIC its last history_size samples, the latest the largest."""
+    lines = []
+    for endpoint in endpoints:
+        if endpoint.direction != PUBLISH or not endpoint.reliable:
+            continue
+        subject = endpoint.service.describe() if endpoint.service else \
+            'topic %s' % endpoint.topic
+        size = endpoint.message.max_size
+        lines.append('%s: %d samples of %s' % (
+            subject, endpoint.depth, 'unbounded size' if size is None else
+            'up to %d bytes: %d bytes' % (largest_serialized_sample(endpoint.message),
+                                          endpoint.depth *
+                                          largest_serialized_sample(endpoint.message))))
+    if graph_writer:
+        gids = 1 + count(endpoints, PUBLISH) + count(endpoints, SUBSCRIBE)
+        lines.append('the writer on %s (the mros2 patch %s): %d samples of up to %s bytes, N '
+                     "the node name's length (a GID of %s bytes)" % (
+                         GRAPH_TOPIC, GRAPH_PATCH, history_size, ' or '.join(
+                             '%d + N' % (GRAPH_SAMPLE_FIXED + gids * gid) for gid in GID_SIZES),
+                         ' or '.join(str(gid) for gid in GID_SIZES)))
+    return lines

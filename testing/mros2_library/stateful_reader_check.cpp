@@ -20,17 +20,6 @@
 
 #include "rtps/entities/StatefulReader.h"
 
-// A single thread runs the check: the reader's mutex needs no lock.
-extern "C" {
-err_t sys_mutex_new(sys_mutex_t* mutex) {
-  mutex->handle = mutex;
-  return ERR_OK;
-}
-void sys_mutex_lock(sys_mutex_t*) {}
-void sys_mutex_unlock(sys_mutex_t*) {}
-void sys_mutex_free(sys_mutex_t* mutex) { mutex->handle = NULL; }
-}
-
 namespace {
 
 // The RTPS header (20 bytes) and the ACKNACK's submessage header (4), reader

@@ -475,3 +475,22 @@ def test_templates_hpp_instantiates_services_and_clients_where_mros2_has_the_pat
             "genmros' patch services-both-ways: apply genmros' mros2 patch set (genmros "
             'mros2-harden)"' % (TIS, TIS)) in results['released'].stderr
     assert results['released'].stderr.count('error:') == 1, results['released'].stderr
+
+
+def test_the_report_gives_what_the_stateful_writers_histories_hold(tmp_path):
+    """A reliable writer its depth of its largest sample (the encapsulation, the message, the
+    padding); ros_discovery_info's writer its history of samples, each at most 32 bytes and
+    the name's besides the GIDs (rosbags' ParticipantEntitiesInfo reaches that bound)."""
+    fit = _fit(tmp_path, ['a:%sEmpty:reliable:3' % TIF], ['b:%sEmpty' % TIF],
+               config=_roomy().replace('const int THREAD_POOL_READER_STACKSIZE',
+                                       STATEFUL.replace('= 3', '= 5').replace('= 2', '= 5') +
+                                       'const int THREAD_POOL_READER_STACKSIZE'),
+               publisher='#define MROS2_SERVICES_BOTH_WAYS 1\n' + GRAPH_PATCHED,
+               serve=['reset:%sEmpty' % TIS])
+    report = fit.report()
+    assert ("What the stateful writers' histories hold at most (pbufs):\n"
+            '- topic a: 3 samples of up to 8 bytes: 24 bytes\n'
+            '- serve reset %sEmpty: 10 samples of up to 8 bytes: 80 bytes\n'
+            '- the writer on ros_discovery_info (the mros2 patch node-in-the-ros-graph): 10 '
+            "samples of up to 112 + N or 152 + N bytes, N the node name's length (a GID of 16 "
+            'or 24 bytes)\n' % TIS) in report, report

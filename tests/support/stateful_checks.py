@@ -33,7 +33,8 @@ def build_check(work, name, config, patches):
                str(rtps / 'src' / 'messages' / 'MessageTypes.cpp'),
                str(rtps / 'src' / 'storages' / 'PBufWrapper.cpp'),
                os.path.join(TARGET_DIR, 'src', 'pbuf.cpp'),
-               os.path.join(STAND_IN, name + '.cpp'), '-pthread', '-o', program]
+               os.path.join(STAND_IN, 'lwip_sys.cpp'), os.path.join(STAND_IN, name + '.cpp'),
+               '-pthread', '-o', program]
     result = subprocess.run(command, capture_output=True, text=True)
     assert result.returncode == 0, result.stderr[-4000:]
     return program

@@ -22,7 +22,7 @@ namespace rtps {
 
 typedef uint16_t DataSize_t;
 typedef uint32_t FragDataSize_t;
-enum class ChangeKind_t { ALIVE };
+enum class ChangeKind_t { ALIVE, NOT_ALIVE_DISPOSED };
 
 // Endpoint identities, as embeddedRTPS' rtps/common/types.h has them.
 struct GuidPrefix_t {
@@ -40,6 +40,23 @@ struct EntityId_t {
 struct Guid_t {
   GuidPrefix_t prefix;
   EntityId_t entityId;
+  bool operator==(const Guid_t& other) const {
+    return prefix.id == other.prefix.id && entityId.entityKey == other.entityId.entityKey &&
+           entityId.entityKind == other.entityId.entityKind;
+  }
+};
+const Guid_t GUID_UNKNOWN{};
+struct SequenceNumber_t {
+  int32_t high;
+  uint32_t low;
+  bool operator==(const SequenceNumber_t& other) const {
+    return high == other.high && low == other.low;
+  }
+};
+const SequenceNumber_t SEQUENCENUMBER_UNKNOWN = {-1, 0};
+struct SampleIdentity {
+  Guid_t writerGuid;
+  SequenceNumber_t sequenceNumber;
 };
 const EntityId_t ENTITYID_BUILD_IN_PARTICIPANT = {{{00, 00, 01}}, EntityKind_t::BUILD_IN_PARTICIPANT};
 struct TopicData {
@@ -69,6 +86,7 @@ const uint8_t HISTORY_SIZE_STATEFUL = 10;
 struct CacheChange {
   typedef std::pair<uint8_t*, DataSize_t> SerializedBuf;
   typedef std::function<SerializedBuf()> SerializerCallback;
+  SequenceNumber_t sequenceNumber;
 };
 
 // One sample as a writer sent it.
@@ -87,6 +105,7 @@ class Writer {
                                   EntityKind_t::USER_DEFINED_WRITER_WITHOUT_KEY}};
   }
   TopicData m_attributes;
+  uint32_t getNumMatchedReader() { return 0; }
   const CacheChange* newChange(ChangeKind_t, const uint8_t* data, DataSize_t size) {
     record(std::vector<uint8_t>(data, data + size));
     return nullptr;
@@ -120,6 +139,12 @@ class StatefulWriter : public Writer {
  public:
   using Writer::Writer;
   bool keepLast(uint16_t depth, uint32_t) { return depth != 0 && depth <= Config::HISTORY_SIZE_STATEFUL; }
+  // The patch services-both-ways' write of a request or reply (its related
+  // sample identity is not recorded).
+  const CacheChange* newRelatedChange(const SampleIdentity&, const uint8_t* data,
+                                      DataSize_t size) {
+    return newChange(ChangeKind_t::ALIVE, data, size);
+  }
 };
 
 class ReaderCacheChange {
@@ -127,6 +152,11 @@ class ReaderCacheChange {
   ReaderCacheChange(const uint8_t* data, DataSize_t size) : data_(data), size_(size) {}
   const uint8_t* getData() const { return data_; }
   const DataSize_t getDataSize() const { return size_; }
+  const ChangeKind_t kind = ChangeKind_t::ALIVE;
+  const Guid_t writerGuid{};
+  const SequenceNumber_t sn{};
+  bool hasRelatedIdentity = false;
+  SampleIdentity relatedIdentity{};
 
  private:
   const uint8_t* data_;
@@ -143,6 +173,7 @@ class Reader {
                                   EntityKind_t::USER_DEFINED_READER_WITHOUT_KEY}};
   }
   TopicData m_attributes;
+  uint32_t getNumMatchedWriters() { return 0; }
   void registerCallback(ddsReaderCallback_fp cb, void* callee) {
     callback = cb;
     this->callee = callee;

@@ -30,6 +30,8 @@ pytestmark = [pytest.mark.needs_mros2, pytest.mark.slow]
 
 STAND_IN = os.path.join(REPO, 'testing', 'mros2_library')
 PATCH = 'data-frag-for-best-effort-readers'
+# The patch after which the receiver hands its readers what it read of the inline QoS.
+INLINE_QOS_PATCH = 'services-both-ways'
 REMOTE = bytes([0x11] * 12)
 BEST_EFFORT, RELIABLE = bytes([0, 0, 1, 4]), bytes([0, 0, 2, 4])
 WRITER_1, WRITER_2, WRITER_3, WRITER_4 = (bytes([0, 0, key, 3]) for key in (1, 2, 3, 4))
@@ -58,6 +60,8 @@ def _build(tmp_path, patches, buffers=True):
                os.path.join(STAND_IN, 'receiver_check.cpp'), '-o', program]
     if PATCH in patches:
         command.insert(1, '-DCHECK_FRAGMENT_COUNTS')
+    if INLINE_QOS_PATCH in patches:
+        command.insert(1, '-DRECEIVER_READS_INLINE_QOS')
     if buffers:
         command[1:1] = ['-DRECEIVER_CHECK_BUFFER_SIZE=%d' % BUFFER, '-DRECEIVER_CHECK_BUFFERS=2']
     result = subprocess.run(command, capture_output=True, text=True)

@@ -120,7 +120,8 @@ def _run_check(checkout, export, out, patched, defines=()):
                '-I', STAND_IN, '-I', PC_TARGET_HEADERS, '-I', str(checkout / 'include'),
                '-I', export,
                str(checkout / 'src' / 'mros2.cpp'), os.path.join(STAND_IN, 'stand_in.cpp'),
-               os.path.join(STAND_IN, 'library_check.cpp'), '-pthread', '-o', program]
+               os.path.join(STAND_IN, 'lwip_sys.cpp'), os.path.join(STAND_IN, 'library_check.cpp'),
+               '-pthread', '-o', program]
     if patched:
         command.insert(1, '-DCHECK_DROPPED_SAMPLES')
     command[1:1] = ['-D%s' % define for define in defines]

@@ -20,6 +20,13 @@ class ReaderCacheChange {
   const DataSize_t size;
   const Guid_t writerGuid;
   const SequenceNumber_t sn;
+#ifdef RECEIVER_READS_INLINE_QOS
+  // With the patch services-both-ways: what the receiver read of the inline QoS.
+  bool hasRelatedIdentity = false;
+  SampleIdentity relatedIdentity{};
+  bool hasKeyHash = false;
+  Guid_t keyHash{};
+#endif
 
   ReaderCacheChange(ChangeKind_t kind, Guid_t& writerGuid, SequenceNumber_t sn,
                     const uint8_t* data, DataSize_t size)
