@@ -54,7 +54,7 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
         'not applied   checked-acknack', 'not applied   full-participant-table-refuses',
         'not applied   large-acknack-counts', 'not applied   bounded-submessage-lengths',
         'not applied   acknack-within-the-history', 'not applied   lease-in-milliseconds',
-        'not applied   data-holds-its-fields',
+        'not applied   data-holds-its-fields', 'not applied   sedp-parameters-within-their-length',
         'not applied   data-frag-for-best-effort-readers',
         'not applied   reader-catches-up-at-once',
         'not applied   acknacks-on-the-writer-threads', 'not applied   reliable-where-asked',
@@ -65,7 +65,8 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
                               'checked-acknack, full-participant-table-refuses, '
                               'large-acknack-counts, bounded-submessage-lengths, '
                               'acknack-within-the-history, lease-in-milliseconds, '
-                              'data-holds-its-fields, data-frag-for-best-effort-readers, '
+                              'data-holds-its-fields, sedp-parameters-within-their-length, '
+                              'data-frag-for-best-effort-readers, '
                               'reader-catches-up-at-once, acknacks-on-the-writer-threads, '
                               'reliable-where-asked, node-in-the-ros-graph, '
                               'services-both-ways\n')
@@ -92,6 +93,7 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
                                 'src/discovery/ParticipantProxyData.cpp',
                                 'src/discovery/SEDPAgent.cpp',
                                 'src/discovery/SPDPAgent.cpp',
+                                'src/discovery/TopicData.cpp',
                                 'src/entities/Domain.cpp',
                                 'src/entities/Participant.cpp',
                                 'src/messages/MessageReceiver.cpp',
