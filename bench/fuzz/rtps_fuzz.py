@@ -15,7 +15,8 @@ SEDP, DATA, HEARTBEAT, ACKNACK, INFO_TS, INFO_DST, and DATA_FRAG (the node's Fas
 no datagram over 1400 bytes, and one string of 3000 characters). That exchange has no GAP:
 the mutation of a submessage's kind makes GAPs, HEARTBEAT's body having GAP's layout.
 Then it sends the board those datagrams mutated (testing/rtps_datagrams.Mutator: submessage
-lengths, counts and kinds, parameter lists, names longer than the config's fields, locators,
+lengths, counts and kinds, parameter lists, inline QoS (related sample identities, key
+hashes, status infos: disposes), names longer than the config's fields, locators,
 sequence and fragment numbers, encapsulation headers, truncation, flipped bytes), from the
 rclpy participant the board has discovered and, one datagram in four (--unknown-share), from
 one it has not; and, one pick in fifty, new samples in DATA_FRAGs in the name of an rclpy
@@ -25,7 +26,9 @@ for the patch data-frag-for-best-effort-readers, whose buffers the hardened buil
 sets (FRAGMENT_BUFFER_SIZE 8192, FRAGMENT_BUFFERS 2, added to mros2-posix').
 Every 500 datagrams it checks that the board runs and its output holds no sanitizer report;
 a finding saves the last 500 datagrams sent (--findings DIR, JSON lines "port hex") and
-stops. At the end the board must still echo an rclpy node's strings byte for byte.
+stops. At the end (after the config's longest lease, 180 s, and a liveliness check, for the
+fuzzed participants to leave the board's table) the board must still echo an rclpy node's
+strings byte for byte.
 --coverage builds with gcov and prints, for the parsers the fuzzer must reach, how often
 each ran. --replay FILE sends a finding's datagrams to a fresh board and says whether it
 still reports. Exit 0: no finding and the board still echoing; 1: a finding; 3: no finding,
@@ -353,11 +356,20 @@ def main():
         counts, finding = fuzz(session, recorded, options.seconds, seed, options.findings,
                                options.unknown_share)
         # The fuzzed participants in the board's table leave it once their leases end, at
-        # most SPDP_MAX_REMOTE_LEASE_DURATION after their last announcement; the echo's node
-        # waits for a place.
+        # most SPDP_MAX_REMOTE_LEASE_DURATION after their last announcement, at the next
+        # liveliness check. The echo's node waits for that: until then the board has no
+        # place for it, and the node may yet see the board's endpoints (its SEDP writers
+        # resend by multicast for a fuzzed participant that acknowledges nothing) and send
+        # into nothing.
+        if finding is None:
+            time.sleep(MAX_REMOTE_LEASE_SECONDS)
+            announcements = os.path.join(work, 'after_fuzzing.jsonl')
+            capture = start_capture(session, announcements)
+            wait_for_announcements(session, announcements, LIVELINESS_CHECK_ANNOUNCEMENTS)
+            capture.terminate()
+            capture.wait()
         still = finding is None and echoes_exact(
-            session, ['after %d' % index for index in range(5)],
-            match_wait=mros2_pc.EVENT_CAP + MAX_REMOTE_LEASE_SECONDS)
+            session, ['after %d' % index for index in range(5)])
         output = session.stop_board()
     print('seed %d, %.0f s, %d datagrams sent: %s'
           % (seed, time.monotonic() - started, sum(counts.values()), dict(counts)))
