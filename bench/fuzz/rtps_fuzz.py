@@ -90,6 +90,7 @@ PARSERS = (('MessageReceiver: DATA', 'rtps::MessageReceiver::processDataSubmessa
            ('SEDP: publications', 'rtps::SEDPAgent::onNewPublisher'),
            ('SEDP: subscriptions', 'rtps::SEDPAgent::onNewSubscriber'),
            ('MessageReceiver: inline QoS', 'rtps::MessageReceiver::readInlineQos'),
+           ('SEDP: a dispose heeded', 'rtps::Participant::removeRemoteEndpoint'),
            ('MessageReceiver: DATA_FRAG', 'rtps::MessageReceiver::processDataFragSubmessage'),
            ('MessageReceiver: fragments taken', 'rtps::MessageReceiver::takeFragments'),
            ("mros2's callback", 'void mros2::Subscriber::callback_handler'))

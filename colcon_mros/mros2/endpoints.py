@@ -11,7 +11,7 @@ topic rules and counts one endpoint per type). ``TOPIC:TYPE:reliable`` (or
 A service the app serves or calls (the mros2 patch services-both-ways) is
 ``NAME:PKG/srv/TYPE``, and stands for the writer and reader mros2 makes for
 it, as ROS 2 names them over DDS: requests on ``rq/NAMERequest``, replies on
-``rr/NAMEReply``, both reliable, keeping ``SERVICE_DEPTH`` or more. Their topics'
+``rr/NAMEReply``, both reliable and keeping ``SERVICE_DEPTH``. Their topics'
 lengths are those of ``rt/`` names, which the rules count.
 
 A topic is held to ROS 2's name rules as mros2 uses a name: it sends
@@ -33,8 +33,7 @@ BEST_EFFORT = 'best_effort'
 # The samples a reliable endpoint keeps where no depth is given: what mros2's
 # examples pass, and rclcpp's default QoS keeps.
 DEFAULT_DEPTH = 10
-# What a service's writer and reader keep: rmw's services default, which the patch's writers
-# (they keep HISTORY_SIZE_STATEFUL, dropping the oldest) need room for.
+# What a service's writer and reader keep: rmw's services default, as the patch makes them.
 SERVICE_DEPTH = 10
 
 

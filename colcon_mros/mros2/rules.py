@@ -294,9 +294,8 @@ GID_SIZES = (16, 24)
 
 def history_memory_lines(endpoints, history_size, graph_writer):
     """What the stateful writers' histories hold at most, in pbufs, as lines of the report:
-    each reliable publisher its depth of its largest sample, a service's or client's writer
-    and (graph_writer) the writer on GRAPH_TOPIC their last history_size samples (the
-    latter's latest the largest)."""
+    each reliable writer its depth of its largest sample, and (graph_writer) the writer on
+    GRAPH_TOPIC its last history_size samples, the latest the largest."""
     lines = []
     for endpoint in endpoints:
         if endpoint.direction != PUBLISH or not endpoint.reliable:
@@ -304,7 +303,7 @@ def history_memory_lines(endpoints, history_size, graph_writer):
         subject = endpoint.service.describe() if endpoint.service else \
             'topic %s' % endpoint.topic
         size = endpoint.message.max_size
-        depth = history_size if endpoint.service else endpoint.depth
+        depth = endpoint.depth
         lines.append('%s: %d samples of %s' % (
             subject, depth, 'unbounded size' if size is None else
             'up to %d bytes: %d bytes' % (largest_serialized_sample(endpoint.message),

@@ -22,7 +22,7 @@ PARSERS = ('MessageReceiver: DATA', 'MessageReceiver: HEARTBEAT', 'MessageReceiv
            'MessageReceiver: ACKNACKs sorted out', 'StatefulWriter: ACKNACK',
            'ParticipantProxyData::readFromUcdrBuffer', 'TopicData::readFromUcdrBuffer',
            'SEDP: publications', 'SEDP: subscriptions', 'MessageReceiver: inline QoS',
-           'MessageReceiver: DATA_FRAG',
+           'SEDP: a dispose heeded', 'MessageReceiver: DATA_FRAG',
            'MessageReceiver: fragments taken', "mros2's callback")
 NO_FINDING = 'no sanitizer report; the board went on echoing byte for byte afterwards'
 

@@ -57,10 +57,9 @@ def test_three_rclpy_clients_at_once_each_get_only_their_own_replies(exchange):
 
 
 def test_a_client_gone_before_its_reply_leaves_the_service_serving(exchange):
-    """The peer destroys a client right after its request; the board's reply writer keeps
-    its last 10 replies as rmw's keep-last services do, dropping the oldest, so the reader
-    gone without acknowledging holds nothing back: the next 100 calls (ten times the
-    writer's history) all come back, and no reply is refused."""
+    """The peer destroys a client right after its request; the board's reply writer forgets
+    its reader at the reader's dispose, so the next 100 calls (ten times the writer's depth)
+    all come back, and no reply is refused."""
     report, output = exchange
     assert report['after_gone'] == [CALLS, CALLS]
     assert re.findall(r'requests \d+ \((\d+) replies refused\)', output)[-1] == '0'

@@ -24,6 +24,8 @@ class ReaderCacheChange {
   // With the patch services-both-ways: what the receiver read of the inline QoS.
   bool hasRelatedIdentity = false;
   SampleIdentity relatedIdentity{};
+  bool hasKeyHash = false;
+  Guid_t keyHash{};
 #endif
 
   ReaderCacheChange(ChangeKind_t kind, Guid_t& writerGuid, SequenceNumber_t sn,
