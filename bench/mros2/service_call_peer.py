@@ -41,8 +41,8 @@ def call(node, calls):
         future = client.call_async(request)
         rclpy.spin_until_future_complete(node, future, timeout_sec=WAIT_SECONDS)
         round_trips.append((time.perf_counter() - start) * 1e6)
-        if future.done() and name_lengths(request, GetParameterTypes.Response()).types == \
-                list(future.result().types):
+        lengths = [len(name) for name in request.names]
+        if future.done() and list(future.result().types) == lengths:
             right += 1
     json.dump({'round_trips_us': round_trips, 'right': right}, sys.stdout)
     print(flush=True)

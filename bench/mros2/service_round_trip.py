@@ -25,10 +25,10 @@ import tempfile
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, REPO)  # colcon_mros and the shared testing package
-from testing import mros2_pc, mros2_soak  # noqa: E402
+from testing import mros2_pc  # noqa: E402
 
 PEER = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'service_call_peer.py')
-APP = os.path.join(mros2_soak.APPS, 'service_pair')
+APP = os.path.join(REPO, 'testing', 'mros2_pc_apps', 'service_pair')
 PYTHON = os.path.join(mros2_pc.WHEELS_VENV, 'bin', 'python')
 BOARD, RCLPY = 'the board serves (mros2, --hardened)', 'rclpy serves (orientation)'
 
