@@ -52,7 +52,7 @@ template genmros_publish_result mros2::Publisher::publish(@(msg.cpp_name)& msg);
 template mros2::Subscriber mros2::Node::create_subscription(std::string topic_name, genmros_qos_argument qos, void (*fp)(@(msg.cpp_name)*));
 template void mros2::Subscriber::callback_handler<@(msg.cpp_name)>(void* callee, const rtps::ReaderCacheChange& cacheChange);
 @[end for]@
-@[if serve or call]@
+@[if services]@
 
 // Services, which mros2 serves and calls with genmros' patch @(services_patch).
 #ifndef @(services_macro)
