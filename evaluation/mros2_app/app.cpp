@@ -19,7 +19,9 @@
 #include "mros2.h"
 #include "geometry_msgs/msg/twist.hpp"
 #include "mros2_test_msgs/msg/reading.hpp"
+#ifdef APP_ALL_PUBLISHERS
 #include "rcl_interfaces/srv/get_parameter_types.hpp"
+#endif
 #include "sensor_msgs/msg/image.hpp"
 #include "std_msgs/msg/string.hpp"
 
