@@ -91,7 +91,8 @@ void on_reading(mros2_test_msgs::msg::Reading *reading)
 #ifdef APP_ALL_PUBLISHERS
 typedef rcl_interfaces::srv::GetParameterTypes GetParameterTypes;
 const int kCalls = 20;
-const uint32_t kCallTimeoutMs = 5000;
+// A lost reply comes again at the rclpy writer's next heartbeat (Fast DDS: every 3 s), under qemu.
+const uint32_t kCallTimeoutMs = 20000;
 
 void name_lengths(GetParameterTypes::Request *request, GetParameterTypes::Response *response)
 {
