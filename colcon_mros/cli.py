@@ -415,23 +415,21 @@ def _add_mros2_sources(parser):
 
 
 def _add_mros2_endpoints(parser, instantiated):
-    for flag, what in (('--publish', 'publishes'), ('--subscribe', 'subscribes to')):
-        parser.add_argument(flag, dest=flag[2:], action='append', default=[],
-                            metavar='[TOPIC:]PKG/msg/TYPE[:reliable[:DEPTH]]',
-                            help='a topic and message type the firmware %s%s; a type alone '
-                                 'skips the topic rules of the fit check; :reliable, one the '
-                                 'app makes with mros2::QoS(DEPTH).reliable() (DEPTH 10 unless '
-                                 'given; the mros2 patch reliable-where-asked) (repeatable)'
-                                 % (what, instantiated))
-    for flag, what in (('--serve', 'serves'), ('--call', 'calls')):
-        parser.add_argument(flag, dest=flag[2:], action='append', default=[],
-                            metavar='[NAME:]PKG/srv/TYPE',
-                            help='a service the firmware %s%s, with mros2::Node::create_%s (the '
-                                 'mros2 patch services-both-ways): its request and reply '
-                                 'writer and reader count as reliable endpoints on rq/NAMERequest '
-                                 'and rr/NAMEReply (repeatable)'
-                                 % (what, instantiated,
-                                    'service' if flag == '--serve' else 'client'))
+    topic_help = ('a topic and message type the firmware %s' + instantiated +
+                  '; a type alone skips the topic rules of the fit check; :reliable, one the '
+                  'app makes with mros2::QoS(DEPTH).reliable() (DEPTH 10 unless given; the '
+                  'mros2 patch reliable-where-asked) (repeatable)')
+    service_help = ('a service the firmware %s' + instantiated + ', with '
+                    'mros2::Node::create_%s (the mros2 patch services-both-ways): its request '
+                    'and reply writer and reader count as reliable endpoints on rq/NAMERequest '
+                    'and rr/NAMEReply (repeatable)')
+    topic, service = '[TOPIC:]PKG/msg/TYPE[:reliable[:DEPTH]]', '[NAME:]PKG/srv/TYPE'
+    for flag, metavar, text in (('--publish', topic, topic_help % 'publishes'),
+                                ('--subscribe', topic, topic_help % 'subscribes to'),
+                                ('--serve', service, service_help % ('serves', 'service')),
+                                ('--call', service, service_help % ('calls', 'client'))):
+        parser.add_argument(flag, dest=flag[2:], action='append', default=[], metavar=metavar,
+                            help=text)
 
 
 def _add_mros2_board(parser, required):
