@@ -32,6 +32,9 @@ LARGE_LIMIT = 1472
 LARGE_BUFFER = 32768
 LARGE_QUEUE = 64
 LARGE_SIZE = 30000
+# Room for the DDS type names of ROS 2 services and of ros_discovery_info (52 characters with
+# its NUL), which mros2-posix' 40 do not hold.
+LONG_TYPE_NAMES = (r'MAX_TYPENAME_LENGTH = 40', 'MAX_TYPENAME_LENGTH = 64')
 
 
 @dataclasses.dataclass
@@ -62,18 +65,15 @@ CASES = {case.name: case for case in (
     Case('native-large', 'fragment_echo', 'native', True))}
 
 
-def board_config(posix_root, case, directory):
-    """The board's rtps/config.h: mros2-posix' own; for the large cases with the fragment
-    buffer and the reader thread's queue they need."""
+def changed_config(posix_root, directory, changes):
+    """A copy of the board's config (mros2-posix' rtps/config.h) in directory/rtps/config.h,
+    each (pattern, text) of changes made once; its path."""
     with open(os.path.join(posix_root, 'include', 'rtps', 'config.h')) as stream:
         config = stream.read()
-    if case.large:
-        config, queue = re.subn(r'THREAD_POOL_WORKLOAD_QUEUE_LENGTH = \d+',
-                                'THREAD_POOL_WORKLOAD_QUEUE_LENGTH = %d' % LARGE_QUEUE, config)
-        config, buffer = re.subn(r'\}\s*//\s*namespace Config',
-                                 'const DataSize_t FRAGMENT_BUFFER_SIZE = %d;\n} // namespace '
-                                 'Config' % LARGE_BUFFER, config)
-        assert queue == buffer == 1, 'mros2-posix\' config.h is not the one expected'
+    for pattern, text in changes:
+        config, made = re.subn(pattern, text, config)
+        if made != 1:
+            raise ValueError("mros2-posix' config.h is not the one expected: %s" % pattern)
     path = os.path.join(directory, 'rtps', 'config.h')
     os.makedirs(os.path.dirname(path), exist_ok=True)
     with open(path, 'w') as stream:
@@ -81,12 +81,23 @@ def board_config(posix_root, case, directory):
     return path
 
 
+def board_config(posix_root, case, directory):
+    """The board's rtps/config.h: mros2-posix' own; for the large cases with the fragment
+    buffer and the reader thread's queue they need."""
+    changes = [(r'THREAD_POOL_WORKLOAD_QUEUE_LENGTH = \d+',
+                'THREAD_POOL_WORKLOAD_QUEUE_LENGTH = %d' % LARGE_QUEUE),
+               (r'\}\s*//\s*namespace Config',
+                'const DataSize_t FRAGMENT_BUFFER_SIZE = %d;\n} // namespace Config'
+                % LARGE_BUFFER)] if case.large else []
+    return changed_config(posix_root, os.path.join(directory, case.name), changes)
+
+
 def build_programs(case, posix_root, mros2_root, work_dir, patches=None, addresses=ADDRESSES):
     """{address: program} of the case (patches: these of the series, not all of it)."""
     options = case.build_options()
     if patches is not None:
         options.update(hardened=False, patches=tuple(patches))
-    config = board_config(posix_root, case, os.path.join(work_dir, case.name))
+    config = board_config(posix_root, case, work_dir)
     return {address: mros2_pc.build(os.path.join(APPS, case.app),
                                     os.path.join(work_dir, case.name, 'build-' + address),
                                     mros2_root, config, board_address=address, **options)
@@ -206,3 +217,81 @@ def run_start(program, case, typestore, work_dir, index, control=False):
     problems += ['the board reports: %s' % word for word in SANITIZER_REPORTS if word in output]
     return Start(not problems, program.board_address, order, arrived, expected,
                  node_matched_after, board_matched_after, '; '.join(problems))
+
+
+# The services soak: the app service_pair (it serves parameter_types and calls the ROS
+# side's name_lengths SERVICE_PAIR_CALLS times) against the service peer.
+SERVICE_PAIR = os.path.join(APPS, 'service_pair')
+SERVICE_PAIR_CALLS = 100
+SERVICE_TYPE = 'rcl_interfaces/srv/GetParameterTypes'
+SERVICE_CLIENTS = 3
+
+
+def service_job(calls, wait=60):
+    """The service peer's job (testing/mros2_pc_services.py) against service_pair: calls
+    calls one by one, and again after a client gone before its reply."""
+    return {'serve': 'name_lengths', 'call': 'parameter_types', 'node': 'service_pair',
+            'calls': calls, 'clients': SERVICE_CLIENTS, 'board_calls': SERVICE_PAIR_CALLS,
+            'wait': wait}
+
+
+def service_problems(report, output, calls):
+    """What went wrong in one run of service_pair against the service peer (report, its
+    report; output, the board's): [] when every call both ways came back right, no reply
+    was refused and rclpy listed the service by its node."""
+    problems = ['%s: %d of %d replies right' % (what, *report.get(key, [0, calls]))
+                for key, what in (('calls', 'rclpy calling'),
+                                  ('after_gone', 'rclpy calling after a client gone'))
+                if report.get(key, [0, calls]) != [calls, calls]]
+    clients = report.get('clients', [])
+    if len(clients) != SERVICE_CLIENTS or any(right != of for right, of in clients):
+        problems.append('clients at once: %s' % clients)
+    refused = re.findall(r'requests \d+ \((\d+) replies refused\)', output)
+    if refused[-1:] != ['0']:
+        problems.append('replies refused: %s' % (refused[-1:] or ['no count']))
+    ok = [line for line in output.splitlines() if line.startswith('call ')]
+    if ok != ['call %d ok' % i for i in range(SERVICE_PAIR_CALLS)]:
+        problems.append('the board calling: %d of %d ok' % (
+            sum(line.endswith(' ok') for line in ok), SERVICE_PAIR_CALLS))
+    if report.get('requests') != [['call %d' % i, 'x' * i] for i in range(SERVICE_PAIR_CALLS)]:
+        problems.append('rclpy serving: %d of %d requests as sent' % (
+            len(report.get('requests', [])), SERVICE_PAIR_CALLS))
+    if report.get('services_by_node') != [['/parameter_types', [SERVICE_TYPE]]]:
+        problems.append('by node: %s' % report.get('services_by_node'))
+    return problems + ['the board reports: %s' % word for word in SANITIZER_REPORTS
+                       if word in output]
+
+
+@dataclasses.dataclass
+class ServiceStart:
+    """What one start of the services soak showed."""
+
+    passed: bool
+    order: str
+    # Seconds from the later of the two starts until the board's calls were done.
+    took: float
+    problem: str = ''
+
+
+def run_service_start(program, work_dir, index, calls):
+    """Start index of the services soak: a fresh service_pair board and a fresh service
+    peer, in the order of the start's index."""
+    order = ORDERS[index % len(ORDERS)]
+    job = service_job(calls)
+    os.makedirs(work_dir, exist_ok=True)
+    with mros2_pc.Session(program, work_dir) as session:
+        if order == 'board first':
+            session.start_board()
+            session.wait_for_output('app ready')
+            started = time.monotonic()
+            peer = session.peer(job, script=mros2_pc.SERVICES_SCRIPT)
+        else:
+            peer = session.peer(job, script=mros2_pc.SERVICES_SCRIPT)
+            started = time.monotonic()
+            session.start_board()
+        report = peer.result()
+        session.wait_for_output('calls done')
+        took = time.monotonic() - started
+        output = session.stop_board()
+    problems = service_problems(report, output, calls)
+    return ServiceStart(not problems, order, took, '; '.join(problems))

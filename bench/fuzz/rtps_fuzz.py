@@ -40,7 +40,6 @@ import collections
 import json
 import os
 import random
-import re
 import shutil
 import subprocess
 import sys
@@ -50,7 +49,7 @@ import time
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, REPO)  # colcon_mros and the shared testing package
 sys.path.append(os.path.join(REPO, 'build', 'test-python'))  # rosbags
-from testing import mros2_pc, rtps_datagrams  # noqa: E402
+from testing import mros2_pc, mros2_soak, rtps_datagrams  # noqa: E402
 from testing.mros2_posix import wire_bytes  # noqa: E402
 
 BATCH = 500
@@ -278,20 +277,11 @@ def coverage(program, build_dir):
 
 def board_config(work, as_it_is):
     """mros2-posix' rtps/config.h, hardened with FRAGMENT_SETTINGS added (a copy in work)."""
-    config = os.path.join(os.environ['MROS2_POSIX_ROOT'], 'include', 'rtps', 'config.h')
+    posix_root = os.environ['MROS2_POSIX_ROOT']
     if as_it_is:
-        return config
-    with open(config) as stream:
-        text, added = re.subn(r'\}\s*//\s*namespace Config', FRAGMENT_SETTINGS +
-                              '} // namespace Config', stream.read())
-    if added != 1:
-        raise SystemExit('%s: no "} // namespace Config" to add the fragment buffers before'
-                         % config)
-    os.makedirs(os.path.join(work, 'rtps'), exist_ok=True)
-    copy = os.path.join(work, 'rtps', 'config.h')
-    with open(copy, 'w') as stream:
-        stream.write(text)
-    return copy
+        return os.path.join(posix_root, 'include', 'rtps', 'config.h')
+    return mros2_soak.changed_config(posix_root, work, [
+        (r'\}\s*//\s*namespace Config', FRAGMENT_SETTINGS + '} // namespace Config')])
 
 
 def build(options, work):

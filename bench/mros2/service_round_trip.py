@@ -25,7 +25,7 @@ import tempfile
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, REPO)  # colcon_mros and the shared testing package
-from testing import mros2_pc  # noqa: E402
+from testing import mros2_pc, mros2_soak  # noqa: E402
 
 PEER = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'service_call_peer.py')
 APP = os.path.join(REPO, 'testing', 'mros2_pc_apps', 'service_pair')
@@ -63,16 +63,6 @@ def rclpy_run(program, work_dir, count):
             server.wait(timeout=60)
 
 
-def config_copy(posix_root, work):
-    with open(os.path.join(posix_root, 'include', 'rtps', 'config.h')) as stream:
-        text = stream.read().replace('MAX_TYPENAME_LENGTH = 40', 'MAX_TYPENAME_LENGTH = 64')
-    path = os.path.join(work, 'rtps', 'config.h')
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, 'w') as stream:
-        stream.write(text)
-    return path
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     parser.add_argument('--runs', type=int, default=5)
@@ -84,9 +74,9 @@ def main():
     if not mros2_root or not posix_root:
         raise SystemExit('set MROS2_ROOT and MROS2_POSIX_ROOT (docs/testing.md)')
     work = options.keep or tempfile.mkdtemp(prefix='genmros_service_bench_')
+    config = mros2_soak.changed_config(posix_root, work, [mros2_soak.LONG_TYPE_NAMES])
     program = mros2_pc.build(APP, os.path.join(work, 'build-%s' % options.target), mros2_root,
-                             config_copy(posix_root, work), hardened=True,
-                             target=options.target)
+                             config, hardened=True, target=options.target)
     results = {BOARD: [], RCLPY: []}
     for run in range(options.runs):
         results[BOARD].append(board_run(program, work, options.calls))

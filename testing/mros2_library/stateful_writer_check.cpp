@@ -22,6 +22,7 @@
 #include <thread>
 #include <vector>
 
+#include "recording_driver.h"
 #include "rtps/entities/StatefulWriter.h"
 
 // The writer is given no thread pool: it never calls one.
@@ -29,35 +30,7 @@ bool rtps::ThreadPool::addWorkload(rtps::Writer*) { abort(); }
 
 namespace {
 
-// The RTPS header (20 bytes) and INFO_TS (12) come before the submessage the
-// writer sends; in it, its header (4) and the reader and writer ids (8).
-const size_t kSubmessage = 20 + 12;
-
-uint32_t word_at(const std::vector<uint8_t>& bytes, size_t offset) {
-  uint32_t word;
-  memcpy(&word, bytes.data() + offset, sizeof word);
-  return word;
-}
-
-struct RecordingDriver {
-  void sendPacket(rtps::PacketInfo& packet) {
-    std::vector<uint8_t> datagram;
-    for (const pbuf* part = packet.buffer.firstElement; part != NULL; part = part->next) {
-      const uint8_t* bytes = static_cast<const uint8_t*>(part->payload);
-      datagram.insert(datagram.end(), bytes, bytes + part->len);
-    }
-    // A heartbeat goes out without INFO_TS.
-    if (datagram[20] == static_cast<uint8_t>(rtps::SubmessageKind::HEARTBEAT)) {
-      printf("heartbeat %u %u\n", word_at(datagram, 20 + 12 + 4), word_at(datagram, 20 + 12 + 12));
-    } else {
-      // DATA: extra flags and octets to inline QoS (4), the ids (8), the sequence number.
-      printf("data %u\n", word_at(datagram, kSubmessage + 4 + 4 + 8 + 4));
-    }
-    fflush(stdout);
-  }
-};
-
-rtps::StatefulWriterT<RecordingDriver> writer;
+rtps::StatefulWriterT<recording::RecordingDriver> writer;
 const rtps::GuidPrefix_t local = {{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}};
 const rtps::GuidPrefix_t remote = {{0x11, 0x11, 0x11, 0x11, 0x11, 0x11, 0x11, 0x11, 0x11, 0x11,
                                     0x11, 0x11}};
@@ -83,7 +56,7 @@ int main() {
   rtps::TopicData attributes;
   attributes.endpointGuid = rtps::Guid_t{
       local, rtps::EntityId_t{{0, 0, 1}, rtps::EntityKind_t::USER_DEFINED_WRITER_WITHOUT_KEY}};
-  RecordingDriver driver;
+  recording::RecordingDriver driver;
   writer.init(attributes, rtps::TopicKind_t::NO_KEY, nullptr, driver);
   const uint8_t sample[4] = {0, 1, 0, 0};
   std::vector<std::thread> later;

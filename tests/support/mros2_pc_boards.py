@@ -5,7 +5,6 @@ the samples are serialized with: fixtures, which a test module takes as its own 
 assigning them (posix_root = mros2_pc_boards.posix_root)."""
 
 import os
-import re
 
 import pytest
 
@@ -33,23 +32,3 @@ def typestore():
 
 def config_of(posix_root):
     return os.path.join(posix_root, 'include', 'rtps', 'config.h')
-
-
-def changed_config(posix_root, directory, changes):
-    """A copy of the board's config in directory/rtps/config.h, each (pattern, text) of
-    changes made once (a pattern that does not match once fails the test); its path."""
-    with open(config_of(posix_root)) as stream:
-        config = stream.read()
-    for pattern, text in changes:
-        config, made = re.subn(pattern, text, config)
-        assert made == 1, pattern
-    path = os.path.join(directory, 'rtps', 'config.h')
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, 'w') as stream:
-        stream.write(config)
-    return path
-
-
-# Room for the DDS type names of ROS 2 services and of ros_discovery_info (52 characters with
-# its NUL), which mros2-posix' 40 do not hold.
-LONG_TYPE_NAMES = (r'MAX_TYPENAME_LENGTH = 40', 'MAX_TYPENAME_LENGTH = 64')

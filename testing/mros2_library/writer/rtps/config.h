@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The board config (rtps::Config) of the stateful writer check: what
-// embeddedRTPS' StatefulWriter and the types it takes read.
+// The board config (rtps::Config) of the writer checks: what embeddedRTPS'
+// StatefulWriter and StatelessWriter and the types they take read.
 #ifndef RTPS_CONFIG_H
 #define RTPS_CONFIG_H
 
@@ -13,6 +13,7 @@ namespace Config {
 const uint8_t MAX_TYPENAME_LENGTH = 64;
 const uint8_t MAX_TOPICNAME_LENGTH = 64;
 const uint8_t NUM_READER_PROXIES_PER_WRITER = 4;
+const uint8_t HISTORY_SIZE_STATELESS = 2;
 const uint8_t HISTORY_SIZE_STATEFUL = 10;
 const uint16_t SF_WRITER_HB_PERIOD_MS = 4000;
 const int HEARTBEAT_STACKSIZE = 4096;

@@ -55,6 +55,7 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
         'not applied   large-acknack-counts', 'not applied   bounded-submessage-lengths',
         'not applied   acknack-within-the-history', 'not applied   lease-in-milliseconds',
         'not applied   data-holds-its-fields', 'not applied   sedp-parameters-within-their-length',
+        'not applied   best-effort-writer-after-a-burst',
         'not applied   data-frag-for-best-effort-readers',
         'not applied   reader-catches-up-at-once',
         'not applied   acknacks-on-the-writer-threads', 'not applied   reliable-where-asked',
@@ -66,6 +67,7 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
                               'large-acknack-counts, bounded-submessage-lengths, '
                               'acknack-within-the-history, lease-in-milliseconds, '
                               'data-holds-its-fields, sedp-parameters-within-their-length, '
+                              'best-effort-writer-after-a-burst, '
                               'data-frag-for-best-effort-readers, '
                               'reader-catches-up-at-once, acknacks-on-the-writer-threads, '
                               'reliable-where-asked, node-in-the-ros-graph, '
@@ -84,6 +86,7 @@ def test_apply_check_revert_on_a_checkout(tmp_path):
                                 'include/rtps/entities/StatefulReader.tpp',
                                 'include/rtps/entities/StatefulWriter.h',
                                 'include/rtps/entities/StatefulWriter.tpp',
+                                'include/rtps/entities/StatelessWriter.tpp',
                                 'include/rtps/entities/WriterProxy.h',
                                 'include/rtps/messages/MessageReceiver.h',
                                 'include/rtps/messages/MessageTypes.h',

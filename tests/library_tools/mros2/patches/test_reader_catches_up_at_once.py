@@ -7,12 +7,10 @@ of genmros mros2-pc against an rclpy node): it announces its first samples with 
 sends its newer ones as they are made, answers each ACKNACK with the samples it asks for,
 and sends a heartbeat each period."""
 
-import subprocess
-
 import pytest
 
 from colcon_mros.library_tools.mros2.patches import mros2_patches
-from support.stateful_checks import build_check
+from support.entity_checks import RunningCheck, build_check
 
 pytestmark = [pytest.mark.needs_mros2]
 
@@ -31,26 +29,16 @@ def reader(request, tmp_path_factory):
                                       'stateful_reader_check', 'reader', patches)
 
 
-class Reader:
-    """The check running: steps in, what the reader did out."""
-
-    def __init__(self, program):
-        self.process = subprocess.Popen([program], stdin=subprocess.PIPE,
-                                        stdout=subprocess.PIPE, text=True)
+class Reader(RunningCheck):
+    """The stateful reader check running: steps in, what the reader did out."""
 
     def step(self, line):
         """([sequence numbers taken], [[sequence numbers asked for] per ACKNACK])."""
-        self.process.stdin.write(line + '\n')
-        self.process.stdin.flush()
         taken, asked = [], []
-        for output in iter(self.process.stdout.readline, 'done\n'):
+        for output in super().step(line):
             kind, *numbers = output.split()
             (taken.extend if kind == 'took' else asked.append)(list(map(int, numbers)))
         return taken, asked
-
-    def close(self):
-        self.process.stdin.close()
-        assert self.process.wait(timeout=60) == 0
 
 
 def _node_start(program, heartbeat_periods=30, answered=None, size=4):

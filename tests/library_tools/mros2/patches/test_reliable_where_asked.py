@@ -4,12 +4,10 @@ of MROS2_ROOT with the whole series, driven by the stateful writer check of
 testing/mros2_library: a writer that keeps its last samples, its readers' ACKNACKs given by
 hand (one from another thread while a publish waits), and what it sends recorded."""
 
-import subprocess
-
 import pytest
 
 from colcon_mros.library_tools.mros2.patches import mros2_patches
-from support.stateful_checks import build_check
+from support.entity_checks import RunningCheck, build_check
 
 pytestmark = [pytest.mark.needs_mros2]
 
@@ -23,18 +21,8 @@ def program(tmp_path_factory):
                        'writer', [patch.name for patch in mros2_patches()])
 
 
-class Writer:
-    """The check running: steps in, what the writer did out."""
-
-    def __init__(self, program):
-        self.process = subprocess.Popen([program], stdin=subprocess.PIPE,
-                                        stdout=subprocess.PIPE, text=True)
-
-    def step(self, line):
-        """The lines the step printed."""
-        self.process.stdin.write(line + '\n')
-        self.process.stdin.flush()
-        return [output.strip() for output in iter(self.process.stdout.readline, 'done\n')]
+class Writer(RunningCheck):
+    """The stateful writer check running: steps in, what the writer did out."""
 
     def publish(self):
         """(what the publish printed, the milliseconds it waited, the heartbeats it sent)."""
@@ -42,10 +30,6 @@ class Writer:
         waited = int(next(line for line in lines if line.startswith('waited')).split()[1])
         result = next(line for line in lines if line.startswith(('published', 'refused')))
         return result, waited, sum(line.startswith('heartbeat') for line in lines)
-
-    def close(self):
-        self.process.stdin.close()
-        assert self.process.wait(timeout=60) == 0
 
 
 def _no_wait(published):

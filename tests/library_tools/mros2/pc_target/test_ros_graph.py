@@ -13,7 +13,6 @@ import os
 import pytest
 
 from support import mros2_pc_boards
-from support.mros2_pc_boards import LONG_TYPE_NAMES, changed_config
 from support.user_checkouts import MROS2_ROOT
 from testing import mros2_pc, mros2_soak
 
@@ -30,9 +29,9 @@ posix_root = mros2_pc_boards.posix_root
 @pytest.fixture(scope='module')
 def program(posix_root, tmp_path_factory):
     work = tmp_path_factory.mktemp('ros_graph')
-    config = changed_config(posix_root, str(work), [
+    config = mros2_soak.changed_config(posix_root, str(work), [
         (r'SPDP_DEFAULT_REMOTE_LEASE_DURATION = \{\s*100, 0\}',
-         'SPDP_DEFAULT_REMOTE_LEASE_DURATION = {%d, 0}' % LEASE), LONG_TYPE_NAMES])
+         'SPDP_DEFAULT_REMOTE_LEASE_DURATION = {%d, 0}' % LEASE), mros2_soak.LONG_TYPE_NAMES])
     return mros2_pc.build(APP, str(work / 'build'), MROS2_ROOT, config, hardened=True,
                           target='native')
 

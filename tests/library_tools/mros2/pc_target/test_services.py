@@ -8,19 +8,17 @@ name_lengths, both rcl_interfaces/srv/GetParameterTypes, whose reply gives each 
 The board's config is mros2-posix' with MAX_TYPENAME_LENGTH 64 (the services' type names take
 up to 49)."""
 
-import os
 import re
 
 import pytest
 
 from support import mros2_pc_boards
-from support.mros2_pc_boards import LONG_TYPE_NAMES, changed_config
 from support.user_checkouts import MROS2_ROOT
 from testing import mros2_pc, mros2_soak
 
 pytestmark = [pytest.mark.needs_mros2, pytest.mark.slow]
 
-APP = os.path.join(mros2_soak.APPS, 'service_pair')
+APP = mros2_soak.SERVICE_PAIR
 CALLS = 100
 CLIENTS = 3
 SERVICE_TYPE = ['rcl_interfaces/srv/GetParameterTypes']
@@ -33,11 +31,10 @@ posix_root = mros2_pc_boards.posix_root
 def exchange(request, posix_root, tmp_path_factory):
     """One run of the board with the service peer: (the peer's report, the board's output)."""
     work = tmp_path_factory.mktemp('services_%s' % request.param)
-    config = changed_config(posix_root, str(work), [LONG_TYPE_NAMES])
+    config = mros2_soak.changed_config(posix_root, str(work), [mros2_soak.LONG_TYPE_NAMES])
     program = mros2_pc.build(APP, str(work / 'build'), MROS2_ROOT, config, hardened=True,
                              target=request.param)
-    job = {'serve': 'name_lengths', 'call': 'parameter_types', 'node': 'service_pair',
-           'calls': CALLS, 'clients': CLIENTS, 'board_calls': CALLS, 'wait': 60}
+    job = mros2_soak.service_job(CALLS)
     with mros2_pc.Session(program, str(work)) as session:
         session.start_board()
         assert session.wait_for_output('app ready')

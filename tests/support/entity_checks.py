@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""The unit checks of embeddedRTPS' real stateful entities (testing/mros2_library's
-stateful_reader_check.cpp and stateful_writer_check.cpp), built on a copy of MROS2_ROOT with
-some of genmros' mros2 patches."""
+"""The unit checks of embeddedRTPS' real writers and readers (testing/mros2_library's
+stateful_reader_check.cpp, stateful_writer_check.cpp and stateless_writer_check.cpp), built on
+a copy of MROS2_ROOT with some of genmros' mros2 patches, and run step by step."""
 
 import os
 import shutil
@@ -38,3 +38,21 @@ def build_check(work, name, config, patches):
     result = subprocess.run(command, capture_output=True, text=True)
     assert result.returncode == 0, result.stderr[-4000:]
     return program
+
+
+class RunningCheck:
+    """A check running: a step in, the lines it printed out."""
+
+    def __init__(self, program):
+        self.process = subprocess.Popen([program], stdin=subprocess.PIPE,
+                                        stdout=subprocess.PIPE, text=True)
+
+    def step(self, line):
+        """The lines the step printed, up to the check's "done"."""
+        self.process.stdin.write(line + '\n')
+        self.process.stdin.flush()
+        return [output.strip() for output in iter(self.process.stdout.readline, 'done\n')]
+
+    def close(self):
+        self.process.stdin.close()
+        assert self.process.wait(timeout=60) == 0
