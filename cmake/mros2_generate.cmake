@@ -6,18 +6,21 @@
 #   mros2_import_messages(TARGET t EXPORT_DIR dir [PREFIXES prefix ...]
 #                         [PUBLISH [topic:]pkg/msg/Type[:reliable[:depth]] ...]
 #                         [SUBSCRIBE [topic:]pkg/msg/Type[:reliable[:depth]] ...]
+#                         [SERVE [name:]pkg/srv/Type ...] [CALL [name:]pkg/srv/Type ...]
 #                         [TYPES pkg/msg/Type|pkg/srv/Name ...]
 #                         [STORAGE heap|bounded] [OPTIONS file ...]
 #                         [RTPS_CONFIG rtps/config.h [RECEIVE_LIMIT bytes|file:NAME]
 #                          [MROS2_ROOT dir]])
 #     Use the ROS 2 types a `colcon build --mros-export dir` exported
 #     (dir/mros2), and those of installed ROS 2 prefixes (PREFIXES, e.g.
-#     /opt/ros/humble for std_msgs): the headers of the PUBLISH, SUBSCRIBE and TYPES types and
-#     of every type they contain, and mros2's templates.hpp with the explicit
-#     instantiations of its publish and subscribe calls for the PUBLISH and
-#     SUBSCRIBE types (genmros mros2-export --publish/--subscribe; :reliable
-#     for an endpoint the app makes with mros2::QoS(depth).reliable()), so no
-#     script greps the app's sources. They are generated at configure time
+#     /opt/ros/humble for std_msgs): the headers of the PUBLISH, SUBSCRIBE,
+#     SERVE, CALL and TYPES types and of every type they contain, and mros2's
+#     templates.hpp with the explicit instantiations of its publish and
+#     subscribe calls for the PUBLISH and SUBSCRIBE types, and of its service
+#     and client calls for the SERVE and CALL services (genmros mros2-export
+#     --publish/--subscribe/--serve/--call; :reliable for an endpoint the app
+#     makes with mros2::QoS(depth).reliable(); services need the mros2 patch
+#     services-both-ways), so no script greps the app's sources. They are generated at configure time
 #     from the definitions the export dir holds, into a directory of t's own,
 #     and t (the firmware, or the target that compiles mros2.cpp, which
 #     includes templates.hpp) gets it as an include directory. STORAGE
@@ -39,7 +42,7 @@ find_program(GENMROS_BIN genmros
 
 function(mros2_import_messages)
   cmake_parse_arguments(ARG "" "TARGET;EXPORT_DIR;STORAGE;RTPS_CONFIG;RECEIVE_LIMIT;MROS2_ROOT"
-    "TYPES;PUBLISH;SUBSCRIBE;OPTIONS;PREFIXES" ${ARGN})
+    "TYPES;PUBLISH;SUBSCRIBE;SERVE;CALL;OPTIONS;PREFIXES" ${ARGN})
   if(ARG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "mros2_import_messages(): unknown arguments: ${ARG_UNPARSED_ARGUMENTS}")
   endif()
@@ -63,8 +66,9 @@ function(mros2_import_messages)
     message(FATAL_ERROR "mros2_import_messages(): EXPORT_DIR '${ARG_EXPORT_DIR}' holds no mros2 "
       "export (no mros2/share); build the ROS 2 workspace with colcon build --mros-export first")
   endif()
-  if(NOT ARG_PUBLISH AND NOT ARG_SUBSCRIBE AND NOT ARG_TYPES)
-    message(FATAL_ERROR "mros2_import_messages(): name the types (PUBLISH, SUBSCRIBE, TYPES)")
+  if(NOT ARG_PUBLISH AND NOT ARG_SUBSCRIBE AND NOT ARG_SERVE AND NOT ARG_CALL AND NOT ARG_TYPES)
+    message(FATAL_ERROR
+      "mros2_import_messages(): name the types (PUBLISH, SUBSCRIBE, SERVE, CALL, TYPES)")
   endif()
 
   set(output_dir "${CMAKE_CURRENT_BINARY_DIR}/mros2_messages/${ARG_TARGET}")
@@ -72,7 +76,7 @@ function(mros2_import_messages)
   foreach(installed ${ARG_PREFIXES})
     list(APPEND genmros_args --prefix "${installed}")
   endforeach()
-  foreach(kind PUBLISH SUBSCRIBE TYPES)
+  foreach(kind PUBLISH SUBSCRIBE SERVE CALL TYPES)
     string(TOLOWER "${kind}" flag)
     if(kind STREQUAL "TYPES")
       set(flag "type")

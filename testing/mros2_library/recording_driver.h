@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The network driver of the writer checks: it prints what the writer sends,
-// "heartbeat FIRST LAST" and "data SN", instead of sending it.
+// What the checks' network drivers record instead of sending: the datagram,
+// and the writer checks' driver, which prints what a writer sends as
+// "heartbeat FIRST LAST" and "data SN".
 #ifndef GENMROS_RECORDING_DRIVER_H
 #define GENMROS_RECORDING_DRIVER_H
 
@@ -24,13 +25,19 @@ inline uint32_t word_at(const std::vector<uint8_t>& bytes, size_t offset) {
   return word;
 }
 
-struct RecordingDriver {
+// The datagram a packet's chain of buffers holds.
+inline std::vector<uint8_t> datagram_of(const rtps::PacketInfo& packet) {
+  std::vector<uint8_t> datagram;
+  for (const pbuf* part = packet.buffer.firstElement; part != NULL; part = part->next) {
+    const uint8_t* bytes = static_cast<const uint8_t*>(part->payload);
+    datagram.insert(datagram.end(), bytes, bytes + part->len);
+  }
+  return datagram;
+}
+
+struct WriterDriver {
   void sendPacket(rtps::PacketInfo& packet) {
-    std::vector<uint8_t> datagram;
-    for (const pbuf* part = packet.buffer.firstElement; part != NULL; part = part->next) {
-      const uint8_t* bytes = static_cast<const uint8_t*>(part->payload);
-      datagram.insert(datagram.end(), bytes, bytes + part->len);
-    }
+    const std::vector<uint8_t> datagram = datagram_of(packet);
     // A heartbeat goes out without INFO_TS.
     if (datagram[20] == static_cast<uint8_t>(rtps::SubmessageKind::HEARTBEAT)) {
       printf("heartbeat %u %u\n", word_at(datagram, 20 + 12 + 4), word_at(datagram, 20 + 12 + 12));

@@ -11,13 +11,13 @@
 // alone) for each ACKNACK it sends; the check prints "done" after each step,
 // so that a writer simulated on the other side of the pipes can answer.
 #include <stdio.h>
-#include <string.h>
 
 #include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "recording_driver.h"
 #include "rtps/entities/StatefulReader.h"
 
 namespace {
@@ -26,25 +26,14 @@ namespace {
 // and writer ids (8) come before its sequence number set.
 const size_t kSetOffset = 20 + 4 + 8;
 
-uint32_t word_at(const uint8_t* bytes, size_t offset) {
-  uint32_t word;
-  memcpy(&word, bytes + offset, sizeof word);
-  return word;
-}
-
-struct RecordingDriver {
+struct AckNackDriver {
   void sendPacket(rtps::PacketInfo& packet) {
-    std::vector<uint8_t> datagram;
-    for (const pbuf* part = packet.buffer.firstElement; part != NULL; part = part->next) {
-      const uint8_t* bytes = static_cast<const uint8_t*>(part->payload);
-      datagram.insert(datagram.end(), bytes, bytes + part->len);
-    }
-    const uint8_t* bytes = datagram.data();
-    uint32_t low = word_at(bytes, kSetOffset + 4);
-    uint32_t bits = word_at(bytes, kSetOffset + 8);
+    const std::vector<uint8_t> datagram = recording::datagram_of(packet);
+    uint32_t low = recording::word_at(datagram, kSetOffset + 4);
+    uint32_t bits = recording::word_at(datagram, kSetOffset + 8);
     printf("asks");
     for (uint32_t bit = 0; bit < bits; ++bit) {
-      uint32_t word = word_at(bytes, kSetOffset + 12 + 4 * (bit / 32));
+      uint32_t word = recording::word_at(datagram, kSetOffset + 12 + 4 * (bit / 32));
       if (word & (uint32_t{1} << (31 - bit % 32))) printf(" %u", static_cast<unsigned>(low + bit));
     }
     printf("\n");
@@ -65,8 +54,8 @@ int main() {
   const rtps::EntityId_t writer_id = {{0, 0, 1}, rtps::EntityKind_t::USER_DEFINED_WRITER_WITHOUT_KEY};
   rtps::TopicData attributes;
   attributes.endpointGuid = rtps::Guid_t{local, reader_id};
-  RecordingDriver driver;
-  static rtps::StatefulReaderT<RecordingDriver> reader;
+  AckNackDriver driver;
+  static rtps::StatefulReaderT<AckNackDriver> reader;
   reader.init(attributes, driver);
   reader.registerCallback(print_taken, NULL);
   rtps::Guid_t writer{remote, writer_id};

@@ -30,7 +30,7 @@ bool rtps::ThreadPool::addWorkload(rtps::Writer*) { abort(); }
 
 namespace {
 
-rtps::StatefulWriterT<recording::RecordingDriver> writer;
+rtps::StatefulWriterT<recording::WriterDriver> writer;
 const rtps::GuidPrefix_t local = {{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}};
 const rtps::GuidPrefix_t remote = {{0x11, 0x11, 0x11, 0x11, 0x11, 0x11, 0x11, 0x11, 0x11, 0x11,
                                     0x11, 0x11}};
@@ -56,7 +56,7 @@ int main() {
   rtps::TopicData attributes;
   attributes.endpointGuid = rtps::Guid_t{
       local, rtps::EntityId_t{{0, 0, 1}, rtps::EntityKind_t::USER_DEFINED_WRITER_WITHOUT_KEY}};
-  recording::RecordingDriver driver;
+  recording::WriterDriver driver;
   writer.init(attributes, rtps::TopicKind_t::NO_KEY, nullptr, driver);
   const uint8_t sample[4] = {0, 1, 0, 0};
   std::vector<std::thread> later;

@@ -27,8 +27,8 @@ int main() {
   rtps::TopicData attributes;
   attributes.endpointGuid = rtps::Guid_t{
       local, rtps::EntityId_t{{0, 0, 1}, rtps::EntityKind_t::USER_DEFINED_WRITER_WITHOUT_KEY}};
-  recording::RecordingDriver driver;
-  static rtps::StatelessWriterT<recording::RecordingDriver> writer;
+  recording::WriterDriver driver;
+  static rtps::StatelessWriterT<recording::WriterDriver> writer;
   writer.init(attributes, rtps::TopicKind_t::NO_KEY, nullptr, driver);
   const uint8_t sample[4] = {0, 1, 0, 0};
   std::string line;

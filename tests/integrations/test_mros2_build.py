@@ -233,3 +233,26 @@ def test_a_receive_limit_too_small_stops_the_configure_step(workspace):
             'around it needs MAX_RECV_PACKET_SIZE >= 84 (it is 80)' % limits) \
         in unwrapped(result.stdout), result.stdout[-3000:]
     workspace.build_firmware()
+
+
+def test_a_service_and_a_client_count_in_the_fit_check(workspace, tmp_path):
+    """SERVE and CALL reach genmros: each service and client takes a reliable writer and a
+    reliable reader of the board's, which the config must hold beside SEDP's."""
+    firmware = tmp_path / 'firmware'
+    shutil.copytree(workspace.firmware, str(firmware), ignore=shutil.ignore_patterns('build'))
+    cmake = firmware / 'CMakeLists.txt'
+    cmake.write_text(cmake.read_text().replace(
+        'TYPES mros2_test_msgs/srv/Query',
+        'SERVE query:mros2_test_msgs/srv/Query CALL ask:mros2_test_msgs/srv/Query'))
+    config = firmware / 'rtps' / 'config.h'
+    config.write_text(config.read_text().replace(
+        '}\n}\n', 'const uint8_t NUM_STATEFUL_WRITERS = 3;\n'
+                  'const uint8_t NUM_STATEFUL_READERS = 4;\n'
+                  'const uint8_t HISTORY_SIZE_STATEFUL = 10;\n}\n}\n'))
+    result = run(['cmake', '-S', str(firmware), '-B', str(firmware / 'build')], workspace.root,
+                 check=False)
+    assert result.returncode != 0
+    assert ("%s:9: the firmware: its 2 writers of services and clients (one each), reliable, "
+            "and the participant's 2 SEDP ones needs NUM_STATEFUL_WRITERS >= 4 (it is 3)"
+            % config) in unwrapped(result.stdout), result.stdout[-3000:]
+    assert 'NUM_STATEFUL_READERS' not in unwrapped(result.stdout)

@@ -40,6 +40,17 @@ def build_check(work, name, config, patches):
     return program
 
 
+# What a patch's check is built on: mros2 as it is, with the patch alone, with the series.
+VERSIONS = ['as-it-is', 'patch', 'series']
+
+
+def build_version(version, patch, work, name, config):
+    """The check name built in work on the version (of VERSIONS) with the patch."""
+    patches = {'as-it-is': [], 'patch': [patch],
+               'series': [each.name for each in mros2_patches()]}[version]
+    return build_check(work, name, config, patches)
+
+
 class RunningCheck:
     """A check running: a step in, the lines it printed out."""
 

@@ -8,8 +8,7 @@ matched and one more sample."""
 
 import pytest
 
-from colcon_mros.library_tools.mros2.patches import mros2_patches
-from support.entity_checks import RunningCheck, build_check
+from support.entity_checks import VERSIONS, RunningCheck, build_version
 
 pytestmark = [pytest.mark.needs_mros2]
 
@@ -17,13 +16,12 @@ PATCH = 'best-effort-writer-after-a-burst'
 BURST = 5
 
 
-@pytest.fixture(scope='module', params=['as-it-is', 'patch', 'series'])
+@pytest.fixture(scope='module', params=VERSIONS)
 def program(request, tmp_path_factory):
     """(version, the check built on it)."""
-    patches = {'as-it-is': [], 'patch': [PATCH],
-               'series': [patch.name for patch in mros2_patches()]}[request.param]
-    return request.param, build_check(tmp_path_factory.mktemp(request.param),
-                                      'stateless_writer_check', 'writer', patches)
+    return request.param, build_version(request.param, PATCH,
+                                        tmp_path_factory.mktemp(request.param),
+                                        'stateless_writer_check', 'writer')
 
 
 @pytest.fixture

@@ -9,8 +9,7 @@ and sends a heartbeat each period."""
 
 import pytest
 
-from colcon_mros.library_tools.mros2.patches import mros2_patches
-from support.entity_checks import RunningCheck, build_check
+from support.entity_checks import VERSIONS, RunningCheck, build_version
 
 pytestmark = [pytest.mark.needs_mros2]
 
@@ -20,13 +19,12 @@ SAMPLES = 13
 ANNOUNCED = 2
 
 
-@pytest.fixture(scope='module', params=['as-it-is', 'patch', 'series'])
+@pytest.fixture(scope='module', params=VERSIONS)
 def reader(request, tmp_path_factory):
     """(version, the check built on it)."""
-    patches = {'as-it-is': [], 'patch': [PATCH],
-               'series': [patch.name for patch in mros2_patches()]}[request.param]
-    return request.param, build_check(tmp_path_factory.mktemp(request.param),
-                                      'stateful_reader_check', 'reader', patches)
+    return request.param, build_version(request.param, PATCH,
+                                        tmp_path_factory.mktemp(request.param),
+                                        'stateful_reader_check', 'reader')
 
 
 class Reader(RunningCheck):
