@@ -20,8 +20,9 @@
 #     and client calls for the SERVE and CALL services (genmros mros2-export
 #     --publish/--subscribe/--serve/--call; :reliable for an endpoint the app
 #     makes with mros2::QoS(depth).reliable(); services need the mros2 patch
-#     services-both-ways), so no script greps the app's sources. They are generated at configure time
-#     from the definitions the export dir holds, into a directory of t's own,
+#     services-both-ways), so no script greps the app's sources. They are
+#     generated at configure time from the definitions the export dir holds,
+#     into a directory of t's own,
 #     and t (the firmware, or the target that compiles mros2.cpp, which
 #     includes templates.hpp) gets it as an include directory. STORAGE
 #     bounded holds unbounded strings and sequences in the message, with the

@@ -8,6 +8,11 @@ between mros2-posix' address and another one, and between the board starting fir
 node starting first. A start passes when the node matched and every reply came, exact, in
 order (and, with --sanitize, the board reports nothing). The control runs an rclpy node
 (testing/mros2_pc_control.py) in the board's place with the same node and samples.
+
+The services soak (bench/mros2/service_soak.py) starts service_pair and the service peer
+(testing/mros2_pc_services.py) afresh, in both orders; a start passes when every call both
+ways came back right. The board's config copies (changed_config) serve the tests and the
+benches alike.
 """
 
 import dataclasses
@@ -268,7 +273,7 @@ class ServiceStart:
 
     passed: bool
     order: str
-    # Seconds from the later of the two starts until the board's calls were done.
+    # Seconds from the second of the two starts until the board's calls were done.
     took: float
     problem: str = ''
 

@@ -276,12 +276,14 @@ def coverage(program, build_dir):
 
 
 def board_config(work, as_it_is):
-    """mros2-posix' rtps/config.h, hardened with FRAGMENT_SETTINGS added (a copy in work)."""
+    """mros2-posix' rtps/config.h; hardened, with FRAGMENT_SETTINGS added and room for
+    ros_discovery_info's type name, so that the board publishes it (a copy in work)."""
     posix_root = os.environ['MROS2_POSIX_ROOT']
     if as_it_is:
         return os.path.join(posix_root, 'include', 'rtps', 'config.h')
     return mros2_soak.changed_config(posix_root, work, [
-        (r'\}\s*//\s*namespace Config', FRAGMENT_SETTINGS + '} // namespace Config')])
+        (r'\}\s*//\s*namespace Config', FRAGMENT_SETTINGS + '} // namespace Config'),
+        mros2_soak.LONG_TYPE_NAMES])
 
 
 def build(options, work):
