@@ -22,9 +22,9 @@
 #     makes with mros2::QoS(depth).reliable(); services need the mros2 patch
 #     services-both-ways), so no script greps the app's sources. They are
 #     generated at configure time from the definitions the export dir holds,
-#     into a directory of t's own,
-#     and t (the firmware, or the target that compiles mros2.cpp, which
-#     includes templates.hpp) gets it as an include directory. STORAGE
+#     into a directory of t's own, and t (the firmware, or the target that
+#     compiles mros2.cpp, which includes templates.hpp) gets it as an include
+#     directory. STORAGE
 #     bounded holds unbounded strings and sequences in the message, with the
 #     maxima of the OPTIONS files (genmros mros2-export --storage bounded
 #     --options). RTPS_CONFIG, the board's rtps/config.h, runs the fit check
