@@ -10,7 +10,9 @@ each request's names. Once its client of "call" sees the service (wait_for_servi
 - calls it from "clients" clients at once, 10 calls each in flight together, client k asking
   for k + 1 names;
 - sends one request from a client it destroys before the reply, then calls "calls" times more;
-- reads get_service_names_and_types() and get_service_names_and_types_by_node(node, "/").
+- once the board's node is listed (get_node_names_and_namespaces(), until "wait" ends), reads
+  get_service_names_and_types() and get_service_names_and_types_by_node(node, "/") (none
+  when the node never came).
 A reply counts as right when its types are its own request's names' lengths. Then it waits
 until "board_calls" requests came or the wait ended, and writes a line of JSON to stdout:
 {"calls": [right, of], "clients": [[right, of], ...], "after_gone": [right, of],
@@ -92,8 +94,16 @@ def main():
         node.destroy_client(gone)
         report['after_gone'] = [sum(calls_in_flight(node, client, [request], job['wait'])
                                     for request in one_by_one), len(one_by_one)]
+    # Services are matched through SEDP, nodes learnt from ros_discovery_info: the board's
+    # node may come into the graph after its service.
+    deadline = time.monotonic() + job['wait']
+    while ((job['node'], '/') not in node.get_node_names_and_namespaces() and
+           time.monotonic() < deadline):
+        rclpy.spin_once(node, timeout_sec=0.05)
     report['services'] = node.get_service_names_and_types()
-    report['services_by_node'] = node.get_service_names_and_types_by_node(job['node'], '/')
+    report['services_by_node'] = (
+        node.get_service_names_and_types_by_node(job['node'], '/')
+        if (job['node'], '/') in node.get_node_names_and_namespaces() else [])
     deadline = time.monotonic() + job['wait']
     while len(requests) < job['board_calls'] and time.monotonic() < deadline:
         rclpy.spin_once(node, timeout_sec=0.05)

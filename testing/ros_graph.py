@@ -43,12 +43,12 @@ DELIVERY_TIMEOUT = 30
 PYTHON = sys.executable
 
 
-def _let_nodes_stop_on_sigint():
+def let_children_stop_on_sigint():
     """A shell that starts a command in the background (`cmd &`, as some CI
     runners and nohup do) makes it ignore SIGINT, and its children inherit
-    that: every node would then sit out stop()'s grace period before SIGKILL
-    and none would stop as it does for a user's Ctrl-C. A handled signal is
-    reset to the default in a child."""
+    that: every node would then sit out stop()'s grace period before SIGKILL,
+    and a genmros stopped as a user's Ctrl-C stops it would go on. A handled
+    signal is reset to the default in a child."""
     if (signal.getsignal(signal.SIGINT) == signal.SIG_IGN
             and threading.current_thread() is threading.main_thread()):
         signal.signal(signal.SIGINT, signal.default_int_handler)
@@ -153,7 +153,7 @@ class RosGraph:
     """
 
     def __init__(self, base_env=None):
-        _let_nodes_stop_on_sigint()
+        let_children_stop_on_sigint()
         self.port = free_port()
         self.uri = 'http://127.0.0.1:%d/' % self.port
         self._home = tempfile.TemporaryDirectory(prefix='ros_home_')

@@ -12,10 +12,15 @@ from support.checkout import REPO, TEST_WS, run_genmros
 from support.debian_messages import DEBIAN_MESSAGE_PACKAGES
 from support.user_checkouts import CHECKOUTS
 from testing import ros_paths
+from testing.ros_graph import let_children_stop_on_sigint
 
 # What the tests take from PyPI (rosbags), installed there by
 # scripts/setup.sh --tests (scripts/test-requirements.txt), not into a Python of the system.
 sys.path.append(os.path.join(REPO, 'build', 'test-python'))
+
+# The suite started in the background (`scripts/run-tests.sh &`) ignores SIGINT; the
+# processes its tests stop with SIGINT, as a user's Ctrl-C does, must not.
+let_children_stop_on_sigint()
 
 
 # The mros2 corpora's fixtures (tests/support/mros2_corpus.py), and empy 3's stdout proxy
