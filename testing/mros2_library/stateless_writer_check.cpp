@@ -8,6 +8,7 @@
 //   work          one workload of the writer thread: progress()
 // The driver prints "data SN" for what the writer sends; the check prints
 // "done" after each step.
+#include <stdio.h>
 #include <stdlib.h>
 
 #include <iostream>
